@@ -1,0 +1,3 @@
+//! gyro-sim: integrators, scenes and outputs for models derived with kane-model.
+//!
+//! Not implemented yet: see the code-generation and simulation issue.

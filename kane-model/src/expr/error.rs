@@ -1,0 +1,42 @@
+//! Errors of the expression engine.
+
+use thiserror::Error;
+
+/// What went wrong in building, transforming or evaluating an expression.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum ExprError {
+    /// An exact division by zero, such as `x/0` or `0^-1`.
+    #[error("division by exact zero")]
+    DivisionByZero,
+    /// An exact rational result does not fit in 128-bit numerator and denominator.
+    #[error("rational overflow: the exact result does not fit in 128 bits; use a float literal instead")]
+    RationalOverflow,
+    /// A floating literal that is NaN or infinite.
+    #[error("non-finite floating literal {0}")]
+    NonFiniteLiteral(f64),
+    /// Evaluation met a symbol that has no value.
+    #[error("no value bound for symbol `{0}`")]
+    MissingBinding(String),
+    /// Evaluation produced NaN or infinity.
+    #[error("evaluation is not finite ({value}) for `{expr}`")]
+    NotFinite {
+        /// The expression, printed.
+        expr: String,
+        /// The value produced.
+        value: f64,
+    },
+    /// An expression asked to be linear in some symbols is not.
+    #[error("`{expr}` is not linear in `{symbol}`")]
+    NotLinear {
+        /// The expression, printed.
+        expr: String,
+        /// The symbol it is not linear in.
+        symbol: String,
+    },
+    /// A symbol name declared twice with different kinds.
+    #[error("symbol `{0}` is already declared with another kind")]
+    SymbolKindClash(String),
+    /// A symbol that is not a time-dependent variable was asked for its derivative.
+    #[error("symbol `{0}` does not depend on time, so it has no derivative symbol")]
+    NotTimeDependent(String),
+}

@@ -1,0 +1,159 @@
+//! Expansion of products and integer powers of sums, and the trigonometric canonical form.
+
+use super::arena::Arena;
+use super::error::ExprError;
+use super::node::{ExprId, Func, Node};
+
+type Res = Result<ExprId, ExprError>;
+
+/// Largest positive integer power of a sum that expansion multiplies out.
+const MAX_EXPANDED_POWER: i64 = 64;
+
+impl Arena {
+    /// Multiplies out products of sums and positive integer powers of sums, everywhere.
+    ///
+    /// # Example
+    /// ```
+    /// use kane_model::expr::Arena;
+    /// let mut ar = Arena::new();
+    /// let x = ar.constant("x").unwrap();
+    /// let one = ar.one();
+    /// let s = ar.add(&[x, one]).unwrap();
+    /// let sq = ar.powi(s, 2).unwrap();
+    /// let e = ar.expand(sq).unwrap();
+    /// assert_eq!(ar.to_text(e), "2*x + x^2 + 1");
+    /// ```
+    pub fn expand(&mut self, e: ExprId) -> Res {
+        Ok(self.expand_many(&[e])?[0])
+    }
+
+    /// [`Arena::expand`] over several roots sharing one traversal.
+    pub fn expand_many(&mut self, roots: &[ExprId]) -> Result<Vec<ExprId>, ExprError> {
+        self.map_bottom_up(
+            roots,
+            |_| false,
+            |ar, id, kids| {
+                Ok(match ar.node(id) {
+                    Node::Product(_) => Some(ar.expand_product(kids)?),
+                    Node::Pow(_) => Some(ar.expand_pow(kids[0], kids[1])?),
+                    _ => None,
+                })
+            },
+        )
+    }
+
+    /// The expanded product of already-expanded factors.
+    fn expand_product(&mut self, factors: &[ExprId]) -> Res {
+        let mut acc: Vec<ExprId> = vec![self.one()];
+        for &f in factors {
+            let terms: Vec<ExprId> = match self.node(f) {
+                Node::Sum(t) => t.to_vec(),
+                _ => vec![f],
+            };
+            let mut next = Vec::with_capacity(acc.len() * terms.len());
+            for &a in &acc {
+                for &t in &terms {
+                    next.push(self.mul(&[a, t])?);
+                }
+            }
+            acc = next;
+        }
+        self.add(&acc)
+    }
+
+    fn expand_pow(&mut self, base: ExprId, exponent: ExprId) -> Res {
+        let n = self.as_rational(exponent).and_then(|r| r.as_i64());
+        match (self.node(base), n) {
+            (Node::Sum(_), Some(n)) if (2..=MAX_EXPANDED_POWER).contains(&n) => {
+                let factors = vec![base; n as usize];
+                self.expand_product(&factors)
+            }
+            (Node::Sum(_), Some(n)) if (-MAX_EXPANDED_POWER..=-2).contains(&n) => {
+                let factors = vec![base; (-n) as usize];
+                let p = self.expand_product(&factors)?;
+                self.powi(p, -1)
+            }
+            _ => self.pow(base, exponent),
+        }
+    }
+
+    /// Canonical form for polynomials in sines and cosines of the same arguments.
+    ///
+    /// Expands, rewrites `sin(x)^n` (n >= 2) as `sin(x)^(n mod 2) * (1 - cos(x)^2)^(n div 2)`, and
+    /// expands again, so `sin(x)^2 + cos(x)^2 - 1` becomes 0.
+    pub fn trig_simplify(&mut self, e: ExprId) -> Res {
+        Ok(self.trig_simplify_many(&[e])?[0])
+    }
+
+    /// [`Arena::trig_simplify`] over several roots.
+    pub fn trig_simplify_many(&mut self, roots: &[ExprId]) -> Result<Vec<ExprId>, ExprError> {
+        let expanded = self.expand_many(roots)?;
+        let rewritten = self.map_bottom_up(
+            &expanded,
+            |_| false,
+            |ar, id, kids| {
+                let Node::Pow([b, _]) = *ar.node(id) else { return Ok(None) };
+                let Node::Func(Func::Sin, x) = *ar.node(b) else { return Ok(None) };
+                let Some(n) = ar.as_rational(kids[1]).and_then(|r| r.as_i64()) else { return Ok(None) };
+                if n < 2 {
+                    return Ok(None);
+                }
+                let one = ar.one();
+                let c = ar.cos(x)?;
+                let c2 = ar.powi(c, 2)?;
+                let s2 = ar.sub(one, c2)?;
+                let p = ar.powi(s2, n / 2)?;
+                let odd = ar.powi(b, n % 2)?;
+                Ok(Some(ar.mul(&[odd, p])?))
+            },
+        )?;
+        self.expand_many(&rewritten)
+    }
+
+    /// Expansion followed by the trigonometric canonical form.
+    pub fn simplify(&mut self, e: ExprId) -> Res {
+        self.trig_simplify(e)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pythagorean_identity_vanishes() {
+        let mut ar = Arena::new();
+        let x = ar.constant("x").unwrap();
+        let s = ar.sin(x).unwrap();
+        let c = ar.cos(x).unwrap();
+        let s2 = ar.powi(s, 2).unwrap();
+        let c2 = ar.powi(c, 2).unwrap();
+        let m1 = ar.minus_one();
+        let e = ar.add(&[s2, c2, m1]).unwrap();
+        assert_eq!(ar.simplify(e).unwrap(), ar.zero());
+    }
+
+    #[test]
+    fn gimbal_like_mixed_terms_cancel() {
+        // m (a sin(q) + b cos(q))^2 + m (a cos(q) - b sin(q))^2 = m (a^2 + b^2)
+        let mut ar = Arena::new();
+        let [m, a, b, q] = ["m", "a", "b", "q"].map(|n| ar.constant(n).unwrap());
+        let (s, c) = (ar.sin(q).unwrap(), ar.cos(q).unwrap());
+        let as_ = ar.mul(&[a, s]).unwrap();
+        let bc = ar.mul(&[b, c]).unwrap();
+        let ac = ar.mul(&[a, c]).unwrap();
+        let bs = ar.mul(&[b, s]).unwrap();
+        let p1 = ar.add(&[as_, bc]).unwrap();
+        let p2 = ar.sub(ac, bs).unwrap();
+        let p1s = ar.powi(p1, 2).unwrap();
+        let p2s = ar.powi(p2, 2).unwrap();
+        let sum = ar.add(&[p1s, p2s]).unwrap();
+        let lhs = ar.mul(&[m, sum]).unwrap();
+        let a2 = ar.powi(a, 2).unwrap();
+        let b2 = ar.powi(b, 2).unwrap();
+        let ab = ar.add(&[a2, b2]).unwrap();
+        let rhs0 = ar.mul(&[m, ab]).unwrap();
+        let rhs = ar.expand(rhs0).unwrap();
+        assert_eq!(ar.simplify(lhs).unwrap(), rhs);
+    }
+}

@@ -1,0 +1,32 @@
+//! The symbolic expression engine.
+//!
+//! Expressions live in an [`Arena`] and are referred to by [`ExprId`]. Nodes are hash-consed,
+//! so structurally equal expressions share one id and the whole set of expressions is a DAG.
+//! Canonical form is decided at construction ([`Arena::add`], [`Arena::mul`], [`Arena::pow`],
+//! [`Arena::func`]); transformations (derivatives, substitution, expansion, trigonometric
+//! simplification) walk the DAG bottom-up and never recurse, so deep expressions are safe.
+
+mod arena;
+mod build;
+mod cse;
+mod diff;
+mod equiv;
+mod error;
+mod eval;
+mod expand;
+mod linear;
+mod node;
+mod number;
+mod print;
+mod tape;
+mod traverse;
+
+pub use arena::{Arena, Symbol, TIME};
+pub use cse::Cse;
+pub use diff::TimeDerivative;
+pub use equiv::{Equivalence, EquivalenceConfig};
+pub use error::ExprError;
+pub use node::{ExprId, Func, Node, SymbolId, SymbolKind};
+pub use number::{Number, Rational};
+pub use print::{RustStyle, Scalar};
+pub use tape::{Op, Tape};
