@@ -2,8 +2,10 @@
 //!
 //! - [`expr`]: hash-consed expressions with exact rationals, derivatives, simplification,
 //!   CSE, numeric evaluation generic over `num_traits::Float`, and printers.
+//! - [`dual`]: dual numbers implementing `num_traits::Float`, for exact derivatives.
 #![warn(missing_docs)]
 
+pub mod dual;
 pub mod expr;
 
 /// Runtime helpers named by generated code; not a stable API.
@@ -14,3 +16,7 @@ pub mod __private {
         crate::expr::Func::Sign.apply(x)
     }
 }
+
+#[cfg(doctest)]
+#[doc = include_str!("../../README.md")]
+struct ReadmeDoctests;

@@ -9,30 +9,28 @@ use rustc_hash::FxHashMap;
 use super::arena::Arena;
 use super::error::ExprError;
 use super::node::{ExprId, Func, Node, Parity};
-use super::number::{float, Number, Rational};
+use super::number::{float, Number, NumberFold, Rational};
 
 type Res = Result<ExprId, ExprError>;
 
 impl Arena {
     /// The canonical sum of `terms`.
     pub fn add(&mut self, terms: &[ExprId]) -> Res {
-        let mut constant = Number::ZERO;
-        let mut coeffs: FxHashMap<ExprId, Number> = FxHashMap::default();
+        let mut constant = NumberFold::new(false);
+        let mut coeffs: FxHashMap<ExprId, NumberFold> = FxHashMap::default();
         let mut order: Vec<ExprId> = Vec::with_capacity(terms.len());
-        let mut push = |ar: &mut Arena, t: ExprId, constant: &mut Number| -> Result<(), ExprError> {
+        let mut push = |ar: &mut Arena, t: ExprId, constant: &mut NumberFold| -> Result<(), ExprError> {
             if let Some(n) = ar.as_number(t) {
-                *constant = constant.checked_add(n)?;
-                return Ok(());
+                return constant.add(n);
             }
             let (c, rest) = ar.split_coefficient(t);
-            match coeffs.get_mut(&rest) {
-                Some(acc) => *acc = acc.checked_add(c)?,
-                None => {
-                    coeffs.insert(rest, c);
+            coeffs
+                .entry(rest)
+                .or_insert_with(|| {
                     order.push(rest);
-                }
-            }
-            Ok(())
+                    NumberFold::new(false)
+                })
+                .add(c)
         };
         for &t in terms {
             if let Node::Sum(children) = self.node(t) {
@@ -45,12 +43,13 @@ impl Arena {
             }
         }
         order.sort_unstable();
+        let constant = constant.sum()?;
         let mut out = Vec::with_capacity(order.len() + 1);
         if !constant.is_zero() {
             out.push(self.number(constant));
         }
         for rest in order {
-            let c = coeffs[&rest];
+            let c = coeffs.remove(&rest).map_or(Ok(Number::ZERO), NumberFold::sum)?;
             if !c.is_zero() {
                 out.push(self.scale(c, rest)?);
             }
@@ -64,15 +63,13 @@ impl Arena {
 
     /// The canonical product of `factors`.
     pub fn mul(&mut self, factors: &[ExprId]) -> Res {
-        let mut coeff = Number::ONE;
+        let mut fold = NumberFold::new(true);
         let mut exps: FxHashMap<ExprId, Vec<ExprId>> = FxHashMap::default();
         let mut bases: Vec<ExprId> = Vec::with_capacity(factors.len());
         let mut stack: Vec<ExprId> = factors.iter().rev().copied().collect();
         while let Some(f) = stack.pop() {
             match self.node(f) {
-                Node::Rational(_) | Node::Float(_) => {
-                    coeff = coeff.checked_mul(self.as_number(f).unwrap_or(Number::ONE))?;
-                }
+                Node::Rational(_) | Node::Float(_) => fold.mul(self.as_number(f).unwrap_or(Number::ONE))?,
                 Node::Product(children) => stack.extend(children.iter().rev().copied()),
                 Node::Pow([b, e]) => {
                     let (b, e) = (*b, *e);
@@ -90,8 +87,8 @@ impl Arena {
                 }
             }
         }
-        if coeff.is_zero() {
-            return Ok(self.number(coeff));
+        if fold.is_exact_zero() {
+            return Ok(self.zero());
         }
         let mut out: Vec<ExprId> = Vec::with_capacity(bases.len());
         let mut regroup = false;
@@ -100,9 +97,7 @@ impl Arena {
             let e = if e_terms.len() == 1 { e_terms[0] } else { self.add(&e_terms.clone())? };
             let p = self.pow(b, e)?;
             match self.node(p) {
-                Node::Rational(_) | Node::Float(_) => {
-                    coeff = coeff.checked_mul(self.as_number(p).unwrap_or(Number::ONE))?;
-                }
+                Node::Rational(_) | Node::Float(_) => fold.mul(self.as_number(p).unwrap_or(Number::ONE))?,
                 Node::Product(_) => {
                     regroup = true;
                     out.push(p);
@@ -110,6 +105,7 @@ impl Arena {
                 _ => out.push(p),
             }
         }
+        let coeff = fold.product()?;
         if regroup {
             let c = self.number(coeff);
             out.push(c);

@@ -3,7 +3,8 @@
 use rustc_hash::FxHashMap;
 
 use super::arena::Arena;
-use super::node::{ExprId, Node};
+use super::error::ExprError;
+use super::node::{ExprId, Node, SymbolId};
 
 /// Shared subexpressions of a set of roots, in an order where each depends only on earlier ones.
 ///
@@ -43,6 +44,28 @@ impl Cse {
     /// Names `prefix0, prefix1, ...` for the temporaries.
     pub fn names(&self, prefix: &str) -> FxHashMap<ExprId, String> {
         self.temps.iter().enumerate().map(|(i, id)| (*id, format!("{prefix}{i}"))).collect()
+    }
+
+    /// Straight-line form: each temporary becomes a fresh constant symbol `prefix{i}` bound to
+    /// its expression written in earlier temporaries; returns the bindings and the roots.
+    pub fn assignments(
+        &self,
+        ar: &mut Arena,
+        prefix: &str,
+    ) -> Result<(Vec<(SymbolId, ExprId)>, Vec<ExprId>), ExprError> {
+        let mut map: FxHashMap<ExprId, ExprId> = FxHashMap::default();
+        let mut bindings = Vec::with_capacity(self.temps.len());
+        for (i, &t) in self.temps.iter().enumerate() {
+            let node = ar.node(t).clone();
+            let kids: Vec<ExprId> =
+                node.children().iter().map(|c| map.get(c).copied().unwrap_or(*c)).collect();
+            let body = ar.rebuild(&node, &kids)?;
+            let sym = ar.declare(&format!("{prefix}{i}"), super::node::SymbolKind::Constant)?;
+            bindings.push((sym, body));
+            map.insert(t, ar.symbol_expr(sym));
+        }
+        let roots = ar.subs_many(&self.roots, &map)?;
+        Ok((bindings, roots))
     }
 
     /// The assignments and results as text, one per line (`x0 = ...`, then `out0 = ...`).

@@ -250,6 +250,62 @@ impl Number {
     }
 }
 
+/// Order-independent accumulation of numbers: rationals exactly, floats in sorted order, so a
+/// sum or product of the same numbers gives the same bits whatever order they come in.
+#[derive(Clone, Debug)]
+pub(crate) struct NumberFold {
+    exact: Rational,
+    floats: Vec<f64>,
+}
+
+impl NumberFold {
+    /// Starts a sum (at 0) or a product (at 1).
+    pub(crate) fn new(product: bool) -> NumberFold {
+        NumberFold { exact: if product { Rational::ONE } else { Rational::ZERO }, floats: Vec::new() }
+    }
+
+    /// Adds `n` to a sum.
+    pub(crate) fn add(&mut self, n: Number) -> Result<(), ExprError> {
+        match n {
+            Number::Rational(r) => self.exact = self.exact.checked_add(r)?,
+            Number::Float(x) => self.floats.push(x),
+        }
+        Ok(())
+    }
+
+    /// Multiplies a product by `n`.
+    pub(crate) fn mul(&mut self, n: Number) -> Result<(), ExprError> {
+        match n {
+            Number::Rational(r) => self.exact = self.exact.checked_mul(r)?,
+            Number::Float(x) => self.floats.push(x),
+        }
+        Ok(())
+    }
+
+    /// True when the product so far is exactly zero.
+    pub(crate) fn is_exact_zero(&self) -> bool {
+        self.exact.is_zero()
+    }
+
+    /// The sum.
+    pub(crate) fn sum(mut self) -> Result<Number, ExprError> {
+        if self.floats.is_empty() {
+            return Ok(Number::Rational(self.exact));
+        }
+        self.floats.sort_unstable_by(f64::total_cmp);
+        float(self.floats.iter().fold(self.exact.to_f64(), |a, b| a + b))
+    }
+
+    /// The product.
+    pub(crate) fn product(mut self) -> Result<Number, ExprError> {
+        if self.floats.is_empty() {
+            return Ok(Number::Rational(self.exact));
+        }
+        self.floats.sort_unstable_by(f64::total_cmp);
+        float(self.floats.iter().fold(self.exact.to_f64(), |a, b| a * b))
+    }
+}
+
 /// A float literal, rejecting non-finite values.
 pub(crate) fn float(x: f64) -> Result<Number, ExprError> {
     if x.is_finite() {
