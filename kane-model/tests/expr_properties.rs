@@ -81,7 +81,8 @@ proptest! {
         let Some(want) = want else { return Ok(()) };
 
         let cse = Cse::new(&ar, &roots);
-        let (assign, outs) = cse.assignments(&mut ar, "cse").unwrap();
+        let line = cse.assignments(&mut ar, "cse").unwrap();
+        let (assign, outs) = (line.bindings, line.roots);
         let mut env: FxHashMap<_, f64> = syms.iter().copied().zip(p).collect();
         for (sym, e) in &assign {
             let v = ar.eval(&[*e], |s| env.get(&s).copied()).unwrap()[0];

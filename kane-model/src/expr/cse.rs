@@ -18,6 +18,15 @@ pub struct Cse {
     pub roots: Vec<ExprId>,
 }
 
+/// Ordered assignments `symbol = expression` followed by the roots written in those symbols.
+#[derive(Clone, Debug)]
+pub struct StraightLine {
+    /// Each temporary symbol with its expression, in evaluation order.
+    pub bindings: Vec<(SymbolId, ExprId)>,
+    /// The roots, written in the temporaries.
+    pub roots: Vec<ExprId>,
+}
+
 impl Cse {
     /// Finds the subexpressions of `roots` used more than once.
     pub fn new(ar: &Arena, roots: &[ExprId]) -> Cse {
@@ -52,7 +61,7 @@ impl Cse {
         &self,
         ar: &mut Arena,
         prefix: &str,
-    ) -> Result<(Vec<(SymbolId, ExprId)>, Vec<ExprId>), ExprError> {
+    ) -> Result<StraightLine, ExprError> {
         let mut map: FxHashMap<ExprId, ExprId> = FxHashMap::default();
         let mut bindings = Vec::with_capacity(self.temps.len());
         for (i, &t) in self.temps.iter().enumerate() {
@@ -65,7 +74,7 @@ impl Cse {
             map.insert(t, ar.symbol_expr(sym));
         }
         let roots = ar.subs_many(&self.roots, &map)?;
-        Ok((bindings, roots))
+        Ok(StraightLine { bindings, roots })
     }
 
     /// The assignments and results as text, one per line (`x0 = ...`, then `out0 = ...`).

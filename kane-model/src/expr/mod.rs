@@ -22,7 +22,7 @@ mod tape;
 mod traverse;
 
 pub use arena::{Arena, Symbol, TIME};
-pub use cse::Cse;
+pub use cse::{Cse, StraightLine};
 pub use diff::TimeDerivative;
 pub use equiv::{Equivalence, EquivalenceConfig};
 pub use error::ExprError;
