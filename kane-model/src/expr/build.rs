@@ -4,8 +4,6 @@
 //! identities with 0 and 1 applied, operands put in a stable order (by id, with the number
 //! first), and odd or even functions given a non-negative argument.
 
-use rustc_hash::FxHashMap;
-
 use super::arena::Arena;
 use super::error::ExprError;
 use super::node::{ExprId, Func, Node, Parity};
@@ -16,43 +14,48 @@ type Res = Result<ExprId, ExprError>;
 impl Arena {
     /// The canonical sum of `terms`.
     pub fn add(&mut self, terms: &[ExprId]) -> Res {
-        let mut constant = NumberFold::new(false);
-        let mut coeffs: FxHashMap<ExprId, NumberFold> = FxHashMap::default();
-        let mut order: Vec<ExprId> = Vec::with_capacity(terms.len());
-        let mut push = |ar: &mut Arena, t: ExprId, constant: &mut NumberFold| -> Result<(), ExprError> {
-            if let Some(n) = ar.as_number(t) {
-                return constant.add(n);
-            }
-            let (c, rest) = ar.split_coefficient(t);
-            coeffs
-                .entry(rest)
-                .or_insert_with(|| {
-                    order.push(rest);
-                    NumberFold::new(false)
-                })
-                .add(c)
-        };
+        let mut flat: Vec<ExprId> = Vec::with_capacity(terms.len() + 4);
         for &t in terms {
-            if let Node::Sum(children) = self.node(t) {
-                let children = children.clone();
-                for &c in children.iter() {
-                    push(self, c, &mut constant)?;
-                }
-            } else {
-                push(self, t, &mut constant)?;
+            match self.node(t) {
+                Node::Sum(children) => flat.extend_from_slice(children),
+                _ => flat.push(t),
             }
         }
-        order.sort_unstable();
+        let mut constant = NumberFold::new(false);
+        let mut entries: Vec<(ExprId, Number)> = Vec::with_capacity(flat.len());
+        for t in flat {
+            match self.as_number(t) {
+                Some(n) => constant.add(n)?,
+                None => {
+                    let (c, rest) = self.split_coefficient(t);
+                    entries.push((rest, c));
+                }
+            }
+        }
+        // Like terms become adjacent; their coefficients fold independently of input order.
+        entries.sort_unstable_by_key(|e| e.0);
         let constant = constant.sum()?;
-        let mut out = Vec::with_capacity(order.len() + 1);
+        let mut out = Vec::with_capacity(entries.len() + 1);
         if !constant.is_zero() {
             out.push(self.number(constant));
         }
-        for rest in order {
-            let c = coeffs.remove(&rest).map_or(Ok(Number::ZERO), NumberFold::sum)?;
+        let mut i = 0;
+        while i < entries.len() {
+            let rest = entries[i].0;
+            let j = i + entries[i..].iter().take_while(|e| e.0 == rest).count();
+            let c = if j == i + 1 {
+                entries[i].1
+            } else {
+                let mut f = NumberFold::new(false);
+                for e in &entries[i..j] {
+                    f.add(e.1)?;
+                }
+                f.sum()?
+            };
             if !c.is_zero() {
                 out.push(self.scale(c, rest)?);
             }
+            i = j;
         }
         Ok(match out.len() {
             0 => self.number(constant),
@@ -63,38 +66,42 @@ impl Arena {
 
     /// The canonical product of `factors`.
     pub fn mul(&mut self, factors: &[ExprId]) -> Res {
+        let mut flat: Vec<ExprId> = Vec::with_capacity(factors.len() + 4);
+        for &f in factors {
+            match self.node(f) {
+                Node::Product(children) => flat.extend_from_slice(children),
+                _ => flat.push(f),
+            }
+        }
         let mut fold = NumberFold::new(true);
-        let mut exps: FxHashMap<ExprId, Vec<ExprId>> = FxHashMap::default();
-        let mut bases: Vec<ExprId> = Vec::with_capacity(factors.len());
-        let mut stack: Vec<ExprId> = factors.iter().rev().copied().collect();
-        while let Some(f) = stack.pop() {
+        // (base, exponent, the factor itself)
+        let mut powers: Vec<(ExprId, ExprId, ExprId)> = Vec::with_capacity(flat.len());
+        let one = self.one();
+        for f in flat {
             match self.node(f) {
                 Node::Rational(_) | Node::Float(_) => fold.mul(self.as_number(f).unwrap_or(Number::ONE))?,
-                Node::Product(children) => stack.extend(children.iter().rev().copied()),
-                Node::Pow([b, e]) => {
-                    let (b, e) = (*b, *e);
-                    if !exps.contains_key(&b) {
-                        bases.push(b);
-                    }
-                    exps.entry(b).or_default().push(e);
-                }
-                _ => {
-                    if !exps.contains_key(&f) {
-                        bases.push(f);
-                    }
-                    let one = self.one();
-                    exps.entry(f).or_default().push(one);
-                }
+                Node::Pow([b, e]) => powers.push((*b, *e, f)),
+                _ => powers.push((f, one, f)),
             }
         }
         if fold.is_exact_zero() {
             return Ok(self.zero());
         }
-        let mut out: Vec<ExprId> = Vec::with_capacity(bases.len());
+        powers.sort_unstable_by_key(|p| p.0);
+        let mut out: Vec<ExprId> = Vec::with_capacity(powers.len());
         let mut regroup = false;
-        for b in bases {
-            let e_terms = &exps[&b];
-            let e = if e_terms.len() == 1 { e_terms[0] } else { self.add(&e_terms.clone())? };
+        let mut i = 0;
+        while i < powers.len() {
+            let b = powers[i].0;
+            let j = i + powers[i..].iter().take_while(|p| p.0 == b).count();
+            if j == i + 1 {
+                out.push(powers[i].2);
+                i = j;
+                continue;
+            }
+            let exps: Vec<ExprId> = powers[i..j].iter().map(|p| p.1).collect();
+            i = j;
+            let e = self.add(&exps)?;
             let p = self.pow(b, e)?;
             match self.node(p) {
                 Node::Rational(_) | Node::Float(_) => fold.mul(self.as_number(p).unwrap_or(Number::ONE))?,

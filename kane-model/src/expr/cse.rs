@@ -57,11 +57,7 @@ impl Cse {
 
     /// Straight-line form: each temporary becomes a fresh constant symbol `prefix{i}` bound to
     /// its expression written in earlier temporaries; returns the bindings and the roots.
-    pub fn assignments(
-        &self,
-        ar: &mut Arena,
-        prefix: &str,
-    ) -> Result<StraightLine, ExprError> {
+    pub fn assignments(&self, ar: &mut Arena, prefix: &str) -> Result<StraightLine, ExprError> {
         let mut map: FxHashMap<ExprId, ExprId> = FxHashMap::default();
         let mut bindings = Vec::with_capacity(self.temps.len());
         for (i, &t) in self.temps.iter().enumerate() {

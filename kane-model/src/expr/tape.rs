@@ -243,25 +243,24 @@ impl Tape {
 
     /// Runs the tape: `regs` is scratch space reused between calls, `out` receives the outputs.
     pub fn eval<T: Float>(&self, inputs: &[T], regs: &mut Vec<T>, out: &mut [T]) {
-        regs.clear();
-        regs.reserve(self.ops.len());
-        for op in &self.ops {
-            let r = |i: u32| regs[i as usize];
+        regs.resize(self.ops.len(), T::zero());
+        let regs = &mut regs[..self.ops.len()];
+        for (i, op) in self.ops.iter().enumerate() {
             let v = match *op {
                 Op::Input(k) => inputs[k as usize],
                 Op::Const(c) => number_as(Number::Float(c)),
-                Op::Add(a, b) => r(a) + r(b),
-                Op::Sub(a, b) => r(a) - r(b),
-                Op::Mul(a, b) => r(a) * r(b),
-                Op::Div(a, b) => r(a) / r(b),
-                Op::Neg(a) => -r(a),
-                Op::Powi(a, k) => r(a).powi(k),
-                Op::Sqrt(a) => r(a).sqrt(),
-                Op::Powf(a, b) => r(a).powf(r(b)),
-                Op::Func(f, a) => f.apply(r(a)),
-                Op::Atan2(a, b) => r(a).atan2(r(b)),
+                Op::Add(a, b) => regs[a as usize] + regs[b as usize],
+                Op::Sub(a, b) => regs[a as usize] - regs[b as usize],
+                Op::Mul(a, b) => regs[a as usize] * regs[b as usize],
+                Op::Div(a, b) => regs[a as usize] / regs[b as usize],
+                Op::Neg(a) => -regs[a as usize],
+                Op::Powi(a, k) => regs[a as usize].powi(k),
+                Op::Sqrt(a) => regs[a as usize].sqrt(),
+                Op::Powf(a, b) => regs[a as usize].powf(regs[b as usize]),
+                Op::Func(f, a) => f.apply(regs[a as usize]),
+                Op::Atan2(a, b) => regs[a as usize].atan2(regs[b as usize]),
             };
-            regs.push(v);
+            regs[i] = v;
         }
         for (o, &k) in out.iter_mut().zip(&self.outputs) {
             *o = regs[k as usize];
