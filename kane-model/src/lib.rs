@@ -2,11 +2,15 @@
 //!
 //! - [`expr`]: hash-consed expressions with exact rationals, derivatives, simplification,
 //!   CSE, numeric evaluation generic over `num_traits::Float`, and printers.
+//! - [`mechanics`]: frames, points, bodies, loads and Kane's equations `M u' = f`.
+//! - [`models`]: canonical systems (the paper's gimbal, the heavy top, n-link pendulums).
 //! - [`dual`]: dual numbers implementing `num_traits::Float`, for exact derivatives.
 #![warn(missing_docs)]
 
 pub mod dual;
 pub mod expr;
+pub mod mechanics;
+pub mod models;
 
 /// Runtime helpers named by generated code; not a stable API.
 #[doc(hidden)]

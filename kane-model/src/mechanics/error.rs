@@ -1,0 +1,84 @@
+//! Errors of the mechanics layer: each names the entity at fault and why.
+
+use thiserror::Error;
+
+use crate::expr::ExprError;
+
+/// What went wrong while building a model or deriving its equations.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum MechanicsError {
+    /// An expression operation failed.
+    #[error(transparent)]
+    Expr(#[from] ExprError),
+    /// A name is used twice for frames, points or bodies.
+    #[error("`{0}` is already defined")]
+    Duplicate(String),
+    /// A frame was given a second orientation.
+    #[error("frame {frame} is already oriented relative to {parent}; a frame is oriented once")]
+    FrameOrientedTwice {
+        /// The frame.
+        frame: String,
+        /// Its existing parent.
+        parent: String,
+    },
+    /// Orienting a frame would close a cycle of orientations.
+    #[error(
+        "orienting {frame} relative to {parent} makes a cycle: {parent} is already oriented through {frame}"
+    )]
+    OrientationCycle {
+        /// The frame.
+        frame: String,
+        /// The proposed parent.
+        parent: String,
+    },
+    /// Two frames are not connected by orientations.
+    #[error(
+        "no orientation path between frames {a} and {b}: orient {b} (or {a}) relative to a connected frame"
+    )]
+    NoOrientationPath {
+        /// One frame.
+        a: String,
+        /// The other.
+        b: String,
+    },
+    /// A point's velocity cannot be found in a frame.
+    #[error("velocity of point {point} has not been defined in frame {frame}: give its position from a point whose velocity is known, or set the velocity")]
+    VelocityUndefined {
+        /// The point.
+        point: String,
+        /// The frame.
+        frame: String,
+    },
+    /// Positions of points form a loop.
+    #[error("point {0} is located relative to itself through a chain of positions")]
+    PositionCycle(String),
+    /// A point has no position chain to another point.
+    #[error("no position path between points {a} and {b}")]
+    NoPositionPath {
+        /// One point.
+        a: String,
+        /// The other.
+        b: String,
+    },
+    /// A body or particle has no mass.
+    #[error("{0} has no mass: give it one (MASS {0} = ...)")]
+    MissingMass(String),
+    /// A coordinate has no kinematic differential equation.
+    #[error("coordinate {0} has no kinematic differential equation ({0}' = ...)")]
+    MissingKinematics(String),
+    /// A symbol used as a generalized coordinate or speed is not a time-dependent variable.
+    #[error("{0} is not a time-dependent variable, so it cannot be a generalized coordinate or speed")]
+    NotAVariable(String),
+    /// No generalized speeds were declared.
+    #[error("no generalized speeds: declare at least one")]
+    NoSpeeds,
+    /// Kane's equations are not linear in the speed derivatives.
+    #[error("equation {0} is not linear in the derivatives of the generalized speeds")]
+    NotLinearInAccelerations(usize),
+    /// A constraint matrix cannot be solved for the dependent speeds.
+    #[error("the constraints cannot be solved for the dependent speeds (singular coefficient matrix)")]
+    SingularConstraints,
+}
+
+/// Result of the mechanics layer.
+pub type Result<T> = std::result::Result<T, MechanicsError>;

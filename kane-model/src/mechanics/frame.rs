@@ -1,0 +1,262 @@
+//! Orienting frames in a tree, direction cosines between any two frames, angular velocities.
+
+use crate::expr::ExprId;
+
+use super::error::{MechanicsError, Result};
+use super::model::{FrameId, Mat3, Model, Orientation};
+use super::vector::Vector;
+
+impl Model {
+    /// Orients `frame` relative to `parent`; a frame is oriented once, and never in a cycle.
+    pub fn orient(&mut self, frame: FrameId, parent: FrameId, orientation: Orientation) -> Result<()> {
+        if let Some(p) = self.frames[frame.index()].parent {
+            return Err(MechanicsError::FrameOrientedTwice {
+                frame: self.frame_name(frame).to_string(),
+                parent: self.frame_name(p).to_string(),
+            });
+        }
+        if frame == self.newtonian || self.ancestors(parent).contains(&frame) {
+            return Err(MechanicsError::OrientationCycle {
+                frame: self.frame_name(frame).to_string(),
+                parent: self.frame_name(parent).to_string(),
+            });
+        }
+        let f = &mut self.frames[frame.index()];
+        f.parent = Some(parent);
+        f.orientation = Some(orientation);
+        Ok(())
+    }
+
+    /// Sets the angular velocity of `frame` in its parent explicitly (Autolev `W_B_A> = ...`).
+    pub fn set_angular_velocity(&mut self, frame: FrameId, w: Vector) {
+        self.frames[frame.index()].ang_vel = Some(w);
+        self.ang_vel_cache.clear();
+    }
+
+    /// `frame`, its parent, grandparent, ... up to the root of its tree.
+    fn ancestors(&self, frame: FrameId) -> Vec<FrameId> {
+        let mut chain = vec![frame];
+        let mut f = frame;
+        while let Some(p) = self.frames[f.index()].parent {
+            chain.push(p);
+            f = p;
+        }
+        chain
+    }
+
+    /// The chains from `a` and from `b` up to their lowest common ancestor (included in both).
+    fn paths_to_common(&self, a: FrameId, b: FrameId) -> Result<(Vec<FrameId>, Vec<FrameId>)> {
+        let up_a = self.ancestors(a);
+        let up_b = self.ancestors(b);
+        let Some(pos_b) = up_b.iter().position(|f| up_a.contains(f)) else {
+            return Err(MechanicsError::NoOrientationPath {
+                a: self.frame_name(a).to_string(),
+                b: self.frame_name(b).to_string(),
+            });
+        };
+        let common = up_b[pos_b];
+        let pos_a = up_a.iter().position(|f| *f == common).unwrap_or(0);
+        Ok((up_a[..=pos_a].to_vec(), up_b[..=pos_b].to_vec()))
+    }
+
+    /// Direction cosines `a_i . b_j` between any two connected frames (cached).
+    pub fn dcm(&mut self, a: FrameId, b: FrameId) -> Result<Mat3> {
+        if a == b {
+            let (z, o) = (self.ar.zero(), self.ar.one());
+            return Ok([[o, z, z], [z, o, z], [z, z, o]]);
+        }
+        if let Some(m) = self.dcm_cache.get(&(a, b)) {
+            return Ok(*m);
+        }
+        if let Some(m) = self.dcm_cache.get(&(b, a)) {
+            return Ok(transpose(m));
+        }
+        let m = if self.frames[b.index()].parent == Some(a) {
+            self.dcm_from_parent(b)?
+        } else if self.frames[a.index()].parent == Some(b) {
+            transpose(&self.dcm_from_parent(a)?)
+        } else {
+            // a_i . b_j through the lowest common ancestor L: (a . L)(L . b), each along a chain.
+            let (up_a, up_b) = self.paths_to_common(a, b)?;
+            let common = *up_a.last().unwrap_or(&a);
+            let down = self.chain_dcm(&up_b)?;
+            let up = self.chain_dcm(&up_a)?;
+            let a_l = transpose(&up);
+            if a == common {
+                down
+            } else if b == common {
+                a_l
+            } else {
+                self.mat_mul(&a_l, &down)?
+            }
+        };
+        self.dcm_cache.insert((a, b), m);
+        Ok(m)
+    }
+
+    /// `L . x` for the chain `x, parent(x), ..., L`.
+    fn chain_dcm(&mut self, chain: &[FrameId]) -> Result<Mat3> {
+        let mut m = self.dcm(chain[chain.len() - 1], chain[chain.len() - 1])?;
+        for w in chain.windows(2).rev() {
+            let step = self.dcm(w[1], w[0])?;
+            m = self.mat_mul(&m, &step)?;
+        }
+        Ok(m)
+    }
+
+    fn mat_mul(&mut self, a: &Mat3, b: &Mat3) -> Result<Mat3> {
+        let z = self.ar.zero();
+        let mut out = [[z; 3]; 3];
+        for (i, row) in out.iter_mut().enumerate() {
+            for (j, cell) in row.iter_mut().enumerate() {
+                let mut terms = Vec::with_capacity(3);
+                for k in 0..3 {
+                    terms.push(self.ar.mul(&[a[i][k], b[k][j]])?);
+                }
+                *cell = self.ar.add(&terms)?;
+            }
+        }
+        Ok(out)
+    }
+
+    /// `parent_i . frame_j` from the frame's orientation.
+    fn dcm_from_parent(&mut self, frame: FrameId) -> Result<Mat3> {
+        let Some(orientation) = self.frames[frame.index()].orientation.clone() else {
+            return Err(MechanicsError::NoOrientationPath {
+                a: self.frame_name(frame).to_string(),
+                b: self.frame_name(self.newtonian).to_string(),
+            });
+        };
+        Ok(match orientation {
+            Orientation::Axis { axis, angle } => {
+                let angle = if axis < 0 { self.ar.neg(angle)? } else { angle };
+                self.axis_rotation(axis.unsigned_abs(), angle)?
+            }
+            Orientation::BodyFixed { axes, angles } => {
+                let r0 = self.axis_rotation(axes[0], angles[0])?;
+                let r1 = self.axis_rotation(axes[1], angles[1])?;
+                let r2 = self.axis_rotation(axes[2], angles[2])?;
+                let m = self.mat_mul(&r0, &r1)?;
+                self.mat_mul(&m, &r2)?
+            }
+            Orientation::SpaceFixed { axes, angles } => {
+                let r0 = self.axis_rotation(axes[0], angles[0])?;
+                let r1 = self.axis_rotation(axes[1], angles[1])?;
+                let r2 = self.axis_rotation(axes[2], angles[2])?;
+                let m = self.mat_mul(&r2, &r1)?;
+                self.mat_mul(&m, &r0)?
+            }
+            Orientation::EulerParameters(e) => self.quaternion_dcm(e)?,
+            Orientation::Dcm(m) => m,
+        })
+    }
+
+    /// `parent_i . child_j` for a rotation by `angle` about the shared axis `axis` (1, 2, 3).
+    fn axis_rotation(&mut self, axis: u8, angle: ExprId) -> Result<Mat3> {
+        let c = self.ar.cos(angle)?;
+        let s = self.ar.sin(angle)?;
+        let ms = self.ar.neg(s)?;
+        let (z, o) = (self.ar.zero(), self.ar.one());
+        Ok(match axis {
+            1 => [[o, z, z], [z, c, ms], [z, s, c]],
+            2 => [[c, z, s], [z, o, z], [ms, z, c]],
+            _ => [[c, ms, z], [s, c, z], [z, z, o]],
+        })
+    }
+
+    fn quaternion_dcm(&mut self, e: [ExprId; 4]) -> Result<Mat3> {
+        let ar = &mut self.ar;
+        let sq: Vec<ExprId> = e.iter().map(|x| ar.powi(*x, 2)).collect::<std::result::Result<_, _>>()?;
+        let two = ar.integer(2);
+        let mut prod = |i: usize, j: usize, k: usize, l: usize, sign: bool| -> Result<ExprId> {
+            let p = ar.mul(&[e[i], e[j]])?;
+            let q = ar.mul(&[e[k], e[l]])?;
+            let s = if sign { ar.add(&[p, q])? } else { ar.sub(p, q)? };
+            Ok(ar.mul(&[two, s])?)
+        };
+        let m01 = prod(1, 2, 0, 3, false)?;
+        let m02 = prod(1, 3, 0, 2, true)?;
+        let m10 = prod(1, 2, 0, 3, true)?;
+        let m12 = prod(2, 3, 0, 1, false)?;
+        let m20 = prod(1, 3, 0, 2, false)?;
+        let m21 = prod(2, 3, 0, 1, true)?;
+        let diag = |ar: &mut crate::expr::Arena, plus: [usize; 2], minus: [usize; 2]| -> Result<ExprId> {
+            let p = ar.add(&[sq[plus[0]], sq[plus[1]]])?;
+            let m = ar.add(&[sq[minus[0]], sq[minus[1]]])?;
+            Ok(ar.sub(p, m)?)
+        };
+        let m00 = diag(&mut self.ar, [0, 1], [2, 3])?;
+        let m11 = diag(&mut self.ar, [0, 2], [1, 3])?;
+        let m22 = diag(&mut self.ar, [0, 3], [1, 2])?;
+        Ok([[m00, m01, m02], [m10, m11, m12], [m20, m21, m22]])
+    }
+
+    /// Angular velocity of `frame` relative to its parent.
+    fn ang_vel_in_parent(&mut self, frame: FrameId) -> Result<Vector> {
+        if let Some(w) = self.frames[frame.index()].ang_vel.clone() {
+            return Ok(w);
+        }
+        let parent = self.frames[frame.index()].parent.unwrap_or(self.newtonian);
+        match self.frames[frame.index()].orientation.clone() {
+            Some(Orientation::Axis { axis, angle }) => {
+                let rate = self.dt(angle)?;
+                let rate = if axis < 0 { self.ar.neg(rate)? } else { rate };
+                let z = self.ar.zero();
+                let mut m = [z; 3];
+                m[usize::from(axis.unsigned_abs()) - 1] = rate;
+                // The rotation axis has the same measure numbers in parent and child.
+                Ok(Vector::new(frame, m))
+            }
+            Some(_) => {
+                // Child-frame components from the skew matrix C^T dC/dt, C = parent . child.
+                let c = self.dcm(parent, frame)?;
+                let mut cdot = c;
+                for row in cdot.iter_mut() {
+                    for x in row.iter_mut() {
+                        *x = self.dt(*x)?;
+                    }
+                }
+                let mut w = [self.ar.zero(); 3];
+                for (slot, (k, j)) in w.iter_mut().zip([(2, 1), (0, 2), (1, 0)]) {
+                    let mut terms = Vec::with_capacity(3);
+                    for i in 0..3 {
+                        terms.push(self.ar.mul(&[c[i][k], cdot[i][j]])?);
+                    }
+                    let sum = self.ar.add(&terms)?;
+                    *slot = self.ar.trig_simplify(sum)?;
+                }
+                Ok(Vector::new(frame, w))
+            }
+            None => Ok(Vector::zero()),
+        }
+    }
+
+    /// Angular velocity of frame `b` in frame `a` (Autolev `W_B_A>`).
+    pub fn angular_velocity(&mut self, b: FrameId, a: FrameId) -> Result<Vector> {
+        if let Some(w) = self.ang_vel_cache.get(&(b, a)) {
+            return Ok(w.clone());
+        }
+        let (up_b, up_a) = self.paths_to_common(b, a)?;
+        let mut w = Vector::zero();
+        for &f in &up_b[..up_b.len() - 1] {
+            let rel = self.ang_vel_in_parent(f)?;
+            w = self.add_vectors(&w, &rel)?;
+        }
+        for &f in &up_a[..up_a.len() - 1] {
+            let rel = self.ang_vel_in_parent(f)?;
+            w = self.sub_vectors(&w, &rel)?;
+        }
+        self.ang_vel_cache.insert((b, a), w.clone());
+        Ok(w)
+    }
+
+    /// Angular acceleration of frame `b` in frame `a` (Autolev `ALF_B_A>`).
+    pub fn angular_acceleration(&mut self, b: FrameId, a: FrameId) -> Result<Vector> {
+        let w = self.angular_velocity(b, a)?;
+        self.dt_in(&w, a)
+    }
+}
+
+fn transpose(m: &Mat3) -> Mat3 {
+    [[m[0][0], m[1][0], m[2][0]], [m[0][1], m[1][1], m[2][1]], [m[0][2], m[1][2], m[2][2]]]
+}

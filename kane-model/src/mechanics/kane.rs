@@ -1,0 +1,247 @@
+//! Kane's method: partial velocities, generalized active and inertia forces, and the equations
+//! of motion `M(q, t) u' = f(q, u, t)` with `Fr + Fr* = 0`.
+
+use std::collections::hash_map::Entry;
+
+use rustc_hash::FxHashMap;
+
+use crate::expr::{ExprId, SymbolId};
+
+use super::error::{MechanicsError, Result};
+use super::model::{FrameId, Load, Model, PointId};
+use super::vector::{Dyadic, Vector};
+
+/// Kane's equations of a model: `q' = kinematics`, `mass_matrix * u' = forcing`.
+#[derive(Clone, Debug)]
+pub struct KaneEquations {
+    /// Generalized coordinates `q`.
+    pub coordinates: Vec<SymbolId>,
+    /// Generalized speeds `u`.
+    pub speeds: Vec<SymbolId>,
+    /// The symbols `u'`.
+    pub speed_derivatives: Vec<SymbolId>,
+    /// Right-hand sides of the kinematic differential equations, one per coordinate.
+    pub kinematics: Vec<ExprId>,
+    /// The symmetric mass matrix `M`, row by row.
+    pub mass_matrix: Vec<Vec<ExprId>>,
+    /// The forcing vector `f`.
+    pub forcing: Vec<ExprId>,
+}
+
+/// The motion of one mass: a rigid body or a particle (no inertia, no rotation).
+struct MassMotion {
+    mass: ExprId,
+    /// Velocity and acceleration of the mass centre in the Newtonian frame.
+    velocity: Vector,
+    acceleration: Vector,
+    /// Angular velocity and acceleration, and the central inertia, for bodies.
+    rotation: Option<(Vector, Vector, Dyadic)>,
+}
+
+/// Partial velocities of one mass with respect to each speed.
+struct Partials {
+    linear: Vec<Vector>,
+    angular: Vec<Vector>,
+}
+
+impl Model {
+    fn speed_derivative_symbols(&mut self) -> Result<Vec<SymbolId>> {
+        let speeds = self.speeds.clone();
+        Ok(speeds.into_iter().map(|u| self.ar.derivative_symbol(u)).collect::<std::result::Result<_, _>>()?)
+    }
+
+    fn check_ready(&self) -> Result<()> {
+        if self.speeds.is_empty() {
+            return Err(MechanicsError::NoSpeeds);
+        }
+        if let Some(q) = self.coordinates.iter().find(|q| !self.kinematics.contains_key(q)) {
+            return Err(MechanicsError::MissingKinematics(self.ar.symbol_info(*q).name.clone()));
+        }
+        Ok(())
+    }
+
+    fn mass_motions(&mut self) -> Result<Vec<MassMotion>> {
+        let n = self.newtonian;
+        let mut out = Vec::new();
+        for b in self.bodies.clone() {
+            let mass = b.mass.ok_or_else(|| MechanicsError::MissingMass(b.name.clone()))?;
+            let velocity = self.velocity(b.mass_center, n)?;
+            let acceleration = self.acceleration(b.mass_center, n)?;
+            let w = self.angular_velocity(b.frame, n)?;
+            let alpha = self.angular_acceleration(b.frame, n)?;
+            let inertia = b.inertia.clone().unwrap_or_default();
+            out.push(MassMotion { mass, velocity, acceleration, rotation: Some((w, alpha, inertia)) });
+        }
+        for p in self.particles.clone() {
+            let mass = p.mass.ok_or_else(|| MechanicsError::MissingMass(p.name.clone()))?;
+            let velocity = self.velocity(p.point, n)?;
+            let acceleration = self.acceleration(p.point, n)?;
+            out.push(MassMotion { mass, velocity, acceleration, rotation: None });
+        }
+        Ok(out)
+    }
+
+    fn partials_of(&mut self, v: &Vector) -> Result<Vec<Vector>> {
+        let speeds = self.speeds.clone();
+        speeds.iter().map(|u| self.partial(v, *u)).collect()
+    }
+
+    fn mass_partials(&mut self, m: &MassMotion) -> Result<Partials> {
+        let linear = self.partials_of(&m.velocity)?;
+        let angular = match &m.rotation {
+            Some((w, _, _)) => self.partials_of(w)?,
+            None => vec![Vector::zero(); self.speeds.len()],
+        };
+        Ok(Partials { linear, angular })
+    }
+
+    /// Partial velocities of a point (Autolev's partial velocity table, one row per speed).
+    pub fn partial_velocities(&mut self, point: PointId) -> Result<Vec<Vector>> {
+        let v = self.velocity(point, self.newtonian)?;
+        self.partials_of(&v)
+    }
+
+    /// Partial angular velocities of a frame in the Newtonian frame.
+    pub fn partial_angular_velocities(&mut self, frame: FrameId) -> Result<Vec<Vector>> {
+        let w = self.angular_velocity(frame, self.newtonian)?;
+        self.partials_of(&w)
+    }
+
+    /// The generalized active forces `Fr`, one per speed.
+    pub fn generalized_active_forces(&mut self) -> Result<Vec<ExprId>> {
+        self.check_ready()?;
+        let mut per_point: FxHashMap<PointId, Vec<Vector>> = FxHashMap::default();
+        let mut per_frame: FxHashMap<FrameId, Vec<Vector>> = FxHashMap::default();
+        let mut terms: Vec<Vec<ExprId>> = vec![Vec::new(); self.speeds.len()];
+        for load in self.loads.clone() {
+            let (partials, vector) = match load {
+                Load::Force { point, force } => match per_point.entry(point) {
+                    Entry::Occupied(e) => (e.get().clone(), force),
+                    Entry::Vacant(e) => (e.insert(self.partial_velocities(point)?).clone(), force),
+                },
+                Load::Torque { frame, torque } => match per_frame.entry(frame) {
+                    Entry::Occupied(e) => (e.get().clone(), torque),
+                    Entry::Vacant(e) => (e.insert(self.partial_angular_velocities(frame)?).clone(), torque),
+                },
+            };
+            for (r, pv) in partials.iter().enumerate() {
+                let d = self.dot(pv, &vector)?;
+                terms[r].push(d);
+            }
+        }
+        terms.into_iter().map(|t| Ok(self.ar.add(&t)?)).collect()
+    }
+
+    /// The generalized inertia forces `Fr*`, one per speed.
+    pub fn generalized_inertia_forces(&mut self) -> Result<Vec<ExprId>> {
+        self.check_ready()?;
+        let motions = self.mass_motions()?;
+        self.inertia_forces(&motions, false)
+    }
+
+    /// `Fr*` from the motions; with `without_accelerations`, the part free of `u'`.
+    fn inertia_forces(&mut self, motions: &[MassMotion], without_accelerations: bool) -> Result<Vec<ExprId>> {
+        let udot = self.speed_derivative_symbols()?;
+        let zero_udot: FxHashMap<ExprId, ExprId> = {
+            let z = self.ar.zero();
+            udot.iter().map(|s| (self.ar.symbol_expr(*s), z)).collect()
+        };
+        let mut terms: Vec<Vec<ExprId>> = vec![Vec::new(); self.speeds.len()];
+        for m in motions {
+            let p = self.mass_partials(m)?;
+            let mut a = m.acceleration.clone();
+            if without_accelerations {
+                a = self.subs_vector(&a, &zero_udot)?;
+            }
+            let force = self.scale(&a, m.mass)?;
+            let torque = match &m.rotation {
+                Some((w, alpha, inertia)) => {
+                    let alpha = if without_accelerations {
+                        self.subs_vector(alpha, &zero_udot)?
+                    } else {
+                        alpha.clone()
+                    };
+                    let i_alpha = self.dyadic_dot(inertia, &alpha)?;
+                    let i_w = self.dyadic_dot(inertia, w)?;
+                    let gyro = self.cross(w, &i_w)?;
+                    Some(self.add_vectors(&i_alpha, &gyro)?)
+                }
+                None => None,
+            };
+            for (r, bucket) in terms.iter_mut().enumerate() {
+                let f = self.dot(&p.linear[r], &force)?;
+                bucket.push(self.ar.neg(f)?);
+                if let Some(t) = &torque {
+                    let d = self.dot(&p.angular[r], t)?;
+                    bucket.push(self.ar.neg(d)?);
+                }
+            }
+        }
+        terms.into_iter().map(|t| Ok(self.ar.add(&t)?)).collect()
+    }
+
+    fn subs_vector(&mut self, v: &Vector, map: &FxHashMap<ExprId, ExprId>) -> Result<Vector> {
+        let mut out = v.clone();
+        for (_, m) in out.terms.iter_mut() {
+            let r = self.ar.subs_many(m, map)?;
+            m.copy_from_slice(&r);
+        }
+        Ok(out)
+    }
+
+    /// Kane's equations `M u' = f` and the kinematic differential equations.
+    ///
+    /// The mass matrix is formed directly and symmetrically as
+    /// `M_rs = sum(m v_r . v_s + w_r . I . w_s)`; the forcing is `f = Fr + Fr*` with `u' = 0`.
+    pub fn kane(&mut self) -> Result<KaneEquations> {
+        self.check_ready()?;
+        let n = self.speeds.len();
+        let motions = self.mass_motions()?;
+        let mut mass_terms: Vec<Vec<Vec<ExprId>>> = vec![vec![Vec::new(); n]; n];
+        for m in &motions {
+            let p = self.mass_partials(m)?;
+            let inertia_w: Vec<Vector> = match &m.rotation {
+                Some((_, _, inertia)) => {
+                    p.angular.iter().map(|w| self.dyadic_dot(inertia, w)).collect::<Result<_>>()?
+                }
+                None => Vec::new(),
+            };
+            for (r, row) in mass_terms.iter_mut().enumerate() {
+                for (s, cell) in row.iter_mut().enumerate().skip(r) {
+                    let vv = self.dot(&p.linear[r], &p.linear[s])?;
+                    let mv = self.ar.mul(&[m.mass, vv])?;
+                    cell.push(mv);
+                    if !inertia_w.is_empty() {
+                        let wiw = self.dot(&p.angular[r], &inertia_w[s])?;
+                        cell.push(wiw);
+                    }
+                }
+            }
+        }
+        let zero = self.ar.zero();
+        let mut mass_matrix = vec![vec![zero; n]; n];
+        for r in 0..n {
+            for s in r..n {
+                let e = self.ar.add(&mass_terms[r][s])?;
+                mass_matrix[r][s] = e;
+                mass_matrix[s][r] = e;
+            }
+        }
+        let fr = self.generalized_active_forces()?;
+        let frstar0 = self.inertia_forces(&motions, true)?;
+        let forcing = fr
+            .iter()
+            .zip(&frstar0)
+            .map(|(a, b)| Ok(self.ar.add(&[*a, *b])?))
+            .collect::<Result<Vec<ExprId>>>()?;
+        let kinematics = self.coordinates.iter().map(|q| self.kinematics[q]).collect();
+        Ok(KaneEquations {
+            coordinates: self.coordinates.clone(),
+            speeds: self.speeds.clone(),
+            speed_derivatives: self.speed_derivative_symbols()?,
+            kinematics,
+            mass_matrix,
+            forcing,
+        })
+    }
+}

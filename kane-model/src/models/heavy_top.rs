@@ -1,0 +1,79 @@
+//! The heavy symmetric top of the EJS "Gyroscope" model.
+//!
+//! A rotor, a uniform solid ellipsoid with semi-axes `R, R, R/5` (body axis 3 the axle), has its
+//! centre at distance `d` along the axle from a fixed support point O; gravity `-g n3`. The
+//! orientation is a unit quaternion (Euler parameters `e0..e3`, scalar first, body to space), the
+//! speeds are the body-frame angular velocity components `w1, w2, w3`, and the kinematics are
+//! `e' = 1/2 e (0, w)`.
+//!
+//! The EJS text gives the axial moment as `4MR^2/5`; the ellipsoid formula gives `2MR^2/5` for
+//! these semi-axes (the transverse `26MR^2/125` agrees with both). The inertia here is computed
+//! from the shape, so it is `2MR^2/5`.
+
+use crate::expr::ExprId;
+use crate::mechanics::{BodyId, Model, Orientation, PointId, Result, Shape, Vector};
+
+/// The heavy top with handles on its symbols.
+pub struct HeavyTop {
+    /// The model.
+    pub model: Model,
+    /// Euler parameters e0..e3.
+    pub e: [ExprId; 4],
+    /// Body angular velocity components w1..w3.
+    pub w: [ExprId; 3],
+    /// The rotor.
+    pub rotor: BodyId,
+    /// The support point.
+    pub support: PointId,
+    /// Constants M, g, R, d.
+    pub constants: [ExprId; 4],
+}
+
+impl HeavyTop {
+    /// Builds the model.
+    pub fn new() -> Result<HeavyTop> {
+        let mut m = Model::new("N");
+        let n = m.newtonian();
+        let [mass, g, r, d] = ["M", "g", "R", "d"].map(|s| m.ar.constant(s));
+        let (mass, g, r, d) = (mass?, g?, r?, d?);
+        let e = [m.ar.variable("e0")?, m.ar.variable("e1")?, m.ar.variable("e2")?, m.ar.variable("e3")?];
+        let w = [m.ar.variable("w1")?, m.ar.variable("w2")?, m.ar.variable("w3")?];
+        let rotor = m.add_body("R")?;
+        let fr = m.body(rotor).frame;
+        m.orient(fr, n, Orientation::EulerParameters(e))?;
+        m.set_angular_velocity(fr, Vector::new(fr, w));
+        m.set_coordinates(&e)?;
+        m.set_speeds(&w)?;
+        // e' = 1/2 e (0, w): e0' = -(e.w)/2, ev' = (e0 w + ev x w)/2.
+        let half = m.ar.rational(1, 2)?;
+        let terms: [[(usize, usize, i128); 3]; 4] = [
+            [(1, 0, -1), (2, 1, -1), (3, 2, -1)],
+            [(0, 0, 1), (2, 2, 1), (3, 1, -1)],
+            [(0, 1, 1), (3, 0, 1), (1, 2, -1)],
+            [(0, 2, 1), (1, 1, 1), (2, 0, -1)],
+        ];
+        for (k, row) in terms.iter().enumerate() {
+            let mut parts = Vec::new();
+            for &(ei, wi, sign) in row {
+                let s = m.ar.integer(sign);
+                parts.push(m.ar.mul(&[s, half, e[ei], w[wi]])?);
+            }
+            let rhs = m.ar.add(&parts)?;
+            m.set_kinematics(e[k], rhs)?;
+        }
+        let fifth = m.ar.rational(1, 5)?;
+        let c = m.ar.mul(&[fifth, r])?;
+        let inertia = m.shape_inertia(Shape::SolidEllipsoid { a: r, b: r, c }, mass, fr)?;
+        m.set_mass(rotor, mass);
+        m.set_inertia(rotor, inertia);
+        let o = m.add_point("O")?;
+        m.fix_point(o, n);
+        let cm = m.body(rotor).mass_center;
+        let arm = m.scale(&m.unit(fr, 3), d)?;
+        m.set_position(cm, o, arm)?;
+        let mg = m.ar.neg(g)?;
+        let gravity = m.scale(&m.unit(n, 3), mg)?;
+        m.add_gravity(&gravity)?;
+        Ok(HeavyTop { model: m, e, w, rotor, support: o, constants: [mass, g, r, d] })
+    }
+}
