@@ -10,6 +10,7 @@ mod frame;
 mod inertia;
 mod kane;
 mod model;
+mod outputs;
 mod point;
 mod vector;
 mod vector_ops;
