@@ -6,7 +6,7 @@
 use crate::expr::ExprId;
 
 use super::error::Result;
-use super::model::{FrameId, Model};
+use super::model::{FrameId, Mat3, Model, Orientation};
 use super::vector::{Dyadic, Vector};
 
 /// A body shape with uniform density; axis 3 is the symmetry axis where there is one.
@@ -105,6 +105,34 @@ impl Model {
         Dyadic::in_frame(frame, [[d[0], z, z], [z, d[1], z], [z, z, d[2]]])
     }
 
+    /// The same dyadic written in the frame closest to the Newtonian frame in which it has the same
+    /// measure numbers: a diagonal inertia axisymmetric about the axis of a simple rotation is
+    /// unchanged by that rotation, so a symmetric rotor's inertia can be used in its gimbal's
+    /// frame and the rotor angle drops out of the equations.
+    pub fn rebase_inertia(&self, d: &Dyadic) -> Dyadic {
+        let mut out = d.clone();
+        for term in out.terms.iter_mut() {
+            loop {
+                let (fa, fb, m) = *term;
+                if fa != fb || !is_diagonal(&self.ar, &m) {
+                    break;
+                }
+                let frame = &self.frames[fa.index()];
+                let (Some(parent), Some(Orientation::Axis { axis, .. })) = (frame.parent, &frame.orientation)
+                else {
+                    break;
+                };
+                let k = usize::from(axis.unsigned_abs()) - 1;
+                let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+                if m[i][i] != m[j][j] || self.frames[fa.index()].ang_vel.is_some() {
+                    break;
+                }
+                *term = (parent, parent, m);
+            }
+        }
+        out
+    }
+
     /// Parallel-axis transfer: inertia about a point at `r` from the mass centre,
     /// `I + m (r.r U - r r)`, expressed in `frame`.
     pub fn parallel_axis(
@@ -126,4 +154,8 @@ impl Model {
         }
         self.add_dyadics(central, &Dyadic::in_frame(frame, shift))
     }
+}
+
+fn is_diagonal(ar: &crate::expr::Arena, m: &Mat3) -> bool {
+    (0..3).all(|i| (0..3).all(|j| i == j || ar.is_zero(m[i][j])))
 }

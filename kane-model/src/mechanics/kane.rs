@@ -69,7 +69,7 @@ impl Model {
             let acceleration = self.acceleration(b.mass_center, n)?;
             let w = self.angular_velocity(b.frame, n)?;
             let alpha = self.angular_acceleration(b.frame, n)?;
-            let inertia = b.inertia.clone().unwrap_or_default();
+            let inertia = self.rebase_inertia(&b.inertia.clone().unwrap_or_default());
             out.push(MassMotion { mass, velocity, acceleration, rotation: Some((w, alpha, inertia)) });
         }
         for p in self.particles.clone() {
@@ -178,6 +178,33 @@ impl Model {
             }
         }
         terms.into_iter().map(|t| Ok(self.ar.add(&t)?)).collect()
+    }
+
+    /// Replaces each entry of `M` and `f` by its trigonometric canonical form where that takes
+    /// fewer operations to evaluate (spurious angles of symmetric bodies cancel this way).
+    pub fn simplify_equations(&mut self, eqs: &mut KaneEquations) -> Result<()> {
+        for row in eqs.mass_matrix.iter_mut() {
+            for x in row.iter_mut() {
+                *x = self.smaller_form(*x)?;
+            }
+        }
+        for f in eqs.forcing.iter_mut() {
+            *f = self.smaller_form(*f)?;
+        }
+        Ok(())
+    }
+
+    /// `e` or its trigonometric canonical form, whichever takes fewer operations to evaluate.
+    fn smaller_form(&mut self, e: ExprId) -> Result<ExprId> {
+        let s = self.ar.trig_simplify(e)?;
+        if s == e {
+            return Ok(e);
+        }
+        let cost = |ar: &crate::expr::Arena, x: ExprId| {
+            let syms = ar.free_symbols(&[x]);
+            crate::expr::Tape::compile(ar, &[x], &syms).map(|t| t.op_count()).unwrap_or(usize::MAX)
+        };
+        Ok(if cost(&self.ar, s) < cost(&self.ar, e) { s } else { e })
     }
 
     fn subs_vector(&mut self, v: &Vector, map: &FxHashMap<ExprId, ExprId>) -> Result<Vector> {

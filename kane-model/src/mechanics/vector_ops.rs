@@ -6,7 +6,7 @@
 use crate::expr::{ExprId, SymbolId};
 
 use super::error::Result;
-use super::model::{FrameId, Model};
+use super::model::{FrameId, Model, Orientation};
 use super::vector::{Dyadic, Vector};
 
 impl Model {
@@ -35,7 +35,7 @@ impl Model {
                 None => out.terms.push((*f, *m)),
             }
         }
-        self.prune(&mut out);
+        self.prune(&mut out)?;
         Ok(out)
     }
 
@@ -53,13 +53,48 @@ impl Model {
                 *x = self.ar.mul(&[k, *x])?;
             }
         }
-        self.prune(&mut out);
+        self.prune(&mut out)?;
         Ok(out)
     }
 
-    /// Drops terms whose measure numbers are all zero.
-    fn prune(&self, v: &mut Vector) {
+    /// Drops zero terms, and moves a term lying along the axis of its frame's simple rotation to
+    /// the parent frame (where its measure numbers are the same), merging terms that meet.
+    fn prune(&mut self, v: &mut Vector) -> Result<()> {
         v.terms.retain(|(_, m)| !m.iter().all(|x| self.ar.is_zero(*x)));
+        let mut moved = false;
+        for (f, m) in v.terms.iter_mut() {
+            while let Some(parent) = self.axis_parent(*f, m) {
+                *f = parent;
+                moved = true;
+            }
+        }
+        if moved {
+            let mut merged: Vec<(FrameId, [ExprId; 3])> = Vec::with_capacity(v.terms.len());
+            for (f, m) in std::mem::take(&mut v.terms) {
+                match merged.iter_mut().find(|(g, _)| *g == f) {
+                    Some((_, acc)) => {
+                        for i in 0..3 {
+                            acc[i] = self.ar.add(&[acc[i], m[i]])?;
+                        }
+                    }
+                    None => merged.push((f, m)),
+                }
+            }
+            merged.retain(|(_, m)| !m.iter().all(|x| self.ar.is_zero(*x)));
+            v.terms = merged;
+        }
+        Ok(())
+    }
+
+    /// The parent of `frame` when `m` lies along the axis of `frame`'s simple rotation.
+    fn axis_parent(&self, frame: FrameId, m: &[ExprId; 3]) -> Option<FrameId> {
+        let f = &self.frames[frame.index()];
+        let (Some(parent), Some(Orientation::Axis { axis, .. })) = (f.parent, &f.orientation) else {
+            return None;
+        };
+        let k = usize::from(axis.unsigned_abs()) - 1;
+        let off_axis_zero = (0..3).all(|i| i == k || self.ar.is_zero(m[i]));
+        off_axis_zero.then_some(parent)
     }
 
     /// Measure numbers of `v` in `frame`.
@@ -78,7 +113,7 @@ impl Model {
     pub fn express_vector(&mut self, v: &Vector, frame: FrameId) -> Result<Vector> {
         let m = self.express(v, frame)?;
         let mut out = Vector::new(frame, m);
-        self.prune(&mut out);
+        self.prune(&mut out)?;
         Ok(out)
     }
 
@@ -164,7 +199,7 @@ impl Model {
             }
             out.terms.push((*f, d));
         }
-        self.prune(&mut out);
+        self.prune(&mut out)?;
         Ok(out)
     }
 
