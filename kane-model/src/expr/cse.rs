@@ -100,6 +100,10 @@ mod tests {
         let c = ar.cos(s).unwrap();
         let sn = ar.sin(s).unwrap();
         let e = ar.mul(&[c, sn]).unwrap();
+        let sq = ar.powi(s, 2).unwrap();
+        let e2 = ar.add(&[sq, x]).unwrap();
+        let with_square = Cse::new(&ar, &[sq, e2]);
+        assert_eq!(with_square.to_text(&ar), "x0 = (x + y)^2\nout0 = x0\nout1 = x + x0\n");
         let cse = Cse::new(&ar, &[e, c]);
         assert_eq!(cse.temps, vec![s, c]);
         assert_eq!(cse.to_text(&ar), "x0 = x + y\nx1 = cos(x0)\nout0 = x1*sin(x0)\nout1 = x1\n");

@@ -8,6 +8,7 @@
 
 mod arena;
 mod build;
+mod collect;
 mod cse;
 mod diff;
 mod equiv;

@@ -51,12 +51,43 @@ struct Compiler<'a> {
     ops: Vec<Op>,
     reg: FxHashMap<(ExprId, bool), u32>,
     consts: FxHashMap<u64, u32>,
+    /// Value numbering: an instruction already emitted is reused, so products and sums that
+    /// share a prefix share its instructions.
+    emitted: FxHashMap<OpKey, u32>,
+}
+
+/// An instruction as a hashable key (constants by bits, commutative operands ordered).
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+struct OpKey(u8, u32, u64);
+
+fn key_of(op: Op) -> OpKey {
+    let ordered = |a: u32, b: u32| u64::from(a.max(b));
+    match op {
+        Op::Input(k) => OpKey(0, k, 0),
+        Op::Const(c) => OpKey(1, 0, c.to_bits()),
+        Op::Add(a, b) => OpKey(2, a.min(b), ordered(a, b)),
+        Op::Sub(a, b) => OpKey(3, a, u64::from(b)),
+        Op::Mul(a, b) => OpKey(4, a.min(b), ordered(a, b)),
+        Op::Div(a, b) => OpKey(5, a, u64::from(b)),
+        Op::Neg(a) => OpKey(6, a, 0),
+        Op::Powi(a, k) => OpKey(7, a, k as u32 as u64),
+        Op::Sqrt(a) => OpKey(8, a, 0),
+        Op::Powf(a, b) => OpKey(9, a, u64::from(b)),
+        Op::Func(f, a) => OpKey(10 + f as u8, a, 0),
+        Op::Atan2(a, b) => OpKey(30, a, u64::from(b)),
+    }
 }
 
 impl Compiler<'_> {
     fn push(&mut self, op: Op) -> u32 {
+        let key = key_of(op);
+        if let Some(&r) = self.emitted.get(&key) {
+            return r;
+        }
         self.ops.push(op);
-        (self.ops.len() - 1) as u32
+        let r = (self.ops.len() - 1) as u32;
+        self.emitted.insert(key, r);
+        r
     }
 
     fn constant(&mut self, x: f64) -> u32 {
@@ -212,7 +243,13 @@ impl Tape {
     pub fn compile(ar: &Arena, roots: &[ExprId], inputs: &[SymbolId]) -> Result<Tape, ExprError> {
         let slots: FxHashMap<SymbolId, u32> =
             inputs.iter().enumerate().map(|(k, s)| (*s, k as u32)).collect();
-        let mut c = Compiler { ar, ops: Vec::new(), reg: FxHashMap::default(), consts: FxHashMap::default() };
+        let mut c = Compiler {
+            ar,
+            ops: Vec::new(),
+            reg: FxHashMap::default(),
+            consts: FxHashMap::default(),
+            emitted: FxHashMap::default(),
+        };
         for id in ar.bottom_up(roots, |_| false) {
             let r = c.node(id, &slots)?;
             c.reg.insert((id, false), r);

@@ -74,6 +74,11 @@ impl Arena {
         syms
     }
 
+    /// Number of distinct nodes in the expression graph of `e`.
+    pub fn graph_size(&self, e: ExprId) -> usize {
+        self.bottom_up(&[e], |_| false).len()
+    }
+
     /// True when `e` contains the symbol `s`.
     pub fn depends_on(&self, e: ExprId, s: SymbolId) -> bool {
         self.free_symbols(&[e]).contains(&s)

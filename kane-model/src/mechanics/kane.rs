@@ -5,7 +5,7 @@ use std::collections::hash_map::Entry;
 
 use rustc_hash::FxHashMap;
 
-use crate::expr::{ExprId, SymbolId};
+use crate::expr::{ExprId, Node, SymbolId, SymbolKind};
 
 use super::error::{MechanicsError, Result};
 use super::model::{FrameId, Load, Model, PointId};
@@ -180,8 +180,8 @@ impl Model {
         terms.into_iter().map(|t| Ok(self.ar.add(&t)?)).collect()
     }
 
-    /// Replaces each entry of `M` and `f` by its trigonometric canonical form where that takes
-    /// fewer operations to evaluate (spurious angles of symmetric bodies cancel this way).
+    /// Replaces each entry of `M` and `f` by its trigonometric canonical form in the state, terms
+    /// collected by state monomial, where that takes fewer operations to evaluate.
     pub fn simplify_equations(&mut self, eqs: &mut KaneEquations) -> Result<()> {
         for row in eqs.mass_matrix.iter_mut() {
             for x in row.iter_mut() {
@@ -194,17 +194,17 @@ impl Model {
         Ok(())
     }
 
-    /// `e` or its trigonometric canonical form, whichever takes fewer operations to evaluate.
+    /// `e` or its collected canonical form, whichever has the smaller expression graph.
     fn smaller_form(&mut self, e: ExprId) -> Result<ExprId> {
-        let s = self.ar.trig_simplify(e)?;
-        if s == e {
+        if matches!(self.ar.node(e), Node::Rational(_) | Node::Float(_) | Node::Symbol(_)) {
             return Ok(e);
         }
-        let cost = |ar: &crate::expr::Arena, x: ExprId| {
-            let syms = ar.free_symbols(&[x]);
-            crate::expr::Tape::compile(ar, &[x], &syms).map(|t| t.op_count()).unwrap_or(usize::MAX)
+        let s = {
+            let ar = &mut self.ar;
+            let kinds: Vec<bool> = ar.symbols().map(|(_, info)| info.kind == SymbolKind::Constant).collect();
+            ar.collect_state(e, |sym| kinds.get(sym.index()).copied().unwrap_or(true))?
         };
-        Ok(if cost(&self.ar, s) < cost(&self.ar, e) { s } else { e })
+        Ok(if self.ar.graph_size(s) < self.ar.graph_size(e) { s } else { e })
     }
 
     fn subs_vector(&mut self, v: &Vector, map: &FxHashMap<ExprId, ExprId>) -> Result<Vector> {

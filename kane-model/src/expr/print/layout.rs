@@ -125,10 +125,12 @@ fn product<S: Syntax>(ar: &Arena, e: ExprId, syntax: &mut S) -> (S::Out, Prec) {
     let mut num: Vec<(S::Out, Prec)> = Vec::new();
     let mut den: Vec<(S::Out, Prec)> = Vec::new();
     for f in factors {
+        // The power being laid out is not replaced by its own name.
+        let named_elsewhere = f != e && syntax.named(f).is_some();
         match ar.node(f) {
             Node::Rational(r) => coeff = if r.is_negative() { r.checked_neg().unwrap_or(*r) } else { *r },
             Node::Float(b) => num.push((syntax.number(Number::Float(f64::from_bits(*b).abs())), Prec::Atom)),
-            Node::Pow([b, x]) if syntax.named(f).is_none() => match ar.as_rational(*x) {
+            Node::Pow([b, x]) if !named_elsewhere => match ar.as_rational(*x) {
                 Some(r) if r.is_negative() => {
                     let pos = r.checked_neg().unwrap_or(r);
                     den.push(power(ar, *b, pos, syntax));
