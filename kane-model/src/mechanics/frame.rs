@@ -30,7 +30,7 @@ impl Model {
     /// Sets the angular velocity of `frame` in its parent explicitly (Autolev `W_B_A> = ...`).
     pub fn set_angular_velocity(&mut self, frame: FrameId, w: Vector) {
         self.frames[frame.index()].ang_vel = Some(w);
-        self.ang_vel_cache.clear();
+        self.clear_kinematics_caches();
     }
 
     /// `frame`, its parent, grandparent, ... up to the root of its tree.

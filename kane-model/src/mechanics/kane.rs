@@ -16,8 +16,10 @@ use super::vector::{Dyadic, Vector};
 pub struct KaneEquations {
     /// Generalized coordinates `q`.
     pub coordinates: Vec<SymbolId>,
-    /// Generalized speeds `u`.
+    /// Independent generalized speeds `u`.
     pub speeds: Vec<SymbolId>,
+    /// Dependent speeds with their expressions in the independent ones (motion constraints).
+    pub dependent_speeds: Vec<(SymbolId, ExprId)>,
     /// The symbols `u'`.
     pub speed_derivatives: Vec<SymbolId>,
     /// Right-hand sides of the kinematic differential equations, one per coordinate.
@@ -46,7 +48,7 @@ struct Partials {
 
 impl Model {
     fn speed_derivative_symbols(&mut self) -> Result<Vec<SymbolId>> {
-        let speeds = self.speeds.clone();
+        let speeds = self.independent_speeds();
         Ok(speeds.into_iter().map(|u| self.ar.derivative_symbol(u)).collect::<std::result::Result<_, _>>()?)
     }
 
@@ -65,24 +67,36 @@ impl Model {
         let mut out = Vec::new();
         for b in self.bodies.clone() {
             let mass = b.mass.ok_or_else(|| MechanicsError::MissingMass(b.name.clone()))?;
-            let velocity = self.velocity(b.mass_center, n)?;
-            let acceleration = self.acceleration(b.mass_center, n)?;
+            let (velocity, acceleration) = self.point_motion(b.mass_center)?;
             let w = self.angular_velocity(b.frame, n)?;
-            let alpha = self.angular_acceleration(b.frame, n)?;
+            let w = self.eliminate_dependent_vector(&w)?;
+            let alpha = self.dt_in(&w, n)?;
+            let alpha = self.eliminate_dependent_vector(&alpha)?;
             let inertia = self.rebase_inertia(&b.inertia.clone().unwrap_or_default());
             out.push(MassMotion { mass, velocity, acceleration, rotation: Some((w, alpha, inertia)) });
         }
         for p in self.particles.clone() {
             let mass = p.mass.ok_or_else(|| MechanicsError::MissingMass(p.name.clone()))?;
-            let velocity = self.velocity(p.point, n)?;
-            let acceleration = self.acceleration(p.point, n)?;
+            let (velocity, acceleration) = self.point_motion(p.point)?;
             out.push(MassMotion { mass, velocity, acceleration, rotation: None });
         }
         Ok(out)
     }
 
+    /// Velocity and acceleration of a point in the Newtonian frame, dependent speeds eliminated.
+    fn point_motion(&mut self, point: PointId) -> Result<(Vector, Vector)> {
+        let n = self.newtonian;
+        let v = self.velocity(point, n)?;
+        let v = self.eliminate_dependent_vector(&v)?;
+        let a = match self.points[point.index()].acceleration.get(&n) {
+            Some(a) => a.clone(),
+            None => self.dt_in(&v, n)?,
+        };
+        Ok((v.clone(), self.eliminate_dependent_vector(&a)?))
+    }
+
     fn partials_of(&mut self, v: &Vector) -> Result<Vec<Vector>> {
-        let speeds = self.speeds.clone();
+        let speeds = self.independent_speeds();
         speeds.iter().map(|u| self.partial(v, *u)).collect()
     }
 
@@ -90,7 +104,7 @@ impl Model {
         let linear = self.partials_of(&m.velocity)?;
         let angular = match &m.rotation {
             Some((w, _, _)) => self.partials_of(w)?,
-            None => vec![Vector::zero(); self.speeds.len()],
+            None => vec![Vector::zero(); self.independent_speeds().len()],
         };
         Ok(Partials { linear, angular })
     }
@@ -98,12 +112,14 @@ impl Model {
     /// Partial velocities of a point (Autolev's partial velocity table, one row per speed).
     pub fn partial_velocities(&mut self, point: PointId) -> Result<Vec<Vector>> {
         let v = self.velocity(point, self.newtonian)?;
+        let v = self.eliminate_dependent_vector(&v)?;
         self.partials_of(&v)
     }
 
     /// Partial angular velocities of a frame in the Newtonian frame.
     pub fn partial_angular_velocities(&mut self, frame: FrameId) -> Result<Vec<Vector>> {
         let w = self.angular_velocity(frame, self.newtonian)?;
+        let w = self.eliminate_dependent_vector(&w)?;
         self.partials_of(&w)
     }
 
@@ -112,7 +128,7 @@ impl Model {
         self.check_ready()?;
         let mut per_point: FxHashMap<PointId, Vec<Vector>> = FxHashMap::default();
         let mut per_frame: FxHashMap<FrameId, Vec<Vector>> = FxHashMap::default();
-        let mut terms: Vec<Vec<ExprId>> = vec![Vec::new(); self.speeds.len()];
+        let mut terms: Vec<Vec<ExprId>> = vec![Vec::new(); self.independent_speeds().len()];
         for load in self.loads.clone() {
             let (partials, vector) = match load {
                 Load::Force { point, force } => match per_point.entry(point) {
@@ -146,7 +162,7 @@ impl Model {
             let z = self.ar.zero();
             udot.iter().map(|s| (self.ar.symbol_expr(*s), z)).collect()
         };
-        let mut terms: Vec<Vec<ExprId>> = vec![Vec::new(); self.speeds.len()];
+        let mut terms: Vec<Vec<ExprId>> = vec![Vec::new(); self.independent_speeds().len()];
         for m in motions {
             let p = self.mass_partials(m)?;
             let mut a = m.acceleration.clone();
@@ -222,7 +238,7 @@ impl Model {
     /// `M_rs = sum(m v_r . v_s + w_r . I . w_s)`; the forcing is `f = Fr + Fr*` with `u' = 0`.
     pub fn kane(&mut self) -> Result<KaneEquations> {
         self.check_ready()?;
-        let n = self.speeds.len();
+        let n = self.independent_speeds().len();
         let motions = self.mass_motions()?;
         let mut mass_terms: Vec<Vec<Vec<ExprId>>> = vec![vec![Vec::new(); n]; n];
         for m in &motions {
@@ -261,10 +277,18 @@ impl Model {
             .zip(&frstar0)
             .map(|(a, b)| Ok(self.ar.add(&[*a, *b])?))
             .collect::<Result<Vec<ExprId>>>()?;
-        let kinematics = self.coordinates.iter().map(|q| self.kinematics[q]).collect();
+        let coordinates = self.coordinates.clone();
+        let kinematics = coordinates
+            .iter()
+            .map(|q| {
+                let rhs = self.kinematics[q];
+                self.eliminate_dependent(rhs)
+            })
+            .collect::<Result<Vec<_>>>()?;
         Ok(KaneEquations {
-            coordinates: self.coordinates.clone(),
-            speeds: self.speeds.clone(),
+            coordinates,
+            speeds: self.independent_speeds(),
+            dependent_speeds: self.dependent_speeds(),
             speed_derivatives: self.speed_derivative_symbols()?,
             kinematics,
             mass_matrix,

@@ -5,6 +5,7 @@
 //! positions by differentiation in a frame. [`Model::kane`] derives `M u' = f` from
 //! `Fr + Fr* = 0`.
 
+mod constraints;
 mod error;
 mod frame;
 mod inertia;

@@ -137,6 +137,22 @@ pub enum Load {
     },
 }
 
+/// Velocities and accelerations derived from positions, valid for the current kinematics.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct KinematicsCache {
+    pub(crate) velocity: FxHashMap<(PointId, FrameId), Vector>,
+    pub(crate) acceleration: FxHashMap<(PointId, FrameId), Vector>,
+}
+
+/// Nonholonomic constraints `sum(c u) + c0 = 0`, solved for the dependent speeds.
+#[derive(Clone, Debug)]
+pub(crate) struct MotionConstraints {
+    /// The dependent speeds.
+    pub(crate) dependent: Vec<SymbolId>,
+    /// Each dependent speed as an expression in the independent ones.
+    pub(crate) solution: Vec<ExprId>,
+}
+
 /// A multibody model: owner of the expressions and of every frame, point, body and load.
 pub struct Model {
     /// The expressions of the model.
@@ -153,6 +169,8 @@ pub struct Model {
     pub(crate) time_derivative: TimeDerivative,
     pub(crate) dcm_cache: FxHashMap<(FrameId, FrameId), Mat3>,
     pub(crate) ang_vel_cache: FxHashMap<(FrameId, FrameId), Vector>,
+    pub(crate) kinematics_cache: KinematicsCache,
+    pub(crate) constraints: Option<MotionConstraints>,
     frame_names: FxHashMap<String, FrameId>,
     point_names: FxHashMap<String, PointId>,
 }
@@ -179,6 +197,8 @@ impl Model {
             time_derivative: TimeDerivative::new(),
             dcm_cache: FxHashMap::default(),
             ang_vel_cache: FxHashMap::default(),
+            kinematics_cache: KinematicsCache::default(),
+            constraints: None,
             frame_names: [(newtonian.to_string(), FrameId(0))].into_iter().collect(),
             point_names: FxHashMap::default(),
         }
@@ -365,14 +385,20 @@ impl Model {
     pub fn set_kinematics(&mut self, q: ExprId, rhs: ExprId) -> Result<()> {
         let s = self.variables(&[q])?[0];
         self.kinematics.insert(s, rhs);
+        let rhs = self.eliminate_dependent(rhs)?;
         self.time_derivative.set_rule(s, rhs);
-        self.ang_vel_cache.clear();
+        self.clear_kinematics_caches();
         Ok(())
     }
 
     /// The right-hand side of `q' = ...` for coordinate `q`.
     pub fn kinematics(&self, q: SymbolId) -> Option<ExprId> {
         self.kinematics.get(&q).copied()
+    }
+
+    pub(crate) fn clear_kinematics_caches(&mut self) {
+        self.ang_vel_cache.clear();
+        self.kinematics_cache = KinematicsCache::default();
     }
 
     /// The total time derivative of `e` under the kinematic differential equations.

@@ -28,6 +28,71 @@ impl Model {
         self.points[point.index()].acceleration.insert(frame, a);
     }
 
+    /// Two points fixed on a body (Autolev `V2PTS(frame, body, from, point)`): sets and returns
+    /// `v_point = v_from + w_body x r`, with `r` the position of `point` from `from`.
+    pub fn v2pts(&mut self, frame: FrameId, body: FrameId, from: PointId, point: PointId) -> Result<Vector> {
+        let v0 = self.velocity(from, frame)?;
+        let w = self.angular_velocity(body, frame)?;
+        let r = self.position(point, from)?;
+        let wr = self.cross(&w, &r)?;
+        let v = self.add_vectors(&v0, &wr)?;
+        self.set_velocity(point, frame, v.clone());
+        Ok(v)
+    }
+
+    /// Two points fixed on a body (Autolev `A2PTS`): sets and returns
+    /// `a_point = a_from + alpha x r + w x (w x r)`.
+    pub fn a2pts(&mut self, frame: FrameId, body: FrameId, from: PointId, point: PointId) -> Result<Vector> {
+        let a0 = self.acceleration(from, frame)?;
+        let w = self.angular_velocity(body, frame)?;
+        let alpha = self.angular_acceleration(body, frame)?;
+        let r = self.position(point, from)?;
+        let ar = self.cross(&alpha, &r)?;
+        let wr = self.cross(&w, &r)?;
+        let wwr = self.cross(&w, &wr)?;
+        let a = self.add_vectors(&a0, &ar)?;
+        let a = self.add_vectors(&a, &wwr)?;
+        self.set_acceleration(point, frame, a.clone());
+        Ok(a)
+    }
+
+    /// One point moving on a body (Autolev `V1PT(frame, body, from, point)`): sets and returns
+    /// `v_point = v_from + v_point_in_body + w_body x r`, with `from` fixed on the body.
+    pub fn v1pt(&mut self, frame: FrameId, body: FrameId, from: PointId, point: PointId) -> Result<Vector> {
+        let v0 = self.velocity(from, frame)?;
+        let r = self.position(point, from)?;
+        let rel = self.dt_in(&r, body)?;
+        let w = self.angular_velocity(body, frame)?;
+        let wr = self.cross(&w, &r)?;
+        let v = self.add_vectors(&v0, &rel)?;
+        let v = self.add_vectors(&v, &wr)?;
+        self.set_velocity(point, frame, v.clone());
+        Ok(v)
+    }
+
+    /// One point moving on a body (Autolev `A1PT`): sets and returns
+    /// `a_point = a_from + a_rel + alpha x r + w x (w x r) + 2 w x v_rel`.
+    pub fn a1pt(&mut self, frame: FrameId, body: FrameId, from: PointId, point: PointId) -> Result<Vector> {
+        let a0 = self.acceleration(from, frame)?;
+        let r = self.position(point, from)?;
+        let v_rel = self.dt_in(&r, body)?;
+        let a_rel = self.dt_in(&v_rel, body)?;
+        let w = self.angular_velocity(body, frame)?;
+        let alpha = self.angular_acceleration(body, frame)?;
+        let t1 = self.cross(&alpha, &r)?;
+        let wr = self.cross(&w, &r)?;
+        let t2 = self.cross(&w, &wr)?;
+        let wv = self.cross(&w, &v_rel)?;
+        let two = self.ar.integer(2);
+        let t3 = self.scale(&wv, two)?;
+        let mut a = self.add_vectors(&a0, &a_rel)?;
+        for t in [t1, t2, t3] {
+            a = self.add_vectors(&a, &t)?;
+        }
+        self.set_acceleration(point, frame, a.clone());
+        Ok(a)
+    }
+
     /// Fixes `point` in `frame`: zero velocity and acceleration there.
     pub fn fix_point(&mut self, point: PointId, frame: FrameId) {
         self.set_velocity(point, frame, Vector::zero());
@@ -81,10 +146,13 @@ impl Model {
                 frame: self.frame_name(frame).to_string(),
             });
         };
+        if let Some(v) = self.kinematics_cache.velocity.get(&(point, frame)) {
+            return Ok(v.clone());
+        }
         let base = self.velocity(from, frame)?;
         let rel = self.dt_in(&r, frame)?;
         let v = self.add_vectors(&base, &rel)?;
-        self.points[point.index()].velocity.insert(frame, v.clone());
+        self.kinematics_cache.velocity.insert((point, frame), v.clone());
         Ok(v)
     }
 
@@ -93,9 +161,12 @@ impl Model {
         if let Some(a) = self.points[point.index()].acceleration.get(&frame) {
             return Ok(a.clone());
         }
+        if let Some(a) = self.kinematics_cache.acceleration.get(&(point, frame)) {
+            return Ok(a.clone());
+        }
         let v = self.velocity(point, frame)?;
         let a = self.dt_in(&v, frame)?;
-        self.points[point.index()].acceleration.insert(frame, a.clone());
+        self.kinematics_cache.acceleration.insert((point, frame), a.clone());
         Ok(a)
     }
 }
