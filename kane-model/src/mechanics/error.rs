@@ -75,6 +75,9 @@ pub enum MechanicsError {
     /// Kane's equations are not linear in the speed derivatives.
     #[error("equation {0} is not linear in the derivatives of the generalized speeds")]
     NotLinearInAccelerations(usize),
+    /// The mass matrix is singular at the point asked for.
+    #[error("the mass matrix is singular at this point")]
+    SingularMassMatrix,
     /// A constraint matrix cannot be solved for the dependent speeds.
     #[error("the constraints cannot be solved for the dependent speeds (singular coefficient matrix)")]
     SingularConstraints,

@@ -10,9 +10,11 @@ mod error;
 mod frame;
 mod inertia;
 mod kane;
+mod linearize;
 mod model;
 mod outputs;
 mod point;
+mod table;
 mod vector;
 mod vector_ops;
 

@@ -329,6 +329,34 @@ impl Model {
         Ok(())
     }
 
+    /// A linear spring of stiffness `k` and natural length `length` between two points: the force
+    /// `-k (|r| - length) r/|r|` on `a` and its opposite on `b`, with `r` from `b` to `a`.
+    pub fn add_spring(&mut self, a: PointId, b: PointId, k: ExprId, length: ExprId) -> Result<()> {
+        let r = self.position(a, b)?;
+        let len = self.magnitude(&r)?;
+        let stretch = self.ar.sub(len, length)?;
+        let per_length = self.ar.div(stretch, len)?;
+        let coeff = self.ar.mul(&[self.ar.minus_one(), k, per_length])?;
+        let f = self.scale(&r, coeff)?;
+        self.add_force_pair(a, b, f)
+    }
+
+    /// A linear damper of coefficient `c` between two points: the force `-c (d|r|/dt) r/|r|` on
+    /// `a` and its opposite on `b`, with `r` from `b` to `a`.
+    pub fn add_damper(&mut self, a: PointId, b: PointId, c: ExprId) -> Result<()> {
+        let r = self.position(a, b)?;
+        let n = self.newtonian;
+        let va = self.velocity(a, n)?;
+        let vb = self.velocity(b, n)?;
+        let v = self.sub_vectors(&va, &vb)?;
+        let rv = self.dot(&r, &v)?;
+        let rr = self.dot(&r, &r)?;
+        let rate = self.ar.div(rv, rr)?;
+        let coeff = self.ar.mul(&[self.ar.minus_one(), c, rate])?;
+        let f = self.scale(&r, coeff)?;
+        self.add_force_pair(a, b, f)
+    }
+
     /// Uniform gravity: the force `mass * g` at every mass centre and particle.
     pub fn add_gravity(&mut self, g: &Vector) -> Result<()> {
         let masses: Vec<(String, Option<ExprId>, PointId)> = self

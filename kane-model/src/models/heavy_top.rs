@@ -44,23 +44,7 @@ impl HeavyTop {
         m.set_angular_velocity(fr, Vector::new(fr, w));
         m.set_coordinates(&e)?;
         m.set_speeds(&w)?;
-        // e' = 1/2 e (0, w): e0' = -(e.w)/2, ev' = (e0 w + ev x w)/2.
-        let half = m.ar.rational(1, 2)?;
-        let terms: [[(usize, usize, i128); 3]; 4] = [
-            [(1, 0, -1), (2, 1, -1), (3, 2, -1)],
-            [(0, 0, 1), (2, 2, 1), (3, 1, -1)],
-            [(0, 1, 1), (3, 0, 1), (1, 2, -1)],
-            [(0, 2, 1), (1, 1, 1), (2, 0, -1)],
-        ];
-        for (k, row) in terms.iter().enumerate() {
-            let mut parts = Vec::new();
-            for &(ei, wi, sign) in row {
-                let s = m.ar.integer(sign);
-                parts.push(m.ar.mul(&[s, half, e[ei], w[wi]])?);
-            }
-            let rhs = m.ar.add(&parts)?;
-            m.set_kinematics(e[k], rhs)?;
-        }
+        super::free_body::quaternion_kinematics(&mut m, e, w)?;
         let fifth = m.ar.rational(1, 5)?;
         let c = m.ar.mul(&[fifth, r])?;
         let inertia = m.shape_inertia(Shape::SolidEllipsoid { a: r, b: r, c }, mass, fr)?;
