@@ -139,3 +139,19 @@ W_D_A> / u3 = -C2>
 V_P_A> / u1 = ";
     assert!(table.starts_with(expected), "{table}");
 }
+
+#[test]
+fn quaternion_norm_as_a_configuration_constraint() {
+    // The unit-norm condition of Euler parameters is a configuration constraint; its residual
+    // stays an output, and its rate vanishes along the kinematic equations.
+    let mut b = FreeBody::asymmetric().unwrap();
+    let ar = &mut b.model.ar;
+    let sq: Vec<_> = b.e.iter().map(|e| ar.powi(*e, 2).unwrap()).collect();
+    let norm = ar.add(&sq).unwrap();
+    let one = ar.one();
+    let residual = ar.sub(norm, one).unwrap();
+    b.model.add_configuration_constraint(residual);
+    assert_eq!(b.model.configuration_residuals(), &[residual]);
+    let rate = b.model.dt(residual).unwrap();
+    assert_eq!(b.model.ar.simplify(rate).unwrap(), b.model.ar.zero());
+}

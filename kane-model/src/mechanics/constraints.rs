@@ -70,6 +70,17 @@ impl Model {
         Ok(())
     }
 
+    /// Records a holonomic (configuration) constraint `residual(q, t) = 0`; its value along a
+    /// simulation is an output that shows how well the motion keeps it.
+    pub fn add_configuration_constraint(&mut self, residual: ExprId) {
+        self.configuration_constraints.push(residual);
+    }
+
+    /// The configuration constraints' residuals.
+    pub fn configuration_residuals(&self) -> &[ExprId] {
+        &self.configuration_constraints
+    }
+
     /// The speeds that remain independent.
     pub fn independent_speeds(&self) -> Vec<SymbolId> {
         match &self.constraints {

@@ -171,6 +171,7 @@ pub struct Model {
     pub(crate) ang_vel_cache: FxHashMap<(FrameId, FrameId), Vector>,
     pub(crate) kinematics_cache: KinematicsCache,
     pub(crate) constraints: Option<MotionConstraints>,
+    pub(crate) configuration_constraints: Vec<ExprId>,
     frame_names: FxHashMap<String, FrameId>,
     point_names: FxHashMap<String, PointId>,
 }
@@ -199,6 +200,7 @@ impl Model {
             ang_vel_cache: FxHashMap::default(),
             kinematics_cache: KinematicsCache::default(),
             constraints: None,
+            configuration_constraints: Vec::new(),
             frame_names: [(newtonian.to_string(), FrameId(0))].into_iter().collect(),
             point_names: FxHashMap::default(),
         }
