@@ -9,6 +9,7 @@
 
 pub mod dual;
 pub mod expr;
+pub mod lang;
 pub mod mechanics;
 pub mod models;
 

@@ -33,6 +33,10 @@ pub enum ExprError {
         /// The symbol it is not linear in.
         symbol: String,
     },
+    /// A linear system has no unique solution (a zero pivot, or unknowns and equations differ in
+    /// number).
+    #[error("the linear system has no unique solution (singular coefficient matrix)")]
+    SingularSystem,
     /// A symbol name declared twice with different kinds.
     #[error("symbol `{0}` is already declared with another kind")]
     SymbolKindClash(String),

@@ -27,40 +27,14 @@ impl Model {
         if constraints.len() != dep.len() {
             return Err(MechanicsError::SingularConstraints);
         }
-        let m = dep.len();
         // Constraints may be written with coordinate derivatives: apply q' = ... first.
         self.constraints = None;
         let qdot = self.dependent_map();
         let constraints = self.ar.subs_many(constraints, &qdot)?;
-        // Rows [C_d | -(C_i u_i + c)]: the dependent coefficients and the right-hand side.
-        let mut rows: Vec<(Vec<ExprId>, ExprId)> = Vec::with_capacity(m);
-        for &g in &constraints {
-            let (coeffs, rest) = self.ar.linear_coefficients(g, &dep)?;
-            let rhs = self.ar.neg(rest)?;
-            rows.push((coeffs, rhs));
-        }
-        // Gauss-Jordan elimination with the first structurally non-zero pivot.
-        for col in 0..m {
-            let pivot = (col..m)
-                .find(|&r| !self.ar.is_zero(rows[r].0[col]))
-                .ok_or(MechanicsError::SingularConstraints)?;
-            rows.swap(col, pivot);
-            let p = rows[col].0[col];
-            for r in 0..m {
-                if r == col || self.ar.is_zero(rows[r].0[col]) {
-                    continue;
-                }
-                let factor = self.ar.div(rows[r].0[col], p)?;
-                for k in 0..m {
-                    let t = self.ar.mul(&[factor, rows[col].0[k]])?;
-                    rows[r].0[k] = self.ar.sub(rows[r].0[k], t)?;
-                }
-                let t = self.ar.mul(&[factor, rows[col].1])?;
-                rows[r].1 = self.ar.sub(rows[r].1, t)?;
-            }
-        }
-        let solution =
-            (0..m).map(|i| Ok(self.ar.div(rows[i].1, rows[i].0[i])?)).collect::<Result<Vec<_>>>()?;
+        let solution = match self.ar.solve_linear(&constraints, &dep) {
+            Err(crate::expr::ExprError::SingularSystem) => return Err(MechanicsError::SingularConstraints),
+            other => other?,
+        };
         self.constraints = Some(MotionConstraints { dependent: dep, solution });
         let rules: Vec<(SymbolId, ExprId)> = self.kinematics.iter().map(|(q, r)| (*q, *r)).collect();
         for (q, rhs) in rules {

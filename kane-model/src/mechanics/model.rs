@@ -211,6 +211,22 @@ impl Model {
         self.newtonian
     }
 
+    /// Renames the Newtonian frame (a model file may declare it after other frames).
+    pub fn rename_newtonian(&mut self, name: &str) -> Result<()> {
+        if self.frame_names.contains_key(name) {
+            return Err(MechanicsError::Duplicate(name.to_string()));
+        }
+        let old = std::mem::replace(&mut self.frames[0].name, name.to_string());
+        self.frame_names.remove(&old);
+        self.frame_names.insert(name.to_string(), self.newtonian);
+        Ok(())
+    }
+
+    /// Removes every applied load.
+    pub fn clear_loads(&mut self) {
+        self.loads.clear();
+    }
+
     /// A new frame, not yet oriented.
     pub fn add_frame(&mut self, name: &str) -> Result<FrameId> {
         if self.frame_names.contains_key(name) {
@@ -395,7 +411,7 @@ impl Model {
     fn variables(&self, v: &[ExprId]) -> Result<Vec<SymbolId>> {
         v.iter()
             .map(|&e| match self.ar.as_symbol(e) {
-                Some(s) if matches!(self.ar.symbol_info(s).kind, SymbolKind::Variable { order: 0 }) => Ok(s),
+                Some(s) if matches!(self.ar.symbol_info(s).kind, SymbolKind::Variable { .. }) => Ok(s),
                 _ => Err(MechanicsError::NotAVariable(self.ar.to_text(e))),
             })
             .collect()
@@ -414,6 +430,11 @@ impl Model {
     /// Sets the kinematic differential equation `q' = rhs`.
     pub fn set_kinematics(&mut self, q: ExprId, rhs: ExprId) -> Result<()> {
         let s = self.variables(&[q])?[0];
+        // q' = q' (a coordinate whose own derivative is its speed) needs no rule.
+        if self.ar.as_symbol(rhs).is_some_and(|r| self.ar.derivative_symbol(s).ok() == Some(r)) {
+            self.kinematics.insert(s, rhs);
+            return Ok(());
+        }
         self.kinematics.insert(s, rhs);
         let rhs = self.eliminate_dependent(rhs)?;
         self.time_derivative.set_rule(s, rhs);

@@ -1,0 +1,220 @@
+//! The syntax tree of an Autolev program; every node keeps its source span.
+
+use super::token::Span;
+
+/// An expression with its span.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expr {
+    /// What it is.
+    pub kind: ExprKind,
+    /// Where it is.
+    pub span: Span,
+}
+
+/// Binary operators.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinOp {
+    /// `+`
+    Add,
+    /// `-`
+    Sub,
+    /// `*`
+    Mul,
+    /// `/`
+    Div,
+    /// `^`
+    Pow,
+}
+
+/// Expression kinds.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExprKind {
+    /// A number as written, with trailing `>` count (`0>` is the zero vector, `1>>` the unit dyadic).
+    Number {
+        /// Value.
+        value: f64,
+        /// Number of `>`.
+        suffix: u8,
+    },
+    /// A name with primes (time derivatives) and `>` count.
+    Name {
+        /// The name as written.
+        name: String,
+        /// Number of `'`.
+        primes: u8,
+        /// Number of `>`.
+        suffix: u8,
+    },
+    /// `NAME(args)`.
+    Call {
+        /// Function name as written.
+        name: String,
+        /// Arguments.
+        args: Vec<Expr>,
+    },
+    /// `NAME[i, j]`, possibly with primes inside (`DEPENDENT[Q1']`).
+    Index {
+        /// Array name.
+        name: String,
+        /// Indices.
+        args: Vec<Expr>,
+    },
+    /// `[a, b; c, d]`.
+    Matrix(Vec<Vec<Expr>>),
+    /// `-x`.
+    Neg(Box<Expr>),
+    /// `a op b`.
+    Binary(BinOp, Box<Expr>, Box<Expr>),
+    /// `a:b` in arguments.
+    Range(Box<Expr>, Box<Expr>),
+    /// `X = value` in arguments.
+    NamedArg(String, Box<Expr>),
+}
+
+/// Kinds of declaration statements.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DeclKind {
+    /// NEWTONIAN
+    Newtonian,
+    /// FRAMES
+    Frames,
+    /// BODIES
+    Bodies,
+    /// PARTICLES
+    Particles,
+    /// POINTS
+    Points,
+    /// CONSTANTS
+    Constants,
+    /// VARIABLES
+    Variables,
+    /// MOTIONVARIABLES
+    MotionVariables,
+    /// SPECIFIED
+    Specified,
+    /// IMAGINARY
+    Imaginary,
+}
+
+/// One declared name: `Q{3}'`, `S2+`, `F = 3`, `P{1:2,1:3}`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DeclItem {
+    /// The base name.
+    pub name: String,
+    /// Index ranges `{lo:hi, ...}`, expanded into names by the interpreter.
+    pub ranges: Vec<(i64, i64)>,
+    /// Derivative order declared with `'`.
+    pub primes: u8,
+    /// Sign suffix `+` or `-`.
+    pub sign: Option<char>,
+    /// Value given with `=`.
+    pub value: Option<Expr>,
+    /// Where.
+    pub span: Span,
+}
+
+/// Assignment operators.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AssignOp {
+    /// `=`
+    Set,
+    /// `+=`
+    Add,
+    /// `:=`
+    Define,
+}
+
+/// The target of an assignment.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Target {
+    /// Name as written.
+    pub name: String,
+    /// Primes (`Q1' = U1`).
+    pub primes: u8,
+    /// `>` count.
+    pub suffix: u8,
+    /// Indices (`EQN[1] = ...`).
+    pub index: Option<Vec<Expr>>,
+    /// Where.
+    pub span: Span,
+}
+
+/// A statement.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StmtKind {
+    /// A declaration.
+    Declare {
+        /// Which.
+        kind: DeclKind,
+        /// The names.
+        items: Vec<DeclItem>,
+    },
+    /// `MASS B = M1, C = M2`.
+    Mass(Vec<(String, Span, Expr)>),
+    /// `INERTIA B, I11, I22, I33 [, I12, I23, I31]`.
+    Inertia {
+        /// Body name.
+        body: String,
+        /// Its span.
+        body_span: Span,
+        /// The moments.
+        args: Vec<Expr>,
+    },
+    /// `DEGREES OFF`, `COMPLEX ON`, ...
+    Setting {
+        /// Setting name.
+        name: String,
+        /// ON or OFF.
+        on: bool,
+    },
+    /// `UNITS a = unit, ...`.
+    Units(Vec<(String, Span, Expr)>),
+    /// `INPUT a = value [unit], ...`.
+    Input(Vec<InputItem>),
+    /// `OUTPUT a [unit], ...`.
+    Output(Vec<(String, Span, Option<String>)>),
+    /// `CODE KIND(args) file`.
+    Code {
+        /// DYNAMICS, ALGEBRAIC, NONLINEAR, ODE.
+        kind: String,
+        /// The arguments.
+        args: Vec<Expr>,
+        /// The rest of the line (file name).
+        file: String,
+    },
+    /// An assignment.
+    Assign {
+        /// The target.
+        target: Target,
+        /// `=`, `+=`, `:=`.
+        op: AssignOp,
+        /// The value.
+        value: Expr,
+    },
+    /// A bare expression or command (`KANE()`, `SIMPROT(A,B,1,Q)`, `EXPAND(E)`).
+    Expr(Expr),
+}
+
+/// An INPUT entry.
+#[derive(Clone, Debug, PartialEq)]
+pub struct InputItem {
+    /// Name as written.
+    pub name: String,
+    /// Primes.
+    pub primes: u8,
+    /// Value.
+    pub value: Expr,
+    /// Unit word after the value (`DEG`), if any.
+    pub unit: Option<String>,
+    /// Where.
+    pub span: Span,
+}
+
+/// A statement with its span.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Stmt {
+    /// What it is.
+    pub kind: StmtKind,
+    /// Where.
+    pub span: Span,
+}

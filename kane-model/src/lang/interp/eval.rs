@@ -1,0 +1,242 @@
+//! Evaluating expressions to values.
+
+use crate::expr::SymbolKind;
+
+use super::super::ast::{BinOp, Expr, ExprKind};
+use super::super::diagnostic::Diagnostic;
+use super::super::token::Span;
+use super::value::{self, Value};
+use super::{At, Binding, IResult, Interpreter};
+
+impl Interpreter {
+    /// The value of `e`.
+    pub(crate) fn eval(&mut self, e: &Expr) -> IResult<Value> {
+        let fail: &Span = &e.span;
+        match &e.kind {
+            ExprKind::Number { value, suffix } => match (suffix, *value) {
+                (0, v) => Ok(Value::Scalar(self.number_expr(v).at(fail)?)),
+                (1, 0.0) => Ok(Value::Vector(crate::mechanics::Vector::zero())),
+                (2, 0.0) => Ok(Value::Dyadic(crate::mechanics::Dyadic::zero())),
+                (2, 1.0) => {
+                    let n = self.model.newtonian();
+                    let (o, z) = (self.model.ar.one(), self.model.ar.zero());
+                    Ok(Value::Dyadic(crate::mechanics::Dyadic::in_frame(
+                        n,
+                        [[o, z, z], [z, o, z], [z, z, o]],
+                    )))
+                }
+                _ => Err(Diagnostic::error(
+                    e.span.clone(),
+                    "only 0> (zero vector), 0>> and 1>> (unit dyadic) are numbers with >",
+                )),
+            },
+            ExprKind::Name { name, primes, suffix } => self.name_value(name, *primes, *suffix, e),
+            ExprKind::Call { name, args } => self.call(name, args, e),
+            ExprKind::Index { name, args } => {
+                let key = name.to_ascii_uppercase();
+                let idx = args.iter().map(|a| self.index_value(a)).collect::<IResult<Vec<_>>>()?;
+                if let Some(entries) = self.arrays.get(&key) {
+                    if let Some((_, v)) = entries.iter().find(|(i, _)| *i == idx) {
+                        return Ok(v.clone());
+                    }
+                }
+                if let Some(Value::Matrix { rows, cols, data }) = self.lookup_value(&key) {
+                    let (i, j) = match idx.as_slice() {
+                        [i] if cols == 1 => (*i, 1),
+                        [j] if rows == 1 => (1, *j),
+                        [i, j] => (*i, *j),
+                        _ => (0, 0),
+                    };
+                    if i >= 1 && j >= 1 && (i as usize) <= rows && (j as usize) <= cols {
+                        return Ok(Value::Scalar(data[(i as usize - 1) * cols + j as usize - 1]));
+                    }
+                }
+                Err(Diagnostic::error(e.span.clone(), format!("`{name}{idx:?}` is not defined"))
+                    .with_help("assign the entry first, e.g. EQN[1] = ..."))
+            }
+            ExprKind::Matrix(rows) => {
+                let mut data = Vec::new();
+                let cols = rows.first().map_or(0, Vec::len);
+                for r in rows {
+                    if r.len() != cols {
+                        return Err(Diagnostic::error(e.span.clone(), "matrix rows have different lengths"));
+                    }
+                    for x in r {
+                        data.push(self.scalar(x)?);
+                    }
+                }
+                Ok(Value::Matrix { rows: rows.len(), cols, data })
+            }
+            ExprKind::Neg(x) => {
+                let v = self.eval(x)?;
+                let m1 = self.model.ar.minus_one();
+                value::scale(&mut self.model, &v, m1).at(fail)
+            }
+            ExprKind::Binary(op, a, b) => {
+                let (va, vb) = (self.eval(a)?, self.eval(b)?);
+                let r = match op {
+                    BinOp::Add => value::add(&mut self.model, &va, &vb, false).at(fail)?,
+                    BinOp::Sub => value::add(&mut self.model, &va, &vb, true).at(fail)?,
+                    BinOp::Mul => value::mul(&mut self.model, &va, &vb).at(fail)?,
+                    BinOp::Div => match vb {
+                        Value::Scalar(d) => {
+                            let one = self.model.ar.one();
+                            let inv = self.model.ar.div(one, d).at(fail)?;
+                            Some(value::scale(&mut self.model, &va, inv).at(fail)?)
+                        }
+                        _ => None,
+                    },
+                    BinOp::Pow => match (&va, &vb) {
+                        (Value::Scalar(x), Value::Scalar(y)) => {
+                            Some(Value::Scalar(self.model.ar.pow(*x, *y).at(fail)?))
+                        }
+                        _ => None,
+                    },
+                };
+                r.ok_or_else(|| {
+                    let sym = match op {
+                        BinOp::Add => "+",
+                        BinOp::Sub => "-",
+                        BinOp::Mul => "*",
+                        BinOp::Div => "/",
+                        BinOp::Pow => "^",
+                    };
+                    Diagnostic::error(
+                        e.span.clone(),
+                        format!("cannot apply `{sym}` to {} and {}", va.kind(), vb.kind()),
+                    )
+                    .with_help(match op {
+                        BinOp::Div | BinOp::Pow => "divide by and raise to scalars only",
+                        BinOp::Mul => "use DOT(a>, b>) or CROSS(a>, b>) for vector products",
+                        _ => "add or subtract values of the same kind: scalars, vectors (>) or dyadics (>>)",
+                    })
+                })
+            }
+            ExprKind::Range(..) | ExprKind::NamedArg(..) => Err(Diagnostic::error(
+                e.span.clone(),
+                "a range or `name = value` is only allowed as a function argument",
+            )),
+        }
+    }
+
+    /// A scalar value, or an error saying what was found instead.
+    pub(crate) fn scalar(&mut self, e: &Expr) -> IResult<crate::expr::ExprId> {
+        match self.eval(e)? {
+            Value::Scalar(x) => Ok(x),
+            other => {
+                Err(Diagnostic::error(e.span.clone(), format!("expected a scalar, found {}", other.kind()))
+                    .with_help("use DOT(v>, A1>) for a measure number, MAG(v>) for a magnitude"))
+            }
+        }
+    }
+
+    /// A vector value, or an error saying what was found instead.
+    pub(crate) fn vector(&mut self, e: &Expr) -> IResult<crate::mechanics::Vector> {
+        match self.eval(e)? {
+            Value::Vector(v) => Ok(v),
+            Value::Scalar(x) if self.model.ar.is_zero(x) => Ok(crate::mechanics::Vector::zero()),
+            other => {
+                Err(Diagnostic::error(e.span.clone(), format!("expected a vector, found {}", other.kind()))
+                    .with_help("vectors end in > (A1>, P_O_P>); write 0> for the zero vector"))
+            }
+        }
+    }
+
+    /// A number: the expression must evaluate to a constant.
+    pub(crate) fn number(&mut self, e: &Expr) -> IResult<f64> {
+        let x = self.scalar(e)?;
+        self.model
+            .ar
+            .eval(&[x], |_| None)
+            .map(|v| v[0])
+            .map_err(|err| Diagnostic::error(e.span.clone(), format!("expected a number here: {err}")))
+    }
+
+    /// An exact rational for integer-looking literals, else a float literal.
+    pub(crate) fn number_expr(&mut self, v: f64) -> Result<crate::expr::ExprId, crate::expr::ExprError> {
+        if v.fract() == 0.0 && v.abs() < 1e15 {
+            return Ok(self.model.ar.integer(v as i128));
+        }
+        // Decimal literals with few digits are exact ratios (0.5 = 1/2, .025 = 1/40).
+        for digits in 1..=9 {
+            let scale = 10f64.powi(digits);
+            let n = (v * scale).round();
+            if (n / scale - v).abs() <= f64::EPSILON * v.abs() {
+                return self.model.ar.rational(n as i128, scale as i128);
+            }
+        }
+        self.model.ar.float(v)
+    }
+
+    fn name_value(&mut self, name: &str, primes: u8, suffix: u8, e: &Expr) -> IResult<Value> {
+        let key = name.to_ascii_uppercase();
+        let fail: &Span = &e.span;
+        if suffix == 0 {
+            if primes == 0 {
+                match key.as_str() {
+                    "T" if !self.bindings.contains_key("T") => {
+                        return Ok(Value::Scalar(self.model.ar.time()))
+                    }
+                    "PI" if !self.bindings.contains_key("PI") => {
+                        return Ok(Value::Scalar(self.model.ar.float(std::f64::consts::PI).at(fail)?))
+                    }
+                    _ => {}
+                }
+                if let Some(x) = self.solved.get(&key) {
+                    return Ok(Value::Scalar(*x));
+                }
+                return match self.bindings.get(&key) {
+                    Some(Binding::Symbol(x, _)) => Ok(Value::Scalar(*x)),
+                    Some(Binding::Value(v)) => Ok(v.clone()),
+                    Some(Binding::Frame(_) | Binding::Body(_)) => {
+                        Err(Diagnostic::error(e.span.clone(), format!("`{name}` is a frame, not a value"))
+                            .with_help(format!("use its unit vectors {name}1>, {name}2>, {name}3>")))
+                    }
+                    Some(Binding::Point(_) | Binding::Particle(_)) => {
+                        Err(Diagnostic::error(e.span.clone(), format!("`{name}` is a point, not a value"))
+                            .with_help(format!(
+                        "use its position, velocity or acceleration: P_O_{name}>, V_{name}_N>, A_{name}_N>"
+                    )))
+                    }
+                    None => Err(self.unknown(name, 0, &e.span)),
+                };
+            }
+            return match self.bindings.get(&key).cloned() {
+                Some(Binding::Symbol(x, _)) => {
+                    let s = self.model.ar.as_symbol(x).ok_or_else(|| self.unknown(name, 0, &e.span))?;
+                    if !self.model.ar.symbol_info(s).kind.depends_on_time()
+                        || self.model.ar.symbol_info(s).kind == SymbolKind::Time
+                    {
+                        return Ok(Value::Scalar(self.model.ar.zero()));
+                    }
+                    let mut d = s;
+                    for _ in 0..primes {
+                        d = self.model.ar.derivative_symbol(d).at(fail)?;
+                    }
+                    Ok(Value::Scalar(self.model.ar.symbol_expr(d)))
+                }
+                Some(Binding::Value(Value::Scalar(x))) => {
+                    let mut v = x;
+                    for _ in 0..primes {
+                        v = self.model.dt(v).at(fail)?;
+                    }
+                    Ok(Value::Scalar(v))
+                }
+                _ => Err(self.unknown(name, 0, &e.span)),
+            };
+        }
+        if suffix == 1 {
+            if let Some(v) = self.unit_vector(&key) {
+                return Ok(Value::Vector(v));
+            }
+        }
+        let full = format!("{key}{}", ">".repeat(suffix as usize));
+        if let Some(v) = self.lookup_value(&full) {
+            return Ok(v);
+        }
+        if let Some(b) = self.builtin(&key, suffix) {
+            return self.builtin_value(b, &e.span);
+        }
+        Err(self.unknown(name, suffix, &e.span))
+    }
+}

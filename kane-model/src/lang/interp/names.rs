@@ -1,0 +1,254 @@
+//! Names: Autolev's built-in kinematic quantities (`P_O_P>`, `V_P_A>`, `W_B_A>`, `A_P_A>`,
+//! `ALF_B_A>`, `I_B_BO>>`, `FORCE_P>`, `TORQUE_B>`), frame unit vectors (`A1>`), and
+//! suggestions for unknown names.
+
+use crate::mechanics::{FrameId, PointId, Vector};
+
+use super::super::ast::Expr;
+use super::super::diagnostic::Diagnostic;
+use super::super::token::Span;
+use super::value::Value;
+use super::{At, Binding, IResult, Interpreter};
+
+/// A built-in kinematic quantity named in the text.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Builtin {
+    Position(PointId, PointId),
+    Velocity(PointId, FrameId),
+    Acceleration(PointId, FrameId),
+    AngularVelocity(FrameId, FrameId),
+    AngularAcceleration(FrameId, FrameId),
+    Inertia(crate::mechanics::BodyId, PointId),
+    Force(PointId),
+    Torque(FrameId),
+}
+
+impl Interpreter {
+    /// The frame of a frame or body name.
+    pub(crate) fn frame_of(&self, key: &str) -> Option<FrameId> {
+        match self.bindings.get(key) {
+            Some(Binding::Frame(f)) => Some(*f),
+            Some(Binding::Body(b)) => Some(self.model.body(*b).frame),
+            _ => None,
+        }
+    }
+
+    /// The point of a point, particle, or body-mass-centre name.
+    pub(crate) fn point_of(&self, key: &str) -> Option<PointId> {
+        match self.bindings.get(key) {
+            Some(Binding::Point(p)) => Some(*p),
+            Some(Binding::Particle(p)) => Some(self.model.particle(*p).point),
+            _ => None,
+        }
+    }
+
+    /// Splits `rest` at an underscore into two names accepted by `first` and `second`.
+    fn split2<A, B>(
+        &self,
+        rest: &str,
+        first: impl Fn(&Self, &str) -> Option<A>,
+        second: impl Fn(&Self, &str) -> Option<B>,
+    ) -> Option<(A, B)> {
+        rest.match_indices('_')
+            .find_map(|(i, _)| Some((first(self, &rest[..i])?, second(self, &rest[i + 1..])?)))
+    }
+
+    /// Resolves an upper-cased vector (`suffix` 1) or dyadic (`suffix` 2) name to a built-in.
+    pub(crate) fn builtin(&self, key: &str, suffix: u8) -> Option<Builtin> {
+        let (prefix, rest) = key.split_once('_')?;
+        let pt = |s: &Self, n: &str| s.point_of(n);
+        let fr = |s: &Self, n: &str| s.frame_of(n);
+        match (prefix, suffix) {
+            ("P", 1) => self.split2(rest, pt, pt).map(|(a, b)| Builtin::Position(a, b)),
+            ("V", 1) => self.split2(rest, pt, fr).map(|(a, b)| Builtin::Velocity(a, b)),
+            ("A", 1) => self.split2(rest, pt, fr).map(|(a, b)| Builtin::Acceleration(a, b)),
+            ("W", 1) => self.split2(rest, fr, fr).map(|(a, b)| Builtin::AngularVelocity(a, b)),
+            ("ALF", 1) => self.split2(rest, fr, fr).map(|(a, b)| Builtin::AngularAcceleration(a, b)),
+            ("I", 2) => self
+                .split2(
+                    rest,
+                    |s, n| match s.bindings.get(n) {
+                        Some(Binding::Body(b)) => Some(*b),
+                        _ => None,
+                    },
+                    pt,
+                )
+                .map(|(a, b)| Builtin::Inertia(a, b)),
+            ("FORCE", 1) => self.point_of(rest).map(Builtin::Force),
+            ("TORQUE", 1) => self.frame_of(rest).map(Builtin::Torque),
+            _ => None,
+        }
+    }
+
+    /// The value of a built-in quantity.
+    pub(crate) fn builtin_value(&mut self, b: Builtin, span: &Span) -> IResult<Value> {
+        let fail: &Span = span;
+        Ok(match b {
+            Builtin::Position(from, to) => Value::Vector(self.model.position(to, from).at(fail)?),
+            Builtin::Velocity(p, f) => Value::Vector(self.model.velocity(p, f).at(fail)?),
+            Builtin::Acceleration(p, f) => Value::Vector(self.model.acceleration(p, f).at(fail)?),
+            Builtin::AngularVelocity(a, b) => Value::Vector(self.model.angular_velocity(a, b).at(fail)?),
+            Builtin::AngularAcceleration(a, b) => {
+                Value::Vector(self.model.angular_acceleration(a, b).at(fail)?)
+            }
+            Builtin::Inertia(body, point) => {
+                let central = self.model.body(body).inertia.clone().unwrap_or_default();
+                let cm = self.model.body(body).mass_center;
+                if point == cm {
+                    Value::Dyadic(central)
+                } else {
+                    let m = self.model.body(body).mass.ok_or_else(|| {
+                        Diagnostic::error(span.clone(), format!("{} has no mass", self.model.body(body).name))
+                    })?;
+                    let r = self.model.position(cm, point).at(fail)?;
+                    let frame = self.model.body(body).frame;
+                    Value::Dyadic(self.model.parallel_axis(&central, m, &r, frame).at(fail)?)
+                }
+            }
+            Builtin::Force(p) => {
+                Value::Vector(self.force_names.get(&p).map(|i| self.forces[*i].1.clone()).unwrap_or_default())
+            }
+            Builtin::Torque(f) => Value::Vector(
+                self.torque_names.get(&f).map(|i| self.torques[*i].1.clone()).unwrap_or_default(),
+            ),
+        })
+    }
+
+    /// Assigns a built-in quantity; false when `key` names no built-in.
+    pub(crate) fn assign_builtin(&mut self, key: &str, suffix: u8, v: &Value, span: &Span) -> IResult<bool> {
+        let Some(b) = self.builtin(key, suffix) else { return Ok(false) };
+        let fail: &Span = span;
+        match (b, v) {
+            (Builtin::Position(from, to), Value::Vector(r)) => {
+                self.model.set_position(to, from, r.clone()).at(fail)?
+            }
+            (Builtin::Velocity(p, f), Value::Vector(r)) => self.model.set_velocity(p, f, r.clone()),
+            (Builtin::Acceleration(p, f), Value::Vector(r)) => self.model.set_acceleration(p, f, r.clone()),
+            (Builtin::AngularVelocity(a, _), Value::Vector(w)) => {
+                // W_A_N> = w sets A's angular velocity in its parent (Autolev requires that pair).
+                self.model.set_angular_velocity(a, w.clone());
+            }
+            (Builtin::Inertia(body, point), Value::Dyadic(d)) => {
+                if point != self.model.body(body).mass_center {
+                    return Err(Diagnostic::error(
+                        span.clone(),
+                        "an inertia dyadic is set about the mass centre",
+                    )
+                    .with_help(format!("write I_{0}_{0}O>> = ...", self.model.body(body).name)));
+                }
+                self.model.set_inertia(body, d.clone());
+            }
+            (Builtin::Force(p), Value::Vector(f)) => self.set_force(p, f.clone()),
+            (Builtin::Torque(fr), Value::Vector(t)) => self.set_torque(fr, t.clone()),
+            (_, other) => {
+                return Err(Diagnostic::error(
+                    span.clone(),
+                    format!("`{key}{}` cannot be {}", ">".repeat(suffix as usize), other.kind()),
+                )
+                .with_help("a vector name (ending in >) needs a vector, a dyadic name (>>) a dyadic"))
+            }
+        }
+        Ok(true)
+    }
+
+    /// `FORCE_P> = f` replaces the resultant force set by name.
+    pub(crate) fn set_force(&mut self, p: PointId, f: Vector) {
+        match self.force_names.get(&p) {
+            Some(&i) => self.forces[i].1 = f,
+            None => {
+                self.force_names.insert(p, self.forces.len());
+                self.forces.push((p, f));
+            }
+        }
+    }
+
+    /// `TORQUE_B> = t` replaces the resultant torque set by name.
+    pub(crate) fn set_torque(&mut self, fr: FrameId, t: Vector) {
+        match self.torque_names.get(&fr) {
+            Some(&i) => self.torques[i].1 = t,
+            None => {
+                self.torque_names.insert(fr, self.torques.len());
+                self.torques.push((fr, t));
+            }
+        }
+    }
+
+    /// `A1>`: unit vector 1 of frame (or body) A.
+    pub(crate) fn unit_vector(&self, key: &str) -> Option<Vector> {
+        let (frame, axis) = key.split_at(key.len().checked_sub(1)?);
+        let axis: usize = axis.parse().ok().filter(|a| (1..=3).contains(a))?;
+        let f = self.frame_of(frame)?;
+        Some(self.model.unit(f, axis))
+    }
+
+    /// An error for an unknown name, suggesting the nearest known one.
+    pub(crate) fn unknown(&self, name: &str, suffix: u8, span: &Span) -> Diagnostic {
+        let key = name.to_ascii_uppercase();
+        let shown = format!("{name}{}", ">".repeat(suffix as usize));
+        let nearest = self
+            .bindings
+            .keys()
+            .filter(|k| k.ends_with('>') == (suffix > 0))
+            .map(|k| (edit_distance(&key, k.trim_end_matches('>')), k))
+            .filter(|(d, _)| *d <= 2)
+            .min();
+        let d = Diagnostic::error(span.clone(), format!("`{shown}` is not defined"));
+        match nearest {
+            Some((_, k)) => d.with_help(format!("did you mean `{k}`? Names must be declared or assigned before use")),
+            None if suffix > 0 => d.with_help(
+                "vectors are frame unit vectors (A1>), built-ins (P_O_P>, V_P_N>, W_B_N>, ...) or names assigned earlier",
+            ),
+            None => d.with_help("declare it (CONSTANTS, VARIABLES, ...) or assign it before using it"),
+        }
+    }
+
+    /// A whole number from an index expression.
+    pub(crate) fn index_value(&mut self, e: &Expr) -> IResult<i64> {
+        let v = self.number(e)?;
+        if v.fract() == 0.0 {
+            Ok(v as i64)
+        } else {
+            Err(Diagnostic::error(e.span.clone(), format!("an index must be a whole number, not {v}")))
+        }
+    }
+}
+
+/// Levenshtein distance, for "did you mean" hints.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut cur = vec![i + 1];
+        for (j, cb) in b.iter().enumerate() {
+            cur.push((prev[j] + usize::from(ca != *cb)).min(prev[j + 1] + 1).min(cur[j] + 1));
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}
+
+impl Interpreter {
+    /// `INERTIA B, I11, I22, I33 [, I12, I23, I31]`: central inertia in B's frame.
+    pub(crate) fn inertia(&mut self, body: &str, span: &Span, args: &[Expr]) -> IResult<()> {
+        let key = body.to_ascii_uppercase();
+        let Some(Binding::Body(b)) = self.bindings.get(&key).cloned() else {
+            return Err(Diagnostic::error(span.clone(), format!("`{body}` is not a body"))
+                .with_help("declare it with BODIES"));
+        };
+        if args.len() != 3 && args.len() != 6 {
+            return Err(Diagnostic::error(
+                span.clone(),
+                format!("INERTIA takes 3 or 6 moments, got {}", args.len()),
+            )
+            .with_help("INERTIA B, I11, I22, I33 or INERTIA B, I11, I22, I33, I12, I23, I31"));
+        }
+        let v = args.iter().map(|a| self.scalar(a)).collect::<IResult<Vec<_>>>()?;
+        let z = self.model.ar.zero();
+        let (p12, p23, p31) = if v.len() == 6 { (v[3], v[4], v[5]) } else { (z, z, z) };
+        let frame = self.model.body(b).frame;
+        let d =
+            crate::mechanics::Dyadic::in_frame(frame, [[v[0], p12, p31], [p12, v[1], p23], [p31, p23, v[2]]]);
+        self.model.set_inertia(b, d);
+        Ok(())
+    }
+}

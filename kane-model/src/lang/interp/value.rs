@@ -1,0 +1,101 @@
+//! Values of Autolev expressions: scalars, vectors, dyadics and matrices of scalars.
+
+use crate::expr::ExprId;
+use crate::mechanics::{Dyadic, Model, Result, Vector};
+
+/// A value an expression evaluates to.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    /// A scalar expression.
+    Scalar(ExprId),
+    /// A vector.
+    Vector(Vector),
+    /// A dyadic.
+    Dyadic(Dyadic),
+    /// A matrix of scalars, row-major.
+    Matrix {
+        /// Rows.
+        rows: usize,
+        /// Columns.
+        cols: usize,
+        /// Entries, row by row.
+        data: Vec<ExprId>,
+    },
+}
+
+impl Value {
+    /// A word for messages: "a scalar", "a vector", ...
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Value::Scalar(_) => "a scalar",
+            Value::Vector(_) => "a vector",
+            Value::Dyadic(_) => "a dyadic",
+            Value::Matrix { .. } => "a matrix",
+        }
+    }
+
+    /// A column matrix.
+    pub fn column(data: Vec<ExprId>) -> Value {
+        Value::Matrix { rows: data.len(), cols: 1, data }
+    }
+}
+
+/// `a + b` (or `a - b` with `negate`) for values of the same kind.
+pub fn add(m: &mut Model, a: &Value, b: &Value, negate: bool) -> Result<Option<Value>> {
+    let b = if negate { scale(m, b, m.ar.minus_one())? } else { b.clone() };
+    Ok(Some(match (a, &b) {
+        (Value::Scalar(x), Value::Scalar(y)) => Value::Scalar(m.ar.add(&[*x, *y])?),
+        (Value::Vector(x), Value::Vector(y)) => Value::Vector(m.add_vectors(x, y)?),
+        (Value::Dyadic(x), Value::Dyadic(y)) => Value::Dyadic(m.add_dyadics(x, y)?),
+        (Value::Matrix { rows, cols, data }, Value::Matrix { rows: r2, cols: c2, data: d2 })
+            if rows == r2 && cols == c2 =>
+        {
+            let data = data
+                .iter()
+                .zip(d2)
+                .map(|(x, y)| m.ar.add(&[*x, *y]))
+                .collect::<std::result::Result<_, _>>()?;
+            Value::Matrix { rows: *rows, cols: *cols, data }
+        }
+        _ => return Ok(None),
+    }))
+}
+
+/// `k * v` for a scalar `k`.
+pub fn scale(m: &mut Model, v: &Value, k: ExprId) -> Result<Value> {
+    Ok(match v {
+        Value::Scalar(x) => Value::Scalar(m.ar.mul(&[k, *x])?),
+        Value::Vector(x) => Value::Vector(m.scale(x, k)?),
+        Value::Dyadic(x) => Value::Dyadic(m.scale_dyadic(x, k)?),
+        Value::Matrix { rows, cols, data } => Value::Matrix {
+            rows: *rows,
+            cols: *cols,
+            data: data.iter().map(|x| m.ar.mul(&[k, *x])).collect::<std::result::Result<_, _>>()?,
+        },
+    })
+}
+
+/// `a * b`: scalar products, vector outer products (a dyadic), dyadic-vector dots, and matrix
+/// products.
+pub fn mul(m: &mut Model, a: &Value, b: &Value) -> Result<Option<Value>> {
+    Ok(Some(match (a, b) {
+        (Value::Scalar(k), v) | (v, Value::Scalar(k)) => scale(m, v, *k)?,
+        (Value::Vector(x), Value::Vector(y)) => Value::Dyadic(m.outer(x, y)?),
+        (Value::Dyadic(d), Value::Vector(v)) => Value::Vector(m.dyadic_dot(d, v)?),
+        (Value::Matrix { rows, cols, data }, Value::Matrix { rows: r2, cols: c2, data: d2 })
+            if cols == r2 =>
+        {
+            let mut out = Vec::with_capacity(rows * c2);
+            for i in 0..*rows {
+                for j in 0..*c2 {
+                    let terms: Vec<ExprId> = (0..*cols)
+                        .map(|k| m.ar.mul(&[data[i * cols + k], d2[k * c2 + j]]))
+                        .collect::<std::result::Result<_, _>>()?;
+                    out.push(m.ar.add(&terms)?);
+                }
+            }
+            Value::Matrix { rows: *rows, cols: *c2, data: out }
+        }
+        _ => return Ok(None),
+    }))
+}

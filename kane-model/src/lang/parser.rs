@@ -1,0 +1,570 @@
+//! Recursive-descent parser: one statement per line; an error skips to the next line so that
+//! every mistake in a file is reported in one run.
+
+use super::ast::{AssignOp, BinOp, DeclItem, DeclKind, Expr, ExprKind, InputItem, Stmt, StmtKind, Target};
+use super::diagnostic::Diagnostic;
+use super::token::{lex, Span, Tok, Token};
+
+/// Parses a whole program; returns the statements and every syntax error found.
+pub fn parse(src: &str) -> (Vec<Stmt>, Vec<Diagnostic>) {
+    let tokens = match lex(src) {
+        Ok(t) => t,
+        Err(e) => {
+            return (
+                Vec::new(),
+                vec![Diagnostic::error(e.span, format!("unexpected character `{}`", e.ch)).with_help(
+                    "Autolev statements use names, numbers and + - * / ^ = ( ) [ ] { } , ; : ' > & %",
+                )],
+            )
+        }
+    };
+    let mut stmts = Vec::new();
+    let mut errors = Vec::new();
+    let mut line: Vec<Token> = Vec::new();
+    for t in tokens {
+        if t.tok == Tok::Newline {
+            if !line.is_empty() {
+                let mut p = Parser { toks: &line, pos: 0, src };
+                match p.statement() {
+                    Ok(s) => stmts.push(s),
+                    Err(e) => errors.push(e),
+                }
+                line.clear();
+            }
+        } else {
+            line.push(t);
+        }
+    }
+    (stmts, errors)
+}
+
+struct Parser<'a> {
+    toks: &'a [Token],
+    pos: usize,
+    src: &'a str,
+}
+
+type PResult<T> = Result<T, Diagnostic>;
+
+fn decl_kind(word: &str) -> Option<DeclKind> {
+    Some(match word {
+        "NEWTONIAN" => DeclKind::Newtonian,
+        "FRAME" | "FRAMES" => DeclKind::Frames,
+        "BODY" | "BODIES" => DeclKind::Bodies,
+        "PARTICLE" | "PARTICLES" => DeclKind::Particles,
+        "POINT" | "POINTS" => DeclKind::Points,
+        "CONSTANT" | "CONSTANTS" => DeclKind::Constants,
+        "VARIABLE" | "VARIABLES" => DeclKind::Variables,
+        "MOTIONVARIABLE" | "MOTIONVARIABLES" => DeclKind::MotionVariables,
+        "SPECIFIED" => DeclKind::Specified,
+        "IMAGINARY" => DeclKind::Imaginary,
+        _ => return None,
+    })
+}
+
+impl<'a> Parser<'a> {
+    fn peek(&self) -> Option<&'a Tok> {
+        self.toks.get(self.pos).map(|t| &t.tok)
+    }
+
+    fn peek_at(&self, k: usize) -> Option<&'a Tok> {
+        self.toks.get(self.pos + k).map(|t| &t.tok)
+    }
+
+    fn span_here(&self) -> Span {
+        match self.toks.get(self.pos) {
+            Some(t) => t.span.clone(),
+            None => self.toks.last().map_or(0..0, |t| t.span.end..t.span.end),
+        }
+    }
+
+    fn start(&self) -> usize {
+        self.span_here().start
+    }
+
+    fn end(&self) -> usize {
+        if self.pos == 0 {
+            return self.start();
+        }
+        self.toks[self.pos - 1].span.end
+    }
+
+    fn is_punct(&self, c: char) -> bool {
+        self.peek() == Some(&Tok::Punct(c))
+    }
+
+    fn eat(&mut self, c: char) -> bool {
+        if self.is_punct(c) {
+            self.pos += 1;
+            true
+        } else {
+            false
+        }
+    }
+
+    fn expect(&mut self, c: char, what: &str) -> PResult<()> {
+        if self.eat(c) {
+            Ok(())
+        } else {
+            Err(self.unexpected(&format!("expected `{c}` {what}")))
+        }
+    }
+
+    fn unexpected(&self, msg: &str) -> Diagnostic {
+        let found = match self.peek() {
+            Some(Tok::Name { text, .. }) => format!("`{text}`"),
+            Some(Tok::Number { text, .. }) => format!("`{text}`"),
+            Some(Tok::Punct(c)) => format!("`{c}`"),
+            Some(Tok::PlusAssign) => "`+=`".into(),
+            Some(Tok::ColonAssign) => "`:=`".into(),
+            Some(Tok::Newline) | None => "the end of the line".into(),
+        };
+        Diagnostic::error(self.span_here(), format!("{msg}, found {found}"))
+    }
+
+    fn name(&mut self) -> PResult<(String, u8, Span)> {
+        match self.peek() {
+            Some(Tok::Name { text, suffix }) => {
+                let span = self.span_here();
+                self.pos += 1;
+                Ok((text.clone(), *suffix, span))
+            }
+            _ => Err(self.unexpected("expected a name")),
+        }
+    }
+
+    fn primes(&mut self) -> u8 {
+        let mut n = 0;
+        while self.eat('\'') {
+            n += 1;
+        }
+        n
+    }
+
+    fn at_end(&self) -> bool {
+        self.pos >= self.toks.len()
+    }
+
+    fn finish(&self) -> PResult<()> {
+        if self.at_end() {
+            Ok(())
+        } else {
+            Err(self.unexpected("expected the end of the statement"))
+        }
+    }
+
+    fn statement(&mut self) -> PResult<Stmt> {
+        let start = self.start();
+        let kind = self.statement_kind()?;
+        self.finish()?;
+        Ok(Stmt { kind, span: start..self.end() })
+    }
+
+    fn statement_kind(&mut self) -> PResult<StmtKind> {
+        let Some(Tok::Name { text, suffix: 0 }) = self.peek() else {
+            return self.assignment_or_expr();
+        };
+        let word = text.to_ascii_uppercase();
+        let next = self.peek_at(1);
+        let is_assign =
+            matches!(next, Some(Tok::Punct('=')) | Some(Tok::PlusAssign) | Some(Tok::ColonAssign));
+        if is_assign {
+            return self.assignment_or_expr();
+        }
+        if let Some(kind) = decl_kind(&word) {
+            self.pos += 1;
+            // MOTIONVARIABLES' Q{2}': the prime after the keyword is decoration.
+            self.primes();
+            let items = self.decl_items()?;
+            return Ok(StmtKind::Declare { kind, items });
+        }
+        match word.as_str() {
+            "MASS" if !matches!(next, Some(Tok::Punct('('))) => {
+                self.pos += 1;
+                let mut out = Vec::new();
+                loop {
+                    let (n, _, span) = self.name()?;
+                    self.expect('=', "after the body or particle name in MASS")?;
+                    out.push((n, span, self.expr()?));
+                    if !self.eat(',') {
+                        break;
+                    }
+                }
+                Ok(StmtKind::Mass(out))
+            }
+            "INERTIA" if !matches!(next, Some(Tok::Punct('('))) => {
+                self.pos += 1;
+                let (body, _, body_span) = self.name()?;
+                // INERTIA B(frame), ...: an optional frame or point in parentheses is not supported.
+                if self.is_punct('(') {
+                    return Err(Diagnostic::error(
+                        self.span_here(),
+                        "INERTIA with a point or frame in parentheses is not supported",
+                    )
+                    .with_help(
+                        "give the central moments in the body's own frame: INERTIA B, I11, I22, I33",
+                    ));
+                }
+                let mut args = Vec::new();
+                while self.eat(',') {
+                    args.push(self.expr()?);
+                }
+                Ok(StmtKind::Inertia { body, body_span, args })
+            }
+            "UNITS" | "UNITSYSTEM" if word == "UNITS" => {
+                self.pos += 1;
+                let mut out = Vec::new();
+                loop {
+                    let (n, _, span) = self.name()?;
+                    self.primes();
+                    self.expect('=', "after the name in UNITS")?;
+                    out.push((n, span, self.expr()?));
+                    if !self.eat(',') {
+                        break;
+                    }
+                }
+                Ok(StmtKind::Units(out))
+            }
+            "INPUT" => {
+                self.pos += 1;
+                let mut out = Vec::new();
+                loop {
+                    let start = self.start();
+                    let (n, _, _) = self.name()?;
+                    let primes = self.primes();
+                    self.expect('=', "after the name in INPUT")?;
+                    let value = self.expr()?;
+                    let unit = match self.peek() {
+                        Some(Tok::Name { text, .. }) => {
+                            self.pos += 1;
+                            Some(text.to_ascii_uppercase())
+                        }
+                        _ => None,
+                    };
+                    out.push(InputItem { name: n, primes, value, unit, span: start..self.end() });
+                    if !self.eat(',') {
+                        break;
+                    }
+                }
+                Ok(StmtKind::Input(out))
+            }
+            "OUTPUT" => {
+                self.pos += 1;
+                let mut out = Vec::new();
+                loop {
+                    let (n, _, span) = self.name()?;
+                    let p = self.primes();
+                    let n = format!("{n}{}", "'".repeat(p as usize));
+                    let unit = match self.peek() {
+                        Some(Tok::Name { text, .. }) => {
+                            self.pos += 1;
+                            Some(text.to_ascii_uppercase())
+                        }
+                        _ => None,
+                    };
+                    out.push((n, span, unit));
+                    if !self.eat(',') {
+                        break;
+                    }
+                }
+                Ok(StmtKind::Output(out))
+            }
+            "CODE" => {
+                self.pos += 1;
+                let (kind, _, _) = self.name()?;
+                let mut args = Vec::new();
+                if self.eat('(') {
+                    if !self.is_punct(')') {
+                        args = self.args()?;
+                    }
+                    self.expect(')', "to close the CODE arguments")?;
+                }
+                let file = if self.at_end() {
+                    String::new()
+                } else {
+                    let from = self.toks[self.pos].span.start;
+                    let to = self.toks[self.toks.len() - 1].span.end;
+                    self.pos = self.toks.len();
+                    self.src[from..to].trim().to_string()
+                };
+                Ok(StmtKind::Code { kind: kind.to_ascii_uppercase(), args, file })
+            }
+            _ => {
+                if let Some(Tok::Name { text: on, suffix: 0 }) = next {
+                    let v = on.to_ascii_uppercase();
+                    if (v == "ON" || v == "OFF") && self.toks.len() == 2 {
+                        self.pos += 2;
+                        return Ok(StmtKind::Setting { name: word, on: v == "ON" });
+                    }
+                }
+                self.assignment_or_expr()
+            }
+        }
+    }
+
+    fn decl_items(&mut self) -> PResult<Vec<DeclItem>> {
+        let mut items = Vec::new();
+        loop {
+            let start = self.start();
+            let (name, _, _) = self.name()?;
+            let mut ranges = Vec::new();
+            if self.eat('{') {
+                loop {
+                    // {3} means 1..3; {1:3} means 1..3; {2,3} is two dimensions 1..2 and 1..3.
+                    let lo = self.integer()?;
+                    if self.eat(':') {
+                        ranges.push((lo, self.integer()?));
+                    } else {
+                        ranges.push((1, lo));
+                    }
+                    if !self.eat(',') {
+                        break;
+                    }
+                }
+                self.expect('}', "to close the index range")?;
+            }
+            let primes = self.primes();
+            let sign = if self.is_punct('+') && matches!(self.peek_at(1), None | Some(Tok::Punct(','))) {
+                self.pos += 1;
+                Some('+')
+            } else if self.is_punct('-') && matches!(self.peek_at(1), None | Some(Tok::Punct(','))) {
+                self.pos += 1;
+                Some('-')
+            } else {
+                None
+            };
+            let value = if self.eat('=') { Some(self.expr()?) } else { None };
+            items.push(DeclItem { name, ranges, primes, sign, value, span: start..self.end() });
+            if !self.eat(',') {
+                break;
+            }
+        }
+        Ok(items)
+    }
+
+    fn integer(&mut self) -> PResult<i64> {
+        match self.peek() {
+            Some(Tok::Number { text, suffix: 0 }) => {
+                let v = text.parse::<i64>().map_err(|_| self.unexpected("expected a whole number"))?;
+                self.pos += 1;
+                Ok(v)
+            }
+            _ => Err(self.unexpected("expected a whole number")),
+        }
+    }
+
+    fn assignment_or_expr(&mut self) -> PResult<StmtKind> {
+        // An assignment target is a name with primes or an index, then = += :=.
+        let save = self.pos;
+        if let Some(Tok::Name { text, suffix }) = self.peek() {
+            let start = self.start();
+            let (name, suffix) = (text.clone(), *suffix);
+            self.pos += 1;
+            let primes = self.primes();
+            let index = if self.is_punct('[') {
+                self.pos += 1;
+                let a = self.args()?;
+                self.expect(']', "to close the index")?;
+                Some(a)
+            } else {
+                None
+            };
+            let op = match self.peek() {
+                Some(Tok::Punct('=')) => Some(AssignOp::Set),
+                Some(Tok::PlusAssign) => Some(AssignOp::Add),
+                Some(Tok::ColonAssign) => Some(AssignOp::Define),
+                _ => None,
+            };
+            if let Some(op) = op {
+                let span = start..self.end();
+                self.pos += 1;
+                let value = self.expr()?;
+                return Ok(StmtKind::Assign {
+                    target: Target { name, primes, suffix, index, span },
+                    op,
+                    value,
+                });
+            }
+            self.pos = save;
+        }
+        Ok(StmtKind::Expr(self.expr()?))
+    }
+
+    fn args(&mut self) -> PResult<Vec<Expr>> {
+        let mut out = Vec::new();
+        loop {
+            out.push(self.arg()?);
+            if !self.eat(',') {
+                break;
+            }
+        }
+        Ok(out)
+    }
+
+    fn arg(&mut self) -> PResult<Expr> {
+        let start = self.start();
+        if let (Some(Tok::Name { text, suffix: 0 }), Some(Tok::Punct('='))) = (self.peek(), self.peek_at(1)) {
+            let n = text.clone();
+            self.pos += 2;
+            let v = self.expr()?;
+            return Ok(Expr { kind: ExprKind::NamedArg(n, Box::new(v)), span: start..self.end() });
+        }
+        let e = self.expr()?;
+        if self.eat(':') {
+            let hi = self.expr()?;
+            return Ok(Expr { kind: ExprKind::Range(Box::new(e), Box::new(hi)), span: start..self.end() });
+        }
+        Ok(e)
+    }
+
+    fn expr(&mut self) -> PResult<Expr> {
+        let start = self.start();
+        let mut lhs = self.term()?;
+        loop {
+            let op = if self.eat('+') {
+                BinOp::Add
+            } else if self.eat('-') {
+                BinOp::Sub
+            } else {
+                return Ok(lhs);
+            };
+            let rhs = self.term()?;
+            lhs = Expr { kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)), span: start..self.end() };
+        }
+    }
+
+    fn term(&mut self) -> PResult<Expr> {
+        let start = self.start();
+        let mut lhs = self.unary()?;
+        loop {
+            let op = if self.eat('*') {
+                BinOp::Mul
+            } else if self.eat('/') {
+                BinOp::Div
+            } else {
+                return Ok(lhs);
+            };
+            let rhs = self.unary()?;
+            lhs = Expr { kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)), span: start..self.end() };
+        }
+    }
+
+    fn unary(&mut self) -> PResult<Expr> {
+        let start = self.start();
+        if self.eat('-') {
+            let e = self.unary()?;
+            return Ok(Expr { kind: ExprKind::Neg(Box::new(e)), span: start..self.end() });
+        }
+        if self.eat('+') {
+            return self.unary();
+        }
+        self.power()
+    }
+
+    fn power(&mut self) -> PResult<Expr> {
+        let start = self.start();
+        let base = self.primary()?;
+        if self.eat('^') {
+            let exp = self.unary()?;
+            return Ok(Expr {
+                kind: ExprKind::Binary(BinOp::Pow, Box::new(base), Box::new(exp)),
+                span: start..self.end(),
+            });
+        }
+        Ok(base)
+    }
+
+    fn primary(&mut self) -> PResult<Expr> {
+        let start = self.start();
+        match self.peek() {
+            Some(Tok::Number { text, suffix }) => {
+                let value = text.parse::<f64>().map_err(|_| self.unexpected("expected a number"))?;
+                let suffix = *suffix;
+                self.pos += 1;
+                Ok(Expr { kind: ExprKind::Number { value, suffix }, span: start..self.end() })
+            }
+            Some(Tok::Name { text, suffix }) => {
+                let (name, suffix) = (text.clone(), *suffix);
+                self.pos += 1;
+                if suffix == 0 && self.eat('(') {
+                    let args = if self.is_punct(')') { Vec::new() } else { self.args()? };
+                    self.expect(')', &format!("to close the arguments of {name}"))?;
+                    return Ok(Expr { kind: ExprKind::Call { name, args }, span: start..self.end() });
+                }
+                if suffix == 0 && self.eat('[') {
+                    let args = self.args()?;
+                    self.expect(']', "to close the index")?;
+                    return Ok(Expr { kind: ExprKind::Index { name, args }, span: start..self.end() });
+                }
+                let primes = self.primes();
+                Ok(Expr { kind: ExprKind::Name { name, primes, suffix }, span: start..self.end() })
+            }
+            Some(Tok::Punct('(')) => {
+                self.pos += 1;
+                let e = self.expr()?;
+                self.expect(')', "to close the parenthesis")?;
+                Ok(Expr { kind: e.kind, span: start..self.end() })
+            }
+            Some(Tok::Punct('[')) => {
+                self.pos += 1;
+                let mut rows = vec![Vec::new()];
+                loop {
+                    let e = self.expr()?;
+                    if let Some(r) = rows.last_mut() {
+                        r.push(e);
+                    }
+                    if self.eat(',') {
+                        continue;
+                    }
+                    if self.eat(';') {
+                        rows.push(Vec::new());
+                        continue;
+                    }
+                    break;
+                }
+                self.expect(']', "to close the matrix")?;
+                Ok(Expr { kind: ExprKind::Matrix(rows), span: start..self.end() })
+            }
+            _ => Err(self.unexpected("expected an expression")),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_the_gimbal_statements() {
+        let src = "NEWTONIAN A\nCONSTANTS M{3},H{3},L,W,Y,Z\nVARIABLES q{3}',U{3}'\nSIMPROT(A,B,-2,q1)\nQ1' = U1\nP_O_P> = L*D1>\nI_B_BO>> = I1*B1>*B1>\nINPUT Q2 = 30 DEG, U3=10\nCODE DYNAMICS() phase3.m, SUBS\n";
+        let (stmts, errors) = parse(src);
+        assert!(errors.is_empty(), "{errors:?}");
+        assert_eq!(stmts.len(), 9);
+        let StmtKind::Declare { items, .. } = &stmts[1].kind else { panic!() };
+        assert_eq!(items[0].ranges, vec![(1, 3)]);
+        let StmtKind::Declare { items, .. } = &stmts[2].kind else { panic!() };
+        assert_eq!(items[0].primes, 1);
+        let StmtKind::Assign { target, .. } = &stmts[4].kind else { panic!() };
+        assert_eq!((target.name.as_str(), target.primes), ("Q1", 1));
+        let StmtKind::Input(items) = &stmts[7].kind else { panic!() };
+        assert_eq!(items[0].unit.as_deref(), Some("DEG"));
+        let StmtKind::Code { kind, file, .. } = &stmts[8].kind else { panic!() };
+        assert_eq!((kind.as_str(), file.as_str()), ("DYNAMICS", "phase3.m, SUBS"));
+    }
+
+    #[test]
+    fn power_binds_tighter_than_unary_minus() {
+        let (stmts, _) = parse("E = -X^2");
+        let StmtKind::Assign { value, .. } = &stmts[0].kind else { panic!() };
+        assert!(matches!(value.kind, ExprKind::Neg(_)));
+    }
+
+    #[test]
+    fn every_bad_line_is_reported() {
+        let (stmts, errors) = parse("A = (1 + \nB = 2\nC = 3 3\n");
+        assert_eq!(stmts.len(), 1);
+        assert_eq!(errors.len(), 2);
+        assert!(errors[0].message.contains("found the end of the line"), "{}", errors[0].message);
+        assert!(errors[1].message.contains("expected the end of the statement, found `3`"));
+    }
+}

@@ -1,0 +1,179 @@
+//! Tokens of the Autolev language, with byte spans into the source.
+
+use std::ops::Range;
+
+/// A byte range in the source text.
+pub type Span = Range<usize>;
+
+/// One token.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Tok {
+    /// A name as written; `suffix` counts trailing `>` (1 for vectors, 2 for dyadics).
+    Name {
+        /// The text.
+        text: String,
+        /// Number of `>` right after it.
+        suffix: u8,
+    },
+    /// A number literal as written, with trailing `>` count (`0>`, `1>>`).
+    Number {
+        /// The text.
+        text: String,
+        /// Number of `>` right after it.
+        suffix: u8,
+    },
+    /// One of `+ - * / ^ = ( ) [ ] { } , ; : '`.
+    Punct(char),
+    /// `+=`.
+    PlusAssign,
+    /// `:=`.
+    ColonAssign,
+    /// End of a statement (a line end not continued with `&`).
+    Newline,
+}
+
+/// A token and where it is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Token {
+    /// The token.
+    pub tok: Tok,
+    /// Where it is.
+    pub span: Span,
+}
+
+/// A character the lexer does not know.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LexError {
+    /// Where.
+    pub span: Span,
+    /// The character.
+    pub ch: char,
+}
+
+/// Splits `src` into tokens: `%` starts a comment, `&` at a line end continues the statement.
+pub fn lex(src: &str) -> Result<Vec<Token>, LexError> {
+    let bytes = src.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    let suffix = |i: &mut usize| -> u8 {
+        let mut n = 0;
+        while *i < bytes.len() && bytes[*i] == b'>' && n < 2 {
+            n += 1;
+            *i += 1;
+        }
+        n
+    };
+    while i < bytes.len() {
+        let c = bytes[i];
+        let start = i;
+        match c {
+            b'%' => {
+                while i < bytes.len() && bytes[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            b'&' => {
+                // Continuation: skip to the end of the line, newline included.
+                i += 1;
+                while i < bytes.len() && bytes[i] != b'\n' {
+                    if !bytes[i].is_ascii_whitespace() && bytes[i] != b'%' {
+                        break;
+                    }
+                    if bytes[i] == b'%' {
+                        while i < bytes.len() && bytes[i] != b'\n' {
+                            i += 1;
+                        }
+                        break;
+                    }
+                    i += 1;
+                }
+                if i < bytes.len() && bytes[i] == b'\n' {
+                    i += 1;
+                }
+            }
+            b'\n' => {
+                out.push(Token { tok: Tok::Newline, span: start..start + 1 });
+                i += 1;
+            }
+            b' ' | b'\t' | b'\r' => i += 1,
+            b'0'..=b'9' | b'.' => {
+                while i < bytes.len() && (bytes[i].is_ascii_digit() || bytes[i] == b'.') {
+                    i += 1;
+                }
+                if i < bytes.len() && (bytes[i] == b'e' || bytes[i] == b'E') {
+                    let mut j = i + 1;
+                    if j < bytes.len() && (bytes[j] == b'+' || bytes[j] == b'-') {
+                        j += 1;
+                    }
+                    if j < bytes.len() && bytes[j].is_ascii_digit() {
+                        i = j;
+                        while i < bytes.len() && bytes[i].is_ascii_digit() {
+                            i += 1;
+                        }
+                    }
+                }
+                let text = src[start..i].to_string();
+                let s = suffix(&mut i);
+                out.push(Token { tok: Tok::Number { text, suffix: s }, span: start..i });
+            }
+            c if c.is_ascii_alphabetic() || c == b'_' => {
+                while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+                    i += 1;
+                }
+                let text = src[start..i].to_string();
+                let s = suffix(&mut i);
+                out.push(Token { tok: Tok::Name { text, suffix: s }, span: start..i });
+            }
+            b'+' if bytes.get(i + 1) == Some(&b'=') => {
+                out.push(Token { tok: Tok::PlusAssign, span: start..start + 2 });
+                i += 2;
+            }
+            b':' if bytes.get(i + 1) == Some(&b'=') => {
+                out.push(Token { tok: Tok::ColonAssign, span: start..start + 2 });
+                i += 2;
+            }
+            b'+' | b'-' | b'*' | b'/' | b'^' | b'=' | b'(' | b')' | b'[' | b']' | b'{' | b'}' | b','
+            | b';' | b':' | b'\'' => {
+                out.push(Token { tok: Tok::Punct(c as char), span: start..start + 1 });
+                i += 1;
+            }
+            _ => {
+                let ch = src[i..].chars().next().unwrap_or('?');
+                return Err(LexError { span: start..start + ch.len_utf8(), ch });
+            }
+        }
+    }
+    out.push(Token { tok: Tok::Newline, span: src.len()..src.len() });
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn toks(s: &str) -> Vec<Tok> {
+        lex(s).unwrap().into_iter().map(|t| t.tok).collect()
+    }
+
+    #[test]
+    fn names_with_vector_suffixes_primes_and_numbers() {
+        let t = toks("P_O_P> = L*D1> + 0> % comment\nQ1' = .5E-3");
+        assert_eq!(t[0], Tok::Name { text: "P_O_P".into(), suffix: 1 });
+        assert_eq!(t[4], Tok::Name { text: "D1".into(), suffix: 1 });
+        assert_eq!(t[6], Tok::Number { text: "0".into(), suffix: 1 });
+        assert_eq!(t[7], Tok::Newline);
+        assert_eq!(t[9], Tok::Punct('\''));
+        assert_eq!(t[11], Tok::Number { text: ".5E-3".into(), suffix: 0 });
+    }
+
+    #[test]
+    fn continuation_joins_lines() {
+        let t = toks("E = A&\n+ B");
+        assert!(!t[..t.len() - 1].contains(&Tok::Newline));
+    }
+
+    #[test]
+    fn unknown_character_is_reported_with_its_span() {
+        assert_eq!(lex("A = 3 $ 4"), Err(LexError { span: 6..7, ch: '$' }));
+    }
+}
