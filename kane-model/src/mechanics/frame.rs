@@ -33,6 +33,32 @@ impl Model {
         self.clear_kinematics_caches();
     }
 
+    /// Sets the angular velocity of `frame` in `reference`; a frame not yet oriented is attached
+    /// to `reference` with that angular velocity and no orientation (its direction cosines are
+    /// then unknown, and asking for them is an error).
+    pub fn set_angular_velocity_in(&mut self, frame: FrameId, reference: FrameId, w: Vector) -> Result<()> {
+        match self.frames[frame.index()].parent {
+            Some(p) if p == reference => {}
+            Some(p) => {
+                return Err(MechanicsError::FrameOrientedTwice {
+                    frame: self.frame_name(frame).to_string(),
+                    parent: self.frame_name(p).to_string(),
+                })
+            }
+            None => {
+                if frame == self.newtonian || self.ancestors(reference).contains(&frame) {
+                    return Err(MechanicsError::OrientationCycle {
+                        frame: self.frame_name(frame).to_string(),
+                        parent: self.frame_name(reference).to_string(),
+                    });
+                }
+                self.frames[frame.index()].parent = Some(reference);
+            }
+        }
+        self.set_angular_velocity(frame, w);
+        Ok(())
+    }
+
     /// `frame`, its parent, grandparent, ... up to the root of its tree.
     fn ancestors(&self, frame: FrameId) -> Vec<FrameId> {
         let mut chain = vec![frame];

@@ -172,6 +172,8 @@ pub struct Model {
     pub(crate) kinematics_cache: KinematicsCache,
     pub(crate) constraints: Option<MotionConstraints>,
     pub(crate) configuration_constraints: Vec<ExprId>,
+    /// Position relations `(from, to, r)`, for position queries along the shortest chain.
+    pub(crate) position_edges: Vec<(PointId, PointId, Vector)>,
     frame_names: FxHashMap<String, FrameId>,
     point_names: FxHashMap<String, PointId>,
 }
@@ -201,6 +203,7 @@ impl Model {
             kinematics_cache: KinematicsCache::default(),
             constraints: None,
             configuration_constraints: Vec::new(),
+            position_edges: Vec::new(),
             frame_names: [(newtonian.to_string(), FrameId(0))].into_iter().collect(),
             point_names: FxHashMap::default(),
         }

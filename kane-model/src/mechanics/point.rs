@@ -10,11 +10,30 @@ use super::vector::Vector;
 
 impl Model {
     /// Locates `point` at `r` from `from` (Autolev `P_FROM_POINT> = r`).
+    ///
+    /// Positions form a tree: the relation becomes `point`'s link to `from` if `point` has none,
+    /// else `from`'s link to `point` (with `-r`) if that closes no loop; a relation between points
+    /// already connected is redundant and is replaced by the new one in place of the old link
+    /// only when `point` is linked directly to `from`. Locating a point from itself is an error.
     pub fn set_position(&mut self, point: PointId, from: PointId, r: Vector) -> Result<()> {
-        if self.point_chain(from).contains(&point) {
+        if point == from {
             return Err(MechanicsError::PositionCycle(self.point_name(point).to_string()));
         }
-        self.points[point.index()].position = Some((from, r));
+        // Every relation is also an edge of the position graph (the newest between two points).
+        self.position_edges.retain(|(a, b, _)| !((*a == from && *b == point) || (*a == point && *b == from)));
+        self.position_edges.push((from, point, r.clone()));
+        let linked_to_from = matches!(&self.points[point.index()].position, Some((p, _)) if *p == from);
+        if linked_to_from
+            || (self.points[point.index()].position.is_none() && !self.point_chain(from).contains(&point))
+        {
+            self.points[point.index()].position = Some((from, r));
+        } else if self.points[from.index()].position.is_none() && !self.point_chain(point).contains(&from) {
+            let minus = self.scale(&r, self.ar.minus_one())?;
+            self.points[from.index()].position = Some((point, minus));
+        } else if self.point_chain(from).contains(&point) && self.point_chain(point).len() == 1 {
+            return Err(MechanicsError::PositionCycle(self.point_name(point).to_string()));
+        }
+        self.kinematics_cache = super::model::KinematicsCache::default();
         Ok(())
     }
 
@@ -113,24 +132,48 @@ impl Model {
         chain
     }
 
-    /// The position of `point` from `from` (Autolev `P_FROM_POINT>`).
+    /// The position of `point` from `from` (Autolev `P_FROM_POINT>`), along the shortest chain of
+    /// position relations (the newest relation between two points counts).
     pub fn position(&mut self, point: PointId, from: PointId) -> Result<Vector> {
-        let up_p = self.point_chain(point);
-        let up_f = self.point_chain(from);
-        let Some(common) = up_p.iter().copied().find(|x| up_f.contains(x)) else {
+        if point == from {
+            return Ok(Vector::zero());
+        }
+        // Breadth-first search from `from`; each step remembers the edge it came through.
+        let mut came: Vec<Option<(PointId, usize, bool)>> = vec![None; self.points.len()];
+        let mut queue = std::collections::VecDeque::from([from]);
+        let mut seen = vec![false; self.points.len()];
+        seen[from.index()] = true;
+        while let Some(p) = queue.pop_front() {
+            if p == point {
+                break;
+            }
+            for (k, (a, b, _)) in self.position_edges.iter().enumerate() {
+                let (next, forward) = if *a == p {
+                    (*b, true)
+                } else if *b == p {
+                    (*a, false)
+                } else {
+                    continue;
+                };
+                if !seen[next.index()] {
+                    seen[next.index()] = true;
+                    came[next.index()] = Some((p, k, forward));
+                    queue.push_back(next);
+                }
+            }
+        }
+        if !seen[point.index()] {
             return Err(MechanicsError::NoPositionPath {
                 a: self.point_name(from).to_string(),
                 b: self.point_name(point).to_string(),
             });
-        };
-        let mut r = Vector::zero();
-        for &p in up_p.iter().take_while(|p| **p != common) {
-            let step = self.points[p.index()].position.clone().map(|x| x.1).unwrap_or_default();
-            r = self.add_vectors(&r, &step)?;
         }
-        for &p in up_f.iter().take_while(|p| **p != common) {
-            let step = self.points[p.index()].position.clone().map(|x| x.1).unwrap_or_default();
-            r = self.sub_vectors(&r, &step)?;
+        let mut r = Vector::zero();
+        let mut p = point;
+        while let Some((prev, k, forward)) = came[p.index()] {
+            let step = self.position_edges[k].2.clone();
+            r = if forward { self.add_vectors(&r, &step)? } else { self.sub_vectors(&r, &step)? };
+            p = prev;
         }
         Ok(r)
     }

@@ -185,7 +185,17 @@ impl Interpreter {
                 if let Some(x) = self.solved.get(&key) {
                     return Ok(Value::Scalar(*x));
                 }
-                return match self.bindings.get(&key) {
+                if !self.bindings.contains_key(&key) {
+                    if let Some((a, b)) = self.dcm_frames(&key) {
+                        let m = self.model.dcm(a, b).at(fail)?;
+                        return Ok(Value::Matrix {
+                            rows: 3,
+                            cols: 3,
+                            data: m.iter().flatten().copied().collect(),
+                        });
+                    }
+                }
+                return match self.bindings.get(&key).or_else(|| self.bindings.get(&super::entity_key(&key))) {
                     Some(Binding::Symbol(x, _)) => Ok(Value::Scalar(*x)),
                     Some(Binding::Value(v)) => Ok(v.clone()),
                     Some(Binding::Frame(_) | Binding::Body(_)) => {
@@ -200,6 +210,11 @@ impl Interpreter {
                     }
                     None => Err(self.unknown(name, 0, &e.span)),
                 };
+            }
+            if let Some(Binding::Value(v)) =
+                self.bindings.get(&format!("{key}{}", "'".repeat(primes as usize)))
+            {
+                return Ok(v.clone());
             }
             return match self.bindings.get(&key).cloned() {
                 Some(Binding::Symbol(x, _)) => {

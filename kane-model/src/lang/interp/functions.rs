@@ -115,12 +115,25 @@ impl Interpreter {
                 let s = self.model.ar.as_symbol(y).ok_or_else(|| {
                     Diagnostic::error(args[1].span.clone(), "D differentiates with respect to a symbol")
                 })?;
-                let mut v = self.eval(&args[0])?;
-                if args.len() == 3 {
+                let v = self.eval(&args[0])?;
+                if let (3, Value::Vector(vec)) = (args.len(), &v) {
+                    // A term is re-expressed in the frame only where its orientation there
+                    // depends on the variable; otherwise its measure numbers are differentiated.
                     let f = self.frame_arg(&args[2])?;
-                    if let Value::Vector(x) = v {
-                        v = Value::Vector(self.model.express_vector(&x, f).at(fail)?);
+                    let mut out = crate::mechanics::Vector::zero();
+                    for (g, m) in vec.terms() {
+                        let term = Vector::new(*g, *m);
+                        let c = self.model.dcm(f, *g).at(fail)?;
+                        let depends = self
+                            .model
+                            .ar
+                            .free_symbols(&c.iter().flatten().copied().collect::<Vec<_>>())
+                            .contains(&s);
+                        let term = if depends { self.model.express_vector(&term, f).at(fail)? } else { term };
+                        let d = self.model.partial(&term, s).at(fail)?;
+                        out = self.model.add_vectors(&out, &d).at(fail)?;
                     }
+                    return Ok(Value::Vector(out));
                 }
                 self.map_scalars(&v, &e.span, |m, x| Ok(m.ar.diff(x, s)?))
             }
@@ -262,6 +275,40 @@ impl Interpreter {
                 let inv = self.model.ar.div(one, tm).at(fail)?;
                 Ok(Value::Vector(self.model.scale(&moment, inv).at(fail)?))
             }
+            "INERTIA" => {
+                let origin = self.point_arg(
+                    args.first().ok_or_else(|| Diagnostic::error(e.span.clone(), "INERTIA needs a point"))?,
+                )?;
+                let names: Vec<String> = if args.len() > 1 {
+                    args[1..]
+                        .iter()
+                        .map(|a| match &a.kind {
+                            ExprKind::Name { name, .. } => Ok(name.to_ascii_uppercase()),
+                            _ => Err(Diagnostic::error(a.span.clone(), "expected a body or particle name")),
+                        })
+                        .collect::<IResult<_>>()?
+                } else {
+                    let mut v: Vec<String> = self
+                        .bindings
+                        .iter()
+                        .filter(|(_, b)| matches!(b, Binding::Body(_) | Binding::Particle(_)))
+                        .map(|(k, _)| k.trim_start_matches('#').to_string())
+                        .collect();
+                    v.sort();
+                    v
+                };
+                let origin_name = self.model.point_name(origin).to_string();
+                let mut total = crate::mechanics::Dyadic::zero();
+                for n in names {
+                    let key = format!("I_{n}_{origin_name}");
+                    let b = self.builtin(&key, 2).ok_or_else(|| {
+                        Diagnostic::error(e.span.clone(), format!("`{n}` is not a body or particle"))
+                    })?;
+                    let Value::Dyadic(d) = self.builtin_value(b, &e.span)? else { continue };
+                    total = self.model.add_dyadics(&total, &d).at(fail)?;
+                }
+                Ok(Value::Dyadic(total))
+            }
             "TRANSPOSE" | "TRACE" | "DET" | "ELEMENT" | "DIAGMAT" | "ROWS" | "COLS" | "MATRIX" | "VECTOR" => {
                 self.matrix_function(&upper, args, e)
             }
@@ -335,7 +382,7 @@ impl Interpreter {
     ) -> IResult<Vec<(ExprId, crate::mechanics::PointId)>> {
         let mut out = Vec::new();
         let push = |s: &Self, key: &str, span: &super::super::token::Span, out: &mut Vec<_>| -> IResult<()> {
-            match s.bindings.get(key) {
+            match s.bindings.get(&super::entity_key(key)) {
                 Some(Binding::Body(b)) => {
                     let body = s.model.body(*b);
                     let m = body.mass.ok_or_else(|| {
@@ -361,7 +408,7 @@ impl Interpreter {
                 .bindings
                 .iter()
                 .filter(|(_, b)| matches!(b, Binding::Body(_) | Binding::Particle(_)))
-                .map(|(k, _)| k.clone())
+                .map(|(k, _)| k.trim_start_matches('#').to_string())
                 .collect();
             names.sort();
             for k in names {

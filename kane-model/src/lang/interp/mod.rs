@@ -66,9 +66,32 @@ pub struct LoadedModel {
     pub outputs: Vec<(String, Option<String>)>,
     /// CODE requests.
     pub code: Vec<CodeRequest>,
+    bindings: FxHashMap<String, Binding>,
+    arrays: FxHashMap<String, Vec<(Vec<i64>, Value)>>,
 }
 
 impl LoadedModel {
+    /// The value a name has at the end of the file (case-insensitive; `V>` for vectors).
+    pub fn value(&self, name: &str) -> Option<Value> {
+        let key = name.to_ascii_uppercase();
+        match self.bindings.get(&key) {
+            Some(Binding::Value(v)) => Some(v.clone()),
+            _ => {
+                // EQN[1], EQN[2], ...: a column of scalars.
+                let mut entries = self.arrays.get(&key)?.clone();
+                entries.sort_by(|a, b| a.0.cmp(&b.0));
+                let data = entries
+                    .into_iter()
+                    .map(|(i, v)| match (i.as_slice(), v) {
+                        ([_], Value::Scalar(x)) => Some(x),
+                        _ => None,
+                    })
+                    .collect::<Option<Vec<ExprId>>>()?;
+                Some(Value::column(data))
+            }
+        }
+    }
+
     /// The INPUT value of `name` (case-insensitive).
     pub fn input(&self, name: &str) -> Option<f64> {
         self.inputs.iter().rev().find(|i| i.name.eq_ignore_ascii_case(name)).map(|i| i.value)
@@ -154,6 +177,8 @@ impl Interpreter {
             units: self.units,
             outputs: self.outputs,
             code: self.code,
+            bindings: self.bindings,
+            arrays: self.arrays,
         }
     }
 
@@ -167,8 +192,9 @@ impl Interpreter {
             }
             StmtKind::Mass(items) => {
                 for (name, span, e) in items {
+                    self.implicit_constants(e)?;
                     let m = self.scalar(e)?;
-                    match self.bindings.get(&name.to_ascii_uppercase()) {
+                    match self.bindings.get(&entity_key(&name.to_ascii_uppercase())) {
                         Some(Binding::Body(b)) => self.model.set_mass(*b, m),
                         Some(Binding::Particle(p)) => self.model.set_particle_mass(*p, m),
                         _ => {
@@ -244,25 +270,25 @@ impl Interpreter {
             match kind {
                 DeclKind::Newtonian => {
                     self.model.rename_newtonian(&key).at(fail)?;
-                    self.bindings.insert(key, Binding::Frame(self.model.newtonian()));
+                    self.bindings.insert(entity_key(&key), Binding::Frame(self.model.newtonian()));
                 }
                 DeclKind::Frames => {
                     let f = self.model.add_frame(&key).at(fail)?;
-                    self.bindings.insert(key, Binding::Frame(f));
+                    self.bindings.insert(entity_key(&key), Binding::Frame(f));
                 }
                 DeclKind::Bodies => {
                     let b = self.model.add_body(&key).at(fail)?;
                     let cm = self.model.body(b).mass_center;
-                    self.bindings.insert(format!("{key}O"), Binding::Point(cm));
-                    self.bindings.insert(key, Binding::Body(b));
+                    self.bindings.insert(entity_key(&format!("{key}O")), Binding::Point(cm));
+                    self.bindings.insert(entity_key(&key), Binding::Body(b));
                 }
                 DeclKind::Particles => {
                     let p = self.model.add_particle(&key).at(fail)?;
-                    self.bindings.insert(key, Binding::Particle(p));
+                    self.bindings.insert(entity_key(&key), Binding::Particle(p));
                 }
                 DeclKind::Points => {
                     let p = self.model.add_point(&key).at(fail)?;
-                    self.bindings.insert(key, Binding::Point(p));
+                    self.bindings.insert(entity_key(&key), Binding::Point(p));
                 }
                 DeclKind::Constants | DeclKind::Imaginary => {
                     let e = self.model.ar.constant(&name).at(fail)?;
@@ -299,6 +325,14 @@ impl Interpreter {
         }
         if target.suffix > 0 && self.assign_builtin(&key, target.suffix, &v, &target.span)? {
             return Ok(());
+        }
+        if target.suffix == 0 && !self.bindings.contains_key(&key) {
+            // A_B = [...] orients B relative to A by its direction cosines.
+            if let (Some((a, b)), Value::Matrix { rows: 3, cols: 3, data }) = (self.dcm_frames(&key), &v) {
+                let m =
+                    [[data[0], data[1], data[2]], [data[3], data[4], data[5]], [data[6], data[7], data[8]]];
+                return self.model.orient(b, a, crate::mechanics::Orientation::Dcm(m)).at(&target.span);
+            }
         }
         let full_key = format!("{key}{}", ">".repeat(target.suffix as usize));
         if op == AssignOp::Add {
@@ -342,11 +376,10 @@ impl Interpreter {
             ));
         };
         if target.primes != 1 {
-            return Err(Diagnostic::error(
-                target.span.clone(),
-                "only first-order kinematic equations (Q' = ...) are supported",
-            )
-            .with_help("introduce a speed: MOTIONVARIABLES' Q', U' with Q' = U"));
+            // Y'' = expr defines the second derivative; later uses of Y'' read it.
+            let key = format!("{key}{}", "'".repeat(target.primes as usize));
+            self.bindings.insert(key, Binding::Value(v.clone()));
+            return Ok(());
         }
         let s = self.model.ar.as_symbol(q).unwrap_or(crate::expr::TIME);
         self.kinematic.push((s, *rhs));
@@ -381,10 +414,29 @@ impl Interpreter {
                 self.bindings.insert(key.to_string(), Binding::Value(Value::Matrix { rows, cols, data }));
                 return Ok(());
             }
+            // ZERO[n + 1] = x appends a row to a column.
+            if cols == 1 && idx.len() == 1 && i as usize == rows + 1 {
+                data.push(*x);
+                self.bindings
+                    .insert(key.to_string(), Binding::Value(Value::Matrix { rows: rows + 1, cols, data }));
+                return Ok(());
+            }
         }
         let entries = self.arrays.entry(key.to_string()).or_default();
         entries.retain(|(i, _)| *i != idx);
         entries.push((idx, v));
+        Ok(())
+    }
+
+    /// Autolev declares the bare names of MASS and INERTIA statements as constants.
+    pub(crate) fn implicit_constants(&mut self, e: &super::ast::Expr) -> IResult<()> {
+        if let super::ast::ExprKind::Name { name, primes: 0, suffix: 0 } = &e.kind {
+            let key = name.to_ascii_uppercase();
+            if !self.bindings.contains_key(&key) && key != "T" && key != "PI" {
+                let c = self.model.ar.constant(name).at(&e.span)?;
+                self.bindings.insert(key, Binding::Symbol(c, 0));
+            }
+        }
         Ok(())
     }
 
@@ -395,6 +447,11 @@ impl Interpreter {
             _ => None,
         }
     }
+}
+
+/// The key under which a frame, point, body or particle is bound (apart from values).
+pub(crate) fn entity_key(upper: &str) -> String {
+    format!("#{upper}")
 }
 
 /// `Q` with ranges `[(1,3)]` -> `Q1, Q2, Q3`; `P` with `[(1,2),(1,3)]` -> `P11, P12, ..., P23`.

@@ -8,7 +8,7 @@ use super::super::ast::Expr;
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
 use super::value::Value;
-use super::{At, Binding, IResult, Interpreter};
+use super::{entity_key, At, Binding, IResult, Interpreter};
 
 /// A built-in kinematic quantity named in the text.
 #[derive(Clone, Copy, Debug)]
@@ -19,6 +19,7 @@ pub(crate) enum Builtin {
     AngularVelocity(FrameId, FrameId),
     AngularAcceleration(FrameId, FrameId),
     Inertia(crate::mechanics::BodyId, PointId),
+    ParticleInertia(crate::mechanics::ParticleId, PointId),
     Force(PointId),
     Torque(FrameId),
 }
@@ -26,7 +27,7 @@ pub(crate) enum Builtin {
 impl Interpreter {
     /// The frame of a frame or body name.
     pub(crate) fn frame_of(&self, key: &str) -> Option<FrameId> {
-        match self.bindings.get(key) {
+        match self.bindings.get(&entity_key(key)) {
             Some(Binding::Frame(f)) => Some(*f),
             Some(Binding::Body(b)) => Some(self.model.body(*b).frame),
             _ => None,
@@ -35,7 +36,7 @@ impl Interpreter {
 
     /// The point of a point, particle, or body-mass-centre name.
     pub(crate) fn point_of(&self, key: &str) -> Option<PointId> {
-        match self.bindings.get(key) {
+        match self.bindings.get(&entity_key(key)) {
             Some(Binding::Point(p)) => Some(*p),
             Some(Binding::Particle(p)) => Some(self.model.particle(*p).point),
             _ => None,
@@ -64,16 +65,19 @@ impl Interpreter {
             ("A", 1) => self.split2(rest, pt, fr).map(|(a, b)| Builtin::Acceleration(a, b)),
             ("W", 1) => self.split2(rest, fr, fr).map(|(a, b)| Builtin::AngularVelocity(a, b)),
             ("ALF", 1) => self.split2(rest, fr, fr).map(|(a, b)| Builtin::AngularAcceleration(a, b)),
-            ("I", 2) => self
-                .split2(
-                    rest,
-                    |s, n| match s.bindings.get(n) {
-                        Some(Binding::Body(b)) => Some(*b),
-                        _ => None,
-                    },
-                    pt,
-                )
-                .map(|(a, b)| Builtin::Inertia(a, b)),
+            ("I", 2) => {
+                let body = |s: &Self, n: &str| match s.bindings.get(&entity_key(n)) {
+                    Some(Binding::Body(b)) => Some(*b),
+                    _ => None,
+                };
+                let particle = |s: &Self, n: &str| match s.bindings.get(&entity_key(n)) {
+                    Some(Binding::Particle(p)) => Some(*p),
+                    _ => None,
+                };
+                self.split2(rest, body, pt)
+                    .map(|(a, b)| Builtin::Inertia(a, b))
+                    .or_else(|| self.split2(rest, particle, pt).map(|(a, b)| Builtin::ParticleInertia(a, b)))
+            }
             ("FORCE", 1) => self.point_of(rest).map(Builtin::Force),
             ("TORQUE", 1) => self.frame_of(rest).map(Builtin::Torque),
             _ => None,
@@ -105,6 +109,18 @@ impl Interpreter {
                     Value::Dyadic(self.model.parallel_axis(&central, m, &r, frame).at(fail)?)
                 }
             }
+            Builtin::ParticleInertia(p, point) => {
+                let part = self.model.particle(p).clone();
+                let m = part
+                    .mass
+                    .ok_or_else(|| Diagnostic::error(span.clone(), format!("{} has no mass", part.name)))?;
+                let r = self.model.position(part.point, point).at(fail)?;
+                // Written in the frame the position is given in.
+                let frame = r.terms().first().map_or(self.model.newtonian(), |t| t.0);
+                Value::Dyadic(
+                    self.model.parallel_axis(&crate::mechanics::Dyadic::zero(), m, &r, frame).at(fail)?,
+                )
+            }
             Builtin::Force(p) => {
                 Value::Vector(self.force_names.get(&p).map(|i| self.forces[*i].1.clone()).unwrap_or_default())
             }
@@ -124,9 +140,9 @@ impl Interpreter {
             }
             (Builtin::Velocity(p, f), Value::Vector(r)) => self.model.set_velocity(p, f, r.clone()),
             (Builtin::Acceleration(p, f), Value::Vector(r)) => self.model.set_acceleration(p, f, r.clone()),
-            (Builtin::AngularVelocity(a, _), Value::Vector(w)) => {
-                // W_A_N> = w sets A's angular velocity in its parent (Autolev requires that pair).
-                self.model.set_angular_velocity(a, w.clone());
+            (Builtin::AngularVelocity(a, b), Value::Vector(w)) => {
+                // W_A_N> = w sets A's angular velocity in N (A's parent, or A becomes N's child).
+                self.model.set_angular_velocity_in(a, b, w.clone()).at(fail)?;
             }
             (Builtin::Inertia(body, point), Value::Dyadic(d)) => {
                 if point != self.model.body(body).mass_center {
@@ -138,8 +154,19 @@ impl Interpreter {
                 }
                 self.model.set_inertia(body, d.clone());
             }
-            (Builtin::Force(p), Value::Vector(f)) => self.set_force(p, f.clone()),
-            (Builtin::Torque(fr), Value::Vector(t)) => self.set_torque(fr, t.clone()),
+            // An angular acceleration set by name is a definition, kept as a value.
+            (Builtin::AngularAcceleration(..), Value::Vector(_)) => return Ok(false),
+            // Assigning a load again adds to it, as SymPy's reading of Autolev does.
+            (Builtin::Force(p), Value::Vector(f)) => {
+                let prev = self.force_names.get(&p).map(|i| self.forces[*i].1.clone()).unwrap_or_default();
+                let sum = self.model.add_vectors(&prev, f).at(fail)?;
+                self.set_force(p, sum);
+            }
+            (Builtin::Torque(fr), Value::Vector(t)) => {
+                let prev = self.torque_names.get(&fr).map(|i| self.torques[*i].1.clone()).unwrap_or_default();
+                let sum = self.model.add_vectors(&prev, t).at(fail)?;
+                self.set_torque(fr, sum);
+            }
             (_, other) => {
                 return Err(Diagnostic::error(
                     span.clone(),
@@ -151,7 +178,7 @@ impl Interpreter {
         Ok(true)
     }
 
-    /// `FORCE_P> = f` replaces the resultant force set by name.
+    /// Sets the resultant force at `p`.
     pub(crate) fn set_force(&mut self, p: PointId, f: Vector) {
         match self.force_names.get(&p) {
             Some(&i) => self.forces[i].1 = f,
@@ -162,7 +189,7 @@ impl Interpreter {
         }
     }
 
-    /// `TORQUE_B> = t` replaces the resultant torque set by name.
+    /// Sets the resultant torque on the body of `fr`.
     pub(crate) fn set_torque(&mut self, fr: FrameId, t: Vector) {
         match self.torque_names.get(&fr) {
             Some(&i) => self.torques[i].1 = t,
@@ -171,6 +198,11 @@ impl Interpreter {
                 self.torques.push((fr, t));
             }
         }
+    }
+
+    /// `A_B`: the two frames of a direction-cosine-matrix name.
+    pub(crate) fn dcm_frames(&self, key: &str) -> Option<(FrameId, FrameId)> {
+        self.split2(key, |s, n| s.frame_of(n), |s, n| s.frame_of(n))
     }
 
     /// `A1>`: unit vector 1 of frame (or body) A.
@@ -188,7 +220,7 @@ impl Interpreter {
         let nearest = self
             .bindings
             .keys()
-            .filter(|k| k.ends_with('>') == (suffix > 0))
+            .filter(|k| !k.starts_with('#') && k.ends_with('>') == (suffix > 0))
             .map(|k| (edit_distance(&key, k.trim_end_matches('>')), k))
             .filter(|(d, _)| *d <= 2)
             .min();
@@ -231,7 +263,7 @@ impl Interpreter {
     /// `INERTIA B, I11, I22, I33 [, I12, I23, I31]`: central inertia in B's frame.
     pub(crate) fn inertia(&mut self, body: &str, span: &Span, args: &[Expr]) -> IResult<()> {
         let key = body.to_ascii_uppercase();
-        let Some(Binding::Body(b)) = self.bindings.get(&key).cloned() else {
+        let Some(Binding::Body(b)) = self.bindings.get(&entity_key(&key)).cloned() else {
             return Err(Diagnostic::error(span.clone(), format!("`{body}` is not a body"))
                 .with_help("declare it with BODIES"));
         };
@@ -241,6 +273,9 @@ impl Interpreter {
                 format!("INERTIA takes 3 or 6 moments, got {}", args.len()),
             )
             .with_help("INERTIA B, I11, I22, I33 or INERTIA B, I11, I22, I33, I12, I23, I31"));
+        }
+        for a in args {
+            self.implicit_constants(a)?;
         }
         let v = args.iter().map(|a| self.scalar(a)).collect::<IResult<Vec<_>>>()?;
         let z = self.model.ar.zero();
