@@ -13,12 +13,14 @@
 //! ```
 
 mod ast;
+mod compare;
 mod diagnostic;
 mod interp;
 mod parser;
 mod token;
 
 pub use ast::{Expr, ExprKind, Stmt, StmtKind};
+pub use compare::{compare, Comparison};
 pub use diagnostic::{line_column, Diagnostic, Report};
 pub use interp::value::Value;
 pub use interp::{CodeRequest, InputValue, LoadedModel};

@@ -7,27 +7,30 @@ use super::token::{lex, Span, Tok, Token};
 
 /// Parses a whole program; returns the statements and every syntax error found.
 pub fn parse(src: &str) -> (Vec<Stmt>, Vec<Diagnostic>) {
-    let tokens = match lex(src) {
-        Ok(t) => t,
-        Err(e) => {
-            return (
-                Vec::new(),
-                vec![Diagnostic::error(e.span, format!("unexpected character `{}`", e.ch)).with_help(
-                    "Autolev statements use names, numbers and + - * / ^ = ( ) [ ] { } , ; : ' > & %",
-                )],
-            )
-        }
-    };
+    let (tokens, lex_errors) = lex(src);
+    let mut bad_lines: Vec<usize> = Vec::new();
+    let mut lexed: Vec<Diagnostic> = Vec::new();
+    for e in lex_errors {
+        bad_lines.push(e.span.start);
+        lexed
+            .push(Diagnostic::error(e.span, format!("unexpected character `{}`", e.ch)).with_help(
+                "Autolev statements use names, numbers and + - * / ^ = ( ) [ ] { } , ; : ' > & %",
+            ));
+    }
     let mut stmts = Vec::new();
-    let mut errors = Vec::new();
+    let mut errors = lexed;
     let mut line: Vec<Token> = Vec::new();
     for t in tokens {
         if t.tok == Tok::Newline {
             if !line.is_empty() {
-                let mut p = Parser { toks: &line, pos: 0, src };
-                match p.statement() {
-                    Ok(s) => stmts.push(s),
-                    Err(e) => errors.push(e),
+                // A statement with a bad character is reported once, for that character.
+                let (from, to) = (line[0].span.start, t.span.start);
+                if !bad_lines.iter().any(|b| (from..=to).contains(b)) {
+                    let mut p = Parser { toks: &line, pos: 0, src };
+                    match p.statement() {
+                        Ok(s) => stmts.push(s),
+                        Err(e) => errors.push(e),
+                    }
                 }
                 line.clear();
             }
@@ -35,6 +38,7 @@ pub fn parse(src: &str) -> (Vec<Stmt>, Vec<Diagnostic>) {
             line.push(t);
         }
     }
+    errors.sort_by_key(|d| d.span.start);
     (stmts, errors)
 }
 

@@ -51,7 +51,9 @@ pub struct LexError {
 }
 
 /// Splits `src` into tokens: `%` starts a comment, `&` at a line end continues the statement.
-pub fn lex(src: &str) -> Result<Vec<Token>, LexError> {
+/// Unknown characters are skipped and reported, so every line is still parsed.
+pub fn lex(src: &str) -> (Vec<Token>, Vec<LexError>) {
+    let mut errors = Vec::new();
     let bytes = src.as_bytes();
     let mut out = Vec::new();
     let mut i = 0;
@@ -139,12 +141,13 @@ pub fn lex(src: &str) -> Result<Vec<Token>, LexError> {
             }
             _ => {
                 let ch = src[i..].chars().next().unwrap_or('?');
-                return Err(LexError { span: start..start + ch.len_utf8(), ch });
+                errors.push(LexError { span: start..start + ch.len_utf8(), ch });
+                i += ch.len_utf8();
             }
         }
     }
     out.push(Token { tok: Tok::Newline, span: src.len()..src.len() });
-    Ok(out)
+    (out, errors)
 }
 
 #[cfg(test)]
@@ -152,7 +155,7 @@ mod tests {
     use super::*;
 
     fn toks(s: &str) -> Vec<Tok> {
-        lex(s).unwrap().into_iter().map(|t| t.tok).collect()
+        lex(s).0.into_iter().map(|t| t.tok).collect()
     }
 
     #[test]
@@ -174,6 +177,8 @@ mod tests {
 
     #[test]
     fn unknown_character_is_reported_with_its_span() {
-        assert_eq!(lex("A = 3 $ 4"), Err(LexError { span: 6..7, ch: '$' }));
+        let (toks, errors) = lex("A = 3 $ 4");
+        assert_eq!(errors, vec![LexError { span: 6..7, ch: '$' }]);
+        assert_eq!(toks.len(), 5);
     }
 }

@@ -129,9 +129,35 @@ pub(crate) trait At<T> {
     fn at(self, span: &Span) -> IResult<T>;
 }
 
-impl<T, E: std::fmt::Display> At<T> for Result<T, E> {
+impl<T> At<T> for Result<T, crate::expr::ExprError> {
     fn at(self, span: &Span) -> IResult<T> {
         self.map_err(|e| Diagnostic::error(span.clone(), e.to_string()))
+    }
+}
+
+impl<T> At<T> for Result<T, crate::mechanics::MechanicsError> {
+    fn at(self, span: &Span) -> IResult<T> {
+        use crate::mechanics::MechanicsError as E;
+        self.map_err(|e| {
+            let help = match &e {
+                E::FrameOrientedTwice { .. } => {
+                    Some("orient each frame once; to change how it turns, edit that first SIMPROT")
+                }
+                E::OrientationCycle { .. } => {
+                    Some("frames form a tree rooted at the Newtonian frame: orient the child from its parent")
+                }
+                E::MissingKinematics(_) => Some("give every coordinate a kinematic equation, e.g. Q1' = U1"),
+                E::NoSpeeds => Some("declare speeds, e.g. VARIABLES U{3}' (or MOTIONVARIABLES' Q{3}'')"),
+                E::MissingMass(_) => Some("masses are given with MASS NAME = value"),
+                E::NoPositionPath { .. } => Some("locate one point from the other, e.g. P_O_P> = L*A1>"),
+                _ => None,
+            };
+            let d = Diagnostic::error(span.clone(), e.to_string());
+            match help {
+                Some(h) => d.with_help(h),
+                None => d,
+            }
+        })
     }
 }
 

@@ -170,7 +170,12 @@ impl Interpreter {
             (_, other) => {
                 return Err(Diagnostic::error(
                     span.clone(),
-                    format!("`{key}{}` cannot be {}", ">".repeat(suffix as usize), other.kind()),
+                    format!(
+                        "`{key}{}` needs {}, found {}",
+                        ">".repeat(suffix as usize),
+                        if suffix == 2 { "a dyadic" } else { "a vector" },
+                        other.kind()
+                    ),
                 )
                 .with_help("a vector name (ending in >) needs a vector, a dyadic name (>>) a dyadic"))
             }

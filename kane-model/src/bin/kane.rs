@@ -1,0 +1,260 @@
+//! The `kane` command: check model files, print, evaluate and compare their equations.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+use kane_model::expr::{Equivalence, ExprId, SymbolId, Tape};
+use kane_model::lang::{self, LoadedModel};
+use kane_model::mechanics::KaneEquations;
+use nalgebra::{DMatrix, DVector};
+
+/// Kane's method for Autolev-style model files.
+#[derive(Parser)]
+#[command(name = "kane", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Parse and derive; print the errors, or a one-line summary.
+    Check {
+        /// The model file.
+        file: PathBuf,
+    },
+    /// Print the kinematic equations, partial velocities, mass matrix and forcing.
+    Eoms {
+        /// The model file.
+        file: PathBuf,
+        /// Output format.
+        #[arg(long, value_enum, default_value = "text")]
+        format: Format,
+    },
+    /// Evaluate the equations at one state (values from INPUT unless set; angles in radians).
+    Eval {
+        /// The model file.
+        file: PathBuf,
+        /// NAME=VALUE (case-insensitive), repeated.
+        #[arg(long = "set", value_name = "NAME=VALUE")]
+        set: Vec<String>,
+        /// Print one JSON object.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Check hand-derived equations (U1' = ... or ZERO[1] = ...) against the derived ones.
+    Compare {
+        /// The model file.
+        file: PathBuf,
+        /// The hand-derived equations.
+        hand: PathBuf,
+    },
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum Format {
+    Text,
+    Latex,
+    Json,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(cli.command) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprint!("{message}");
+            if !message.ends_with('\n') {
+                eprintln!();
+            }
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn read(path: &Path) -> Result<String, String> {
+    std::fs::read_to_string(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))
+}
+
+fn load(path: &Path) -> Result<LoadedModel, String> {
+    let src = read(path)?;
+    lang::load(&path.display().to_string(), &src).map_err(|r| r.render())
+}
+
+fn equations<'a>(m: &'a LoadedModel, path: &Path) -> Result<&'a KaneEquations, String> {
+    m.equations
+        .as_ref()
+        .ok_or_else(|| format!("{}: the file derives no equations; call KANE()", path.display()))
+}
+
+fn names(m: &LoadedModel, syms: &[SymbolId]) -> Vec<String> {
+    syms.iter().map(|s| m.model.ar.symbol_info(*s).name.clone()).collect()
+}
+
+fn ops(m: &LoadedModel, roots: &[ExprId]) -> usize {
+    let syms = m.model.ar.free_symbols(roots);
+    Tape::compile(&m.model.ar, roots, &syms).map(|t| t.op_count()).unwrap_or(0)
+}
+
+fn run(command: Command) -> Result<(), String> {
+    match command {
+        Command::Check { file } => {
+            let m = load(&file)?;
+            match &m.equations {
+                Some(e) => {
+                    let mm: Vec<ExprId> = e.mass_matrix.iter().flatten().copied().collect();
+                    println!(
+                        "{}: ok: {} coordinates ({}), {} speeds ({}), {} bodies; M {n}x{n} in {} operations, f in {}",
+                        file.display(),
+                        e.coordinates.len(),
+                        names(&m, &e.coordinates).join(", "),
+                        e.speeds.len(),
+                        names(&m, &e.speeds).join(", "),
+                        m.model.bodies().len(),
+                        ops(&m, &mm),
+                        ops(&m, &e.forcing),
+                        n = e.speeds.len(),
+                    );
+                }
+                None => println!("{}: ok: no KANE() in this file", file.display()),
+            }
+            Ok(())
+        }
+        Command::Eoms { file, format } => {
+            let mut m = load(&file)?;
+            let e = equations(&m, &file)?.clone();
+            let text = |m: &LoadedModel, x: ExprId| match format {
+                Format::Latex => m.model.ar.to_latex(x),
+                _ => m.model.ar.to_text(x),
+            };
+            let q = names(&m, &e.coordinates);
+            let u = names(&m, &e.speeds);
+            let kin: Vec<String> = e.kinematics.iter().map(|x| text(&m, *x)).collect();
+            let mass: Vec<Vec<String>> =
+                e.mass_matrix.iter().map(|r| r.iter().map(|x| text(&m, *x)).collect()).collect();
+            let forcing: Vec<String> = e.forcing.iter().map(|x| text(&m, *x)).collect();
+            let frames: Vec<_> = m.model.bodies().iter().map(|b| b.frame).collect();
+            let points: Vec<_> = m.model.bodies().iter().map(|b| b.mass_center).collect();
+            let table = m.model.partial_velocity_table(&frames, &points).map_err(|e| e.to_string())?;
+            match format {
+                Format::Json => {
+                    let v = serde_json::json!({
+                        "coordinates": q, "speeds": u, "kinematics": kin,
+                        "partial_velocities": table.lines().collect::<Vec<_>>(),
+                        "mass_matrix": mass, "forcing": forcing,
+                    });
+                    println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
+                }
+                _ => {
+                    println!("% Kinematic equations");
+                    for (qi, k) in q.iter().zip(&kin) {
+                        println!("{qi}' = {k}");
+                    }
+                    println!("\n% Partial velocities and partial angular velocities");
+                    print!("{table}");
+                    println!("\n% Mass matrix M (M u' = f)");
+                    for (i, row) in mass.iter().enumerate() {
+                        for (j, x) in row.iter().enumerate() {
+                            println!("M[{},{}] = {x}", i + 1, j + 1);
+                        }
+                    }
+                    println!("\n% Forcing f");
+                    for (i, x) in forcing.iter().enumerate() {
+                        println!("f[{}] = {x}", i + 1);
+                    }
+                }
+            }
+            Ok(())
+        }
+        Command::Eval { file, set, json } => {
+            let m = load(&file)?;
+            let e = equations(&m, &file)?;
+            let mut values: BTreeMap<String, f64> =
+                m.inputs.iter().map(|i| (i.name.to_ascii_uppercase(), i.value)).collect();
+            for s in &set {
+                let (k, v) = s.split_once('=').ok_or_else(|| format!("--set {s}: expected NAME=VALUE"))?;
+                let v: f64 =
+                    v.trim().parse().map_err(|_| format!("--set {s}: `{}` is not a number", v.trim()))?;
+                let key = k.trim().to_ascii_uppercase();
+                if m.model.ar.symbols().all(|(_, info)| info.name.to_ascii_uppercase() != key) {
+                    return Err(format!("--set {s}: the model has no symbol `{}`", k.trim()));
+                }
+                values.insert(key, v);
+            }
+            let ar = &m.model.ar;
+            let mut roots: Vec<ExprId> = e.mass_matrix.iter().flatten().copied().collect();
+            roots.extend(&e.forcing);
+            roots.extend(&e.kinematics);
+            let missing: Vec<String> = ar
+                .free_symbols(&roots)
+                .into_iter()
+                .map(|s| ar.symbol_info(s).name.clone())
+                .filter(|n| !values.contains_key(&n.to_ascii_uppercase()))
+                .collect();
+            if !missing.is_empty() {
+                return Err(format!(
+                    "{}: no value for {}; give them with --set NAME=VALUE or INPUT",
+                    file.display(),
+                    missing.join(", ")
+                ));
+            }
+            let value_of = |s: SymbolId| values.get(&ar.symbol_info(s).name.to_ascii_uppercase()).copied();
+            let at = |x: ExprId| ar.eval(&[x], value_of).map(|v| v[0]).map_err(|err| err.to_string());
+            let n = e.speeds.len();
+            let mass = DMatrix::from_fn(n, n, |i, j| at(e.mass_matrix[i][j]).unwrap_or(f64::NAN));
+            let forcing = DVector::from_fn(n, |i, _| at(e.forcing[i]).unwrap_or(f64::NAN));
+            for x in &roots {
+                at(*x)?;
+            }
+            let qdot = e.kinematics.iter().map(|x| at(*x)).collect::<Result<Vec<f64>, String>>()?;
+            let udot =
+                mass.clone().lu().solve(&forcing).ok_or("the mass matrix is singular at this state")?;
+            let rows: Vec<Vec<f64>> = (0..n).map(|i| (0..n).map(|j| mass[(i, j)]).collect()).collect();
+            if json {
+                let v = serde_json::json!({
+                    "coordinates": names(&m, &e.coordinates), "speeds": names(&m, &e.speeds),
+                    "mass_matrix": rows, "forcing": forcing.iter().collect::<Vec<_>>(),
+                    "qdot": qdot, "udot": udot.iter().collect::<Vec<_>>(),
+                });
+                println!("{v}");
+            } else {
+                for (name, v) in names(&m, &e.coordinates).iter().zip(&qdot) {
+                    println!("{name}' = {v}");
+                }
+                for (name, v) in names(&m, &e.speeds).iter().zip(udot.iter()) {
+                    println!("{name}' = {v}");
+                }
+            }
+            Ok(())
+        }
+        Command::Compare { file, hand } => {
+            let (src, hand_src) = (read(&file)?, read(&hand)?);
+            let results =
+                lang::compare(&file.display().to_string(), &src, &hand.display().to_string(), &hand_src)
+                    .map_err(|r| r.render())?;
+            let mut differs = false;
+            for c in results {
+                let line = match c.verdict {
+                    Equivalence::Proven => "proven equal".to_string(),
+                    Equivalence::NumericallyEqual { samples, max_relative_residual, tolerance } => format!(
+                        "numerically equal at {samples} random points (largest relative residual {max_relative_residual:.1e}, tolerance {tolerance:.0e})"
+                    ),
+                    Equivalence::Differs { point, lhs, rhs } => {
+                        differs = true;
+                        let at: Vec<String> = point.iter().map(|(n, v)| format!("{n} = {v:.6}")).collect();
+                        format!("DIFFERS: hand {lhs}, derived {rhs}, residual {:.3e} at {}", lhs - rhs, at.join(", "))
+                    }
+                    Equivalence::Inconclusive => "inconclusive: no point where both sides are finite".to_string(),
+                };
+                println!("{}: {line}", c.label);
+            }
+            if differs {
+                Err("some equations differ".into())
+            } else {
+                Ok(())
+            }
+        }
+    }
+}
