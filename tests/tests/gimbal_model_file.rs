@@ -100,3 +100,34 @@ fn editing_the_geometry_changes_the_equations() {
         - value(&base.model.ar, base_eqs.mass_matrix[2][2], &vals);
     assert!((m33 - m3 * dx * dx).abs() < 1e-12, "{m33} vs {}", m3 * dx * dx);
 }
+
+#[test]
+fn solve_zero_for_the_accelerations_equals_m_inverse_f() {
+    // SOLVE(ZERO, U1', U2', U3') after KANE(), as Autolev files write it.
+    let src = format!("{GIMBAL}\nSOLVE(ZERO, U1', U2', U3')\nUD2 = RHS(U2')\n");
+    let loaded = lang::load("gimbal_solve.al", &src).unwrap_or_else(|r| panic!("{}", r.render()));
+    let Some(lang::Value::Scalar(ud2)) = loaded.value("UD2") else { panic!("UD2 missing") };
+    let vals: Vec<(String, f64)> = [
+        ("M1", 2.0),
+        ("M2", 2.0),
+        ("M3", 50.0),
+        ("H1", 0.6),
+        ("H2", 0.5),
+        ("H3", 0.4),
+        ("L", 0.3),
+        ("W", 0.025),
+        ("Y", 0.0),
+        ("Z", 10.0),
+        ("Q1", 0.0),
+        ("Q2", 0.0),
+        ("Q3", 0.0),
+        ("U1", 0.0),
+        ("U2", 0.0),
+        ("U3", 10.0),
+    ]
+    .iter()
+    .map(|(k, v)| (k.to_string(), *v))
+    .collect();
+    let got = value(&loaded.model.ar, ud2, &vals);
+    assert!((got - (-5.532503457814661)).abs() < 1e-12, "{got}");
+}

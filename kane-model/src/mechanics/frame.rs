@@ -222,6 +222,12 @@ impl Model {
         if let Some(w) = self.frames[frame.index()].ang_vel.clone() {
             return Ok(w);
         }
+        self.orientation_angular_velocity(frame)
+    }
+
+    /// The angular velocity of `frame` in its parent implied by its orientation's rates (even
+    /// where an angular velocity is set explicitly); zero for a frame with no orientation.
+    pub fn orientation_angular_velocity(&mut self, frame: FrameId) -> Result<Vector> {
         let parent = self.frames[frame.index()].parent.unwrap_or(self.newtonian);
         match self.frames[frame.index()].orientation.clone() {
             Some(Orientation::Axis { axis, angle }) => {

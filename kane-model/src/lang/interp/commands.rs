@@ -141,17 +141,24 @@ impl Interpreter {
                         "SOLVE takes the name of an equation array",
                     ));
                 };
-                let mut eqs: Vec<(Vec<i64>, Value)> =
-                    self.arrays.get(&arr.to_ascii_uppercase()).cloned().unwrap_or_default();
-                eqs.sort_by(|a, b| a.0.cmp(&b.0));
-                let eqs: Vec<ExprId> = eqs
-                    .into_iter()
-                    .filter_map(|(_, v)| if let Value::Scalar(x) = v { Some(x) } else { None })
-                    .collect();
+                // The equations: an array EQN[1], EQN[2], ... or a column such as ZERO.
+                let eqs: Vec<ExprId> = match self.lookup_value(&arr.to_ascii_uppercase()) {
+                    Some(Value::Matrix { data, .. }) => data,
+                    Some(Value::Scalar(x)) => vec![x],
+                    _ => {
+                        let mut entries =
+                            self.arrays.get(&arr.to_ascii_uppercase()).cloned().unwrap_or_default();
+                        entries.sort_by(|a, b| a.0.cmp(&b.0));
+                        entries
+                            .into_iter()
+                            .filter_map(|(_, v)| if let Value::Scalar(x) = v { Some(x) } else { None })
+                            .collect()
+                    }
+                };
                 let mut names = Vec::new();
                 let mut syms = Vec::new();
                 for a in &args[1..] {
-                    let ExprKind::Name { name, .. } = &a.kind else {
+                    let ExprKind::Name { name, primes, .. } = &a.kind else {
                         return Err(Diagnostic::error(a.span.clone(), "SOLVE takes unknowns by name"));
                     };
                     let x = self.scalar(a)?;
@@ -160,7 +167,7 @@ impl Interpreter {
                             Diagnostic::error(a.span.clone(), "an unknown must be a symbol")
                         })?,
                     );
-                    names.push(name.to_ascii_uppercase());
+                    names.push(format!("{}{}", name.to_ascii_uppercase(), "'".repeat(*primes as usize)));
                 }
                 let sol = self.model.ar.solve_linear(&eqs, &syms).at(fail)?;
                 for (n, x) in names.into_iter().zip(sol) {
@@ -168,6 +175,10 @@ impl Interpreter {
                 }
                 Ok(())
             }
+            "DIRCOS" => self.dircos(args, &e.span),
+            "KINDIFFS" => self.kindiffs(args, &e.span),
+            // UNITSYSTEM and ENCODE choose how Autolev prints; results are unchanged.
+            "UNITSYSTEM" | "ENCODE" => Ok(()),
             "KANE" => {
                 self.prepare(&e.span)?;
                 let eqs = self.model.kane().at(fail)?;

@@ -211,9 +211,11 @@ impl Interpreter {
                     None => Err(self.unknown(name, 0, &e.span)),
                 };
             }
-            if let Some(Binding::Value(v)) =
-                self.bindings.get(&format!("{key}{}", "'".repeat(primes as usize)))
-            {
+            let primed = format!("{key}{}", "'".repeat(primes as usize));
+            if let Some(x) = self.solved.get(&primed) {
+                return Ok(Value::Scalar(*x));
+            }
+            if let Some(Binding::Value(v)) = self.bindings.get(&primed) {
                 return Ok(v.clone());
             }
             return match self.bindings.get(&key).cloned() {

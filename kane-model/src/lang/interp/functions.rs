@@ -27,8 +27,6 @@ const UNSUPPORTED: &[(&str, &str)] = &[
     ("EXCLUDE", "term selection"),
     ("INV", "symbolic matrix inverse"),
     ("NICHECK", "Newtonian-inertia check"),
-    ("DIRCOS", "DIRCOS orientation"),
-    ("KINDIFFS", "KINDIFFS"),
 ];
 
 impl Interpreter {
@@ -227,13 +225,14 @@ impl Interpreter {
             }
             "RHS" => {
                 arity(1)?;
-                let ExprKind::Name { name, .. } = &args[0].kind else {
+                let ExprKind::Name { name, primes, .. } = &args[0].kind else {
                     return Err(Diagnostic::error(
                         args[0].span.clone(),
                         "RHS takes the name of a solved unknown",
                     ));
                 };
-                self.solved.get(&name.to_ascii_uppercase()).map(|x| Value::Scalar(*x)).ok_or_else(|| {
+                let key = format!("{}{}", name.to_ascii_uppercase(), "'".repeat(*primes as usize));
+                self.solved.get(&key).map(|x| Value::Scalar(*x)).ok_or_else(|| {
                     Diagnostic::error(args[0].span.clone(), format!("`{name}` has not been solved for"))
                         .with_help("call SOLVE(EQN, ...) first")
                 })
@@ -251,6 +250,34 @@ impl Interpreter {
             "KE" => {
                 self.prepare(&e.span)?;
                 Ok(Value::Scalar(self.model.kinetic_energy().at(fail)?))
+            }
+            "MOMENTUM" => {
+                // MOMENTUM(LINEAR) or MOMENTUM(ANGULAR, O), in the Newtonian frame.
+                self.prepare(&e.span)?;
+                let which = match args.first().map(|a| &a.kind) {
+                    Some(ExprKind::Name { name, .. }) => name.to_ascii_uppercase(),
+                    _ => String::new(),
+                };
+                let n = self.model.newtonian();
+                match which.as_str() {
+                    "ANGULAR" if args.len() == 2 => {
+                        let o = self.point_arg(&args[1])?;
+                        Ok(Value::Vector(self.model.angular_momentum(o, n).at(fail)?))
+                    }
+                    "LINEAR" if args.len() == 1 => {
+                        let masses = self.mass_list(&[], &e.span)?;
+                        let mut p = Vector::zero();
+                        for (m, pt) in masses {
+                            let v = self.model.velocity(pt, n).at(fail)?;
+                            let mv = self.model.scale(&v, m).at(fail)?;
+                            p = self.model.add_vectors(&p, &mv).at(fail)?;
+                        }
+                        Ok(Value::Vector(p))
+                    }
+                    _ => {
+                        Err(Diagnostic::error(e.span.clone(), "MOMENTUM takes (LINEAR) or (ANGULAR, point)"))
+                    }
+                }
             }
             "MASS" => {
                 let masses = self.mass_list(args, &e.span)?;

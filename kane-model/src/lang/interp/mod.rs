@@ -7,6 +7,7 @@ mod commands;
 mod eval;
 mod functions;
 mod names;
+mod orientation;
 pub mod value;
 
 use rustc_hash::FxHashMap;
@@ -413,6 +414,13 @@ impl Interpreter {
     }
 
     fn assign_array(&mut self, key: &str, idx: Vec<i64>, v: Value, span: &Span) -> IResult<()> {
+        if key == "AUXILIARY" {
+            return Err(Diagnostic::error(
+                span.clone(),
+                "AUXILIARY[] (auxiliary speeds for constraint forces) is not supported",
+            )
+            .with_help("compute constraint forces from the equations of motion outside the model file"));
+        }
         if key == "DEPENDENT" {
             if let Value::Scalar(e) = v {
                 self.dependent.push(e);

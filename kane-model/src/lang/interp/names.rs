@@ -4,7 +4,7 @@
 
 use crate::mechanics::{FrameId, PointId, Vector};
 
-use super::super::ast::Expr;
+use super::super::ast::{Expr, ExprKind};
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
 use super::value::Value;
@@ -250,6 +250,55 @@ impl Interpreter {
     }
 }
 
+impl Interpreter {
+    /// Extension (Autolev has no inertia by shape): `INERTIA B, SOLID_ELLIPSOID(a, b, c)` and
+    /// likewise SOLID_SPHERE(r), SOLID_CYLINDER(r, l), THIN_ROD(l), CUBOID(a, b, c),
+    /// THIN_DISK(r): the central inertia of that uniform shape with the body's MASS, its axes
+    /// along the body's 1, 2, 3 (axis 3 the symmetry axis).
+    fn inertia_by_shape(
+        &mut self,
+        b: crate::mechanics::BodyId,
+        name: &str,
+        dims: &[Expr],
+        span: &Span,
+    ) -> IResult<()> {
+        use crate::mechanics::Shape;
+        let upper = name.to_ascii_uppercase();
+        let want = match upper.as_str() {
+            "SOLID_ELLIPSOID" | "CUBOID" => 3,
+            "SOLID_CYLINDER" => 2,
+            "SOLID_SPHERE" | "THIN_ROD" | "THIN_DISK" => 1,
+            _ => {
+                return Err(Diagnostic::error(span.clone(), format!("unknown shape `{name}`"))
+                    .with_help("shapes: SOLID_ELLIPSOID(a,b,c), SOLID_SPHERE(r), SOLID_CYLINDER(r,l), THIN_ROD(l), CUBOID(a,b,c), THIN_DISK(r)"))
+            }
+        };
+        if dims.len() != want {
+            return Err(Diagnostic::error(
+                span.clone(),
+                format!("{upper} takes {want} dimension(s), got {}", dims.len()),
+            ));
+        }
+        let d = dims.iter().map(|x| self.scalar(x)).collect::<IResult<Vec<_>>>()?;
+        let shape = match upper.as_str() {
+            "SOLID_ELLIPSOID" => Shape::SolidEllipsoid { a: d[0], b: d[1], c: d[2] },
+            "CUBOID" => Shape::Cuboid { a: d[0], b: d[1], c: d[2] },
+            "SOLID_CYLINDER" => Shape::SolidCylinder { r: d[0], l: d[1] },
+            "SOLID_SPHERE" => Shape::SolidSphere { r: d[0] },
+            "THIN_ROD" => Shape::ThinRod { l: d[0] },
+            _ => Shape::ThinDisk { r: d[0] },
+        };
+        let body = self.model.body(b).clone();
+        let m = body.mass.ok_or_else(|| {
+            Diagnostic::error(span.clone(), format!("{} has no mass yet", body.name))
+                .with_help("give MASS before INERTIA by shape")
+        })?;
+        let dy = self.model.shape_inertia(shape, m, body.frame).at(span)?;
+        self.model.set_inertia(b, dy);
+        Ok(())
+    }
+}
+
 /// Levenshtein distance, for "did you mean" hints.
 fn edit_distance(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();
@@ -272,6 +321,9 @@ impl Interpreter {
             return Err(Diagnostic::error(span.clone(), format!("`{body}` is not a body"))
                 .with_help("declare it with BODIES"));
         };
+        if let [Expr { kind: ExprKind::Call { name, args: dims }, span: shape_span }] = args {
+            return self.inertia_by_shape(b, name, dims, shape_span);
+        }
         if args.len() != 3 && args.len() != 6 {
             return Err(Diagnostic::error(
                 span.clone(),
