@@ -1,3 +1,12 @@
-//! gyro-sim: integrators, scenes and outputs for models derived with kane-model.
+//! gyro-sim: integrate models derived with kane-model, from scene files to CSV and plots.
 //!
-//! Not implemented yet: see the code-generation and simulation issue.
+//! - [`ode`]: the [`ode::System`] trait, tableaux as data, explicit Runge-Kutta integration.
+//! - [`models`]: the models compiled from model files at build time (`kane_derive::model!`).
+//! - [`scene`]: TOML scenes; [`run`]: running one; [`output`]: CSV and PNG.
+#![warn(missing_docs)]
+
+pub mod models;
+pub mod ode;
+pub mod output;
+pub mod run;
+pub mod scene;

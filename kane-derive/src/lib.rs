@@ -1,3 +1,42 @@
-//! Procedural macros that expand model files into Rust modules (see issue: code generation).
+//! `model!("path/to/model.al")`: expands a model file into its generated module items.
 //!
-//! This crate stays a thin shell over `kane-model`; the `model!` macro is not implemented yet.
+//! A thin shell: it reads the file (relative to the calling crate's manifest), asks
+//! `kane_model` for the code, and turns any error into a compile error showing the model file's
+//! line. The file is included with `include_str!`, so editing it triggers a rebuild.
+//!
+//! ```ignore
+//! mod gimbal {
+//!     kane_derive::model!("../kane-model/models/gimbal_gyroscope.al");
+//! }
+//! ```
+
+use proc_macro::TokenStream;
+use quote::quote;
+use syn::{parse_macro_input, LitStr};
+
+/// Expands a model file into `Params`, `rhs`, `outputs`, state indices and a `Model` type.
+#[proc_macro]
+pub fn model(input: TokenStream) -> TokenStream {
+    let path = parse_macro_input!(input as LitStr);
+    expand(&path).unwrap_or_else(syn::Error::into_compile_error).into()
+}
+
+fn expand(lit: &LitStr) -> syn::Result<proc_macro2::TokenStream> {
+    let dir = std::env::var("CARGO_MANIFEST_DIR").unwrap_or_else(|_| ".".into());
+    let path = std::path::Path::new(&dir).join(lit.value());
+    let shown = lit.value();
+    let src = std::fs::read_to_string(&path).map_err(|e| {
+        syn::Error::new(lit.span(), format!("cannot read model file {}: {e}", path.display()))
+    })?;
+    let mut loaded =
+        kane_model::lang::load(&shown, &src).map_err(|r| syn::Error::new(lit.span(), r.to_string()))?;
+    let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
+    let emitted = kane_model::codegen::emit(&mut loaded, &name)
+        .map_err(|e| syn::Error::new(lit.span(), format!("{shown}: {e}")))?;
+    let tokens = emitted.tokens;
+    let full = path.display().to_string();
+    Ok(quote! {
+        #tokens
+        const _: &str = include_str!(#full);
+    })
+}

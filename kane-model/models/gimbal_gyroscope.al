@@ -61,4 +61,7 @@ INPUT M1 = 2, M2 = 2, M3 = 50, Y = 0, Z = 10                           % 40
 INPUT Q1 = 0, Q2 = 0, Q3 = 0, U1 = 0, U2 = 0, U3 = 10                  % 41
 INPUT TFINAL = 5, INTEGSTP = .05, ABSERR = 1.0E-07, RELERR = 1.0E-07   % 42
 OUTPUT T, Q1, Q2, Q3, U1, U2, U3                                       % 43
+AP = MAG(A_P_A>)          % added: |a_P|, which the paper plots on the right of Figures 3-5
+UNITS AP = M/SEC^2        % added
+OUTPUT AP                 % added
 CODE DYNAMICS() PHASE3.M, SUBS                                         % 44

@@ -7,15 +7,24 @@
 //! - [`dual`]: dual numbers implementing `num_traits::Float`, for exact derivatives.
 #![warn(missing_docs)]
 
+pub mod codegen;
 pub mod dual;
 pub mod expr;
 pub mod lang;
 pub mod mechanics;
 pub mod models;
+pub mod runtime;
 
 /// Runtime helpers named by generated code; not a stable API.
 #[doc(hidden)]
 pub mod __private {
+    pub use num_traits;
+
+    /// `x` as `T` (a float type holds every f64 value, or NaN).
+    pub fn cast<T: num_traits::Float>(x: f64) -> T {
+        T::from(x).unwrap_or_else(T::nan)
+    }
+
     /// Sign of `x`: -1, 0 or 1.
     pub fn sign<T: num_traits::Float>(x: T) -> T {
         crate::expr::Func::Sign.apply(x)

@@ -44,6 +44,17 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Emit the model's Rust module (formatted), with --stats the operation counts.
+    Gen {
+        /// The model file.
+        file: PathBuf,
+        /// Where to write the module (standard output when absent).
+        #[arg(short, long)]
+        out: Option<PathBuf>,
+        /// Print the operation counts of rhs and outputs.
+        #[arg(long)]
+        stats: bool,
+    },
     /// Check hand-derived equations (U1' = ... or ZERO[1] = ...) against the derived ones.
     Compare {
         /// The model file.
@@ -226,6 +237,26 @@ fn run(command: Command) -> Result<(), String> {
                 for (name, v) in names(&m, &e.speeds).iter().zip(udot.iter()) {
                     println!("{name}' = {v}");
                 }
+            }
+            Ok(())
+        }
+        Command::Gen { file, out, stats } => {
+            let mut m = load(&file)?;
+            let name = file.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
+            let emitted =
+                kane_model::codegen::emit(&mut m, &name).map_err(|e| format!("{}: {e}", file.display()))?;
+            let source = kane_model::codegen::to_source(&emitted)?;
+            match out {
+                Some(path) => {
+                    // Written to a temporary file, then renamed: never a half-written module.
+                    let tmp = path.with_extension("rs.tmp");
+                    std::fs::write(&tmp, &source).map_err(|e| format!("{}: {e}", tmp.display()))?;
+                    std::fs::rename(&tmp, &path).map_err(|e| format!("{}: {e}", path.display()))?;
+                }
+                None => print!("{source}"),
+            }
+            if stats {
+                eprintln!("rhs: {} operations; outputs: {} more", emitted.op_counts.0, emitted.op_counts.1);
             }
             Ok(())
         }

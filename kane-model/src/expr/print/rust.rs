@@ -47,7 +47,7 @@ impl Syntax for Rust<'_, '_> {
         let lit = Literal::f64_suffixed(n.to_f64());
         match &self.style.scalar {
             Scalar::F64 => quote!(#lit),
-            Scalar::Generic(t) => quote!(#t::from(#lit).unwrap()),
+            Scalar::Generic(t) => quote!(::kane_model::__private::cast::<#t>(#lit)),
         }
     }
     fn symbol(&mut self, s: SymbolId) -> TokenStream {
@@ -151,6 +151,6 @@ mod tests {
             symbol: &f,
             names: None,
         };
-        assert_eq!(ar.to_rust(h, &g).to_string(), "y / T :: from (2f64) . unwrap ()");
+        assert_eq!(ar.to_rust(h, &g).to_string(), "y / :: kane_model :: __private :: cast :: < T > (2f64)");
     }
 }

@@ -1,0 +1,49 @@
+//! Results: a table of outputs, written as CSV and plotted, never half-written.
+
+mod csv_file;
+mod plot;
+
+pub use csv_file::write_csv;
+pub use plot::write_plot;
+
+/// One column of results.
+#[derive(Clone, Debug)]
+pub struct Column {
+    /// CSV header, name and unit: `q1_deg`.
+    pub name: String,
+    /// The quantity's name in the model.
+    pub label: String,
+    /// Values are written in degrees.
+    pub degrees: bool,
+    /// The quantity is an angle.
+    pub angle: bool,
+    /// The quantity is a model output (not a state).
+    pub output: bool,
+}
+
+/// Rows of `t` and the columns.
+#[derive(Clone, Debug)]
+pub struct Table {
+    /// Title for plots.
+    pub title: String,
+    /// The columns after `t`.
+    pub columns: Vec<Column>,
+    /// Each row: `t`, then one value per column.
+    pub rows: Vec<Vec<f64>>,
+}
+
+/// Writes `bytes` to `path` through a temporary file in the same folder and a rename.
+pub(crate) fn write_atomically(
+    path: &std::path::Path,
+    write: impl FnOnce(&std::path::Path) -> Result<(), String>,
+) -> Result<(), String> {
+    // The temporary keeps the real extension last: encoders choose the format from it.
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("output");
+    let tmp = path.with_file_name(format!(".partial-{name}"));
+    let result =
+        write(&tmp).and_then(|_| std::fs::rename(&tmp, path).map_err(|e| format!("{}: {e}", path.display())));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}

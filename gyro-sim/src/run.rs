@@ -1,0 +1,277 @@
+//! Running a scene: parameters and initial state set with units, integration, outputs computed
+//! only at output times and only those asked for, CSV and plot written atomically.
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use kane_model::runtime::GeneratedModel;
+use thiserror::Error;
+
+use crate::models::{gimbal_gyroscope, heavy_top};
+use crate::ode::{self, tableau, Method, OdeError, Stats, System, Tolerances};
+use crate::output::{self, Column, Table};
+use crate::scene::{Scene, SceneError, Value};
+
+/// Why a run failed.
+#[derive(Debug, Error)]
+pub enum RunError {
+    /// The scene asks for something the model does not have.
+    #[error("{0}")]
+    Scene(#[from] SceneError),
+    /// The integration stopped.
+    #[error("integration failed: {0}")]
+    Ode(String),
+    /// Writing the results failed.
+    #[error("{0}")]
+    Output(String),
+}
+
+/// What a run did.
+#[derive(Clone, Debug)]
+pub struct RunSummary {
+    /// Integrator statistics.
+    pub stats: Stats,
+    /// Wall time of the integration (outputs included, files excluded).
+    pub wall: Duration,
+    /// The CSV written.
+    pub csv: Option<PathBuf>,
+    /// The plot written.
+    pub plot: Option<PathBuf>,
+    /// The table of results.
+    pub table: Table,
+}
+
+/// A generated model with parameters, as an ODE system.
+pub struct ModelSystem<M: GeneratedModel> {
+    /// Parameter values.
+    pub params: M::Params,
+}
+
+impl<M: GeneratedModel> System for ModelSystem<M> {
+    fn dim(&self) -> usize {
+        M::STATE_NAMES.len()
+    }
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        M::rhs(t, y, &self.params, dy)
+    }
+}
+
+/// Runs a scene; with `out_dir` the CSV and the plot are written there.
+pub fn run(scene: &Scene, out_dir: Option<&Path>) -> Result<RunSummary, RunError> {
+    match scene.model.as_str() {
+        n if n == gimbal_gyroscope::Model::NAME => run_model::<gimbal_gyroscope::Model>(scene, out_dir),
+        n if n == heavy_top::Model::NAME => run_model::<heavy_top::Model>(scene, out_dir),
+        other => Err(RunError::Scene(scene.error_at(
+            0..0,
+            format!("unknown model `{other}`"),
+            "see the compiled models",
+        ))),
+    }
+}
+
+fn is_angle(unit: &str) -> bool {
+    matches!(unit.to_ascii_uppercase().as_str(), "DEG" | "RAD")
+}
+
+/// A scene value in the model's internal units (radians for angles).
+fn internal(
+    scene: &Scene,
+    name: &str,
+    v: &Value,
+    model_unit: &str,
+    span: &std::ops::Range<usize>,
+) -> Result<f64, SceneError> {
+    let mu = model_unit.to_ascii_uppercase();
+    let given = v.unit.as_deref().map(|u| u.to_ascii_uppercase().replace(' ', ""));
+    let deg = std::f64::consts::PI / 180.0;
+    let wrong = |u: &str| {
+        scene.error_at(
+            span.clone(),
+            format!(
+                "`{name}` is in {}, not {u}",
+                if mu.is_empty() { "no unit".to_string() } else { model_unit.to_string() }
+            ),
+            &format!(
+                "write a plain number (in {}) or give a compatible unit",
+                if mu.is_empty() { "the model's units" } else { model_unit }
+            ),
+        )
+    };
+    Ok(match (mu.as_str(), given.as_deref()) {
+        ("DEG", None | Some("DEG")) => v.number * deg,
+        ("DEG" | "RAD", Some("RAD")) | ("RAD", None) => v.number,
+        ("RAD", Some("DEG")) => v.number * deg,
+        ("RAD/SEC", None | Some("RAD/S" | "RAD/SEC")) => v.number,
+        ("RAD/SEC", Some("DEG/S" | "DEG/SEC")) => v.number * deg,
+        (_, None) => v.number,
+        (m, Some(u)) if m == u.replace("SEC", "S") || m.replace("SEC", "S") == u.replace("SEC", "S") => {
+            v.number
+        }
+        (_, Some(u)) => return Err(wrong(u)),
+    })
+}
+
+/// `q1` + `DEG` -> `q1_deg`; `AP` + `M/SEC^2` -> `ap_m_per_s2`.
+pub fn column_name(name: &str, unit: &str) -> String {
+    let slug = unit
+        .to_ascii_lowercase()
+        .replace("sec", "s")
+        .replace('/', "_per_")
+        .replace(['^', ' '], "")
+        .replace('*', "_");
+    if slug.is_empty() {
+        name.to_ascii_lowercase()
+    } else {
+        format!("{}_{slug}", name.to_ascii_lowercase())
+    }
+}
+
+enum Pick {
+    State(usize),
+    Output(usize),
+}
+
+fn run_model<M: GeneratedModel>(scene: &Scene, out_dir: Option<&Path>) -> Result<RunSummary, RunError> {
+    let mut params = M::Params::default();
+    for (name, v, span) in &scene.parameters {
+        let x = internal(scene, name, v, "", span)?;
+        if !M::set_param(&mut params, name, x) {
+            return Err(scene
+                .error_at(
+                    span.clone(),
+                    format!("`{name}` is not a parameter of {}", M::NAME),
+                    &format!("parameters: {}", M::PARAM_NAMES.join(", ")),
+                )
+                .into());
+        }
+    }
+    if let Some(p) = M::PARAM_NAMES.iter().find(|p| !M::param(&params, p).is_some_and(f64::is_finite)) {
+        return Err(scene
+            .error_at(
+                0..0,
+                format!("parameter `{p}` has no value"),
+                "set it under [parameters] (the model file's INPUT gives none)",
+            )
+            .into());
+    }
+    let mut y = M::initial_state();
+    for (name, v, span) in &scene.initial {
+        let Some(i) = M::STATE_NAMES.iter().position(|s| s.eq_ignore_ascii_case(name)) else {
+            return Err(scene
+                .error_at(
+                    span.clone(),
+                    format!("`{name}` is not a state of {}", M::NAME),
+                    &format!("states: {}", M::STATE_NAMES.join(", ")),
+                )
+                .into());
+        };
+        y[i] = internal(scene, name, v, M::STATE_UNITS[i], span)?;
+    }
+    if let Some(i) = y.iter().position(|v| !v.is_finite()) {
+        return Err(scene
+            .error_at(
+                0..0,
+                format!("state `{}` has no initial value", M::STATE_NAMES[i]),
+                "set it under [initial]",
+            )
+            .into());
+    }
+    // What to write: the states and outputs asked for (all when none are named).
+    let mut picks: Vec<(Pick, Column)> = Vec::new();
+    let mut add = |p: Pick, name: &str, unit: &str| {
+        let output = matches!(p, Pick::Output(_));
+        let column = Column {
+            name: column_name(name, unit),
+            label: name.to_string(),
+            degrees: unit.eq_ignore_ascii_case("DEG"),
+            angle: is_angle(unit),
+            output,
+        };
+        picks.push((p, column));
+    };
+    if scene.outputs.is_empty() {
+        for (i, s) in M::STATE_NAMES.iter().enumerate() {
+            add(Pick::State(i), s, M::STATE_UNITS[i]);
+        }
+        for (j, o) in M::OUTPUT_NAMES.iter().enumerate() {
+            add(Pick::Output(j), o, M::OUTPUT_UNITS[j]);
+        }
+    } else {
+        for (name, span) in &scene.outputs {
+            if let Some(i) = M::STATE_NAMES.iter().position(|s| s.eq_ignore_ascii_case(name)) {
+                add(Pick::State(i), M::STATE_NAMES[i], M::STATE_UNITS[i]);
+            } else if let Some(j) = M::OUTPUT_NAMES.iter().position(|s| s.eq_ignore_ascii_case(name)) {
+                add(Pick::Output(j), M::OUTPUT_NAMES[j], M::OUTPUT_UNITS[j]);
+            } else {
+                let mut known: Vec<&str> = M::STATE_NAMES.to_vec();
+                known.extend(M::OUTPUT_NAMES);
+                return Err(scene
+                    .error_at(
+                        span.clone(),
+                        format!("`{name}` is neither a state nor an output of {}", M::NAME),
+                        &format!("known: {}", known.join(", ")),
+                    )
+                    .into());
+            }
+        }
+    }
+    let needs_outputs = picks.iter().any(|(p, _)| matches!(p, Pick::Output(_)));
+    // Output times as i * step (never by repeated addition); the last one is t_final exactly.
+    let n = (scene.t_final / scene.output_step * (1.0 + 1e-12)).floor() as usize;
+    let mut times: Vec<f64> = (0..=n).map(|i| i as f64 * scene.output_step).collect();
+    if (times[n] - scene.t_final).abs() > 1e-12 * scene.t_final {
+        times.push(scene.t_final);
+    } else {
+        times[n] = scene.t_final;
+    }
+    let method = match scene.integrator.method.as_str() {
+        "rk4" => Method::Fixed(&tableau::RK4, scene.integrator.step),
+        _ => Method::Adaptive(
+            &tableau::DOPRI5,
+            Tolerances { rtol: scene.integrator.rtol, atol: scene.integrator.atol },
+        ),
+    };
+    let sys = ModelSystem::<M> { params: params.clone() };
+    let mut rows: Vec<Vec<f64>> = Vec::with_capacity(times.len());
+    let mut outs = vec![0.0; M::OUTPUT_NAMES.len()];
+    let start = Instant::now();
+    let stats = ode::integrate(&sys, 0.0, &y, &times, method, |t, y| {
+        if needs_outputs {
+            M::outputs(t, y, &params, &mut outs);
+        }
+        let mut row = Vec::with_capacity(picks.len() + 1);
+        row.push(t);
+        for (p, col) in &picks {
+            let v = match p {
+                Pick::State(i) => y[*i],
+                Pick::Output(j) => outs[*j],
+            };
+            if !v.is_finite() {
+                return Err(format!("{} is not finite ({v}) at t = {t}", col.label));
+            }
+            row.push(if col.degrees { v.to_degrees() } else { v });
+        }
+        rows.push(row);
+        Ok(())
+    })
+    .map_err(|e| match e {
+        OdeError::NonFinite { time, index, value } => {
+            RunError::Ode(format!("state {} is not finite ({value}) at t = {time}", M::STATE_NAMES[index]))
+        }
+        other => RunError::Ode(other.to_string()),
+    })?;
+    let wall = start.elapsed();
+    let table = Table { title: scene.title.clone(), columns: picks.into_iter().map(|p| p.1).collect(), rows };
+    let (csv, plot) = match out_dir {
+        Some(dir) => {
+            std::fs::create_dir_all(dir).map_err(|e| RunError::Output(format!("{}: {e}", dir.display())))?;
+            let csv = dir.join("trajectory.csv");
+            output::write_csv(&table, &csv).map_err(RunError::Output)?;
+            let plot = dir.join("trajectory.png");
+            output::write_plot(&table, &plot).map_err(RunError::Output)?;
+            (Some(csv), Some(plot))
+        }
+        None => (None, None),
+    };
+    Ok(RunSummary { stats, wall, csv, plot, table })
+}

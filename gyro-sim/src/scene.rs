@@ -1,0 +1,243 @@
+//! Scenes: TOML files naming a model, its parameters, the initial state (with units), the time
+//! span, the integrator and the outputs wanted.
+
+use std::collections::BTreeMap;
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use serde::Deserialize;
+use toml::Spanned;
+
+/// A scene, validated.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    /// The file it came from.
+    pub path: PathBuf,
+    /// Its text (for error locations).
+    pub source: String,
+    /// A title for plots.
+    pub title: String,
+    /// The model's name.
+    pub model: String,
+    /// Parameters to set: name, value in the model's units, where.
+    pub parameters: Vec<(String, Value, std::ops::Range<usize>)>,
+    /// Initial values to set.
+    pub initial: Vec<(String, Value, std::ops::Range<usize>)>,
+    /// End time (start is 0).
+    pub t_final: f64,
+    /// Output step.
+    pub output_step: f64,
+    /// Outputs asked for (state or output names); empty means all.
+    pub outputs: Vec<(String, std::ops::Range<usize>)>,
+    /// Integrator.
+    pub integrator: Integrator,
+}
+
+/// A number, with the unit it was given in.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Value {
+    /// The number as written.
+    pub number: f64,
+    /// The unit written after it, if any (`deg`, `rad/s`, ...).
+    pub unit: Option<String>,
+}
+
+/// Integrator settings.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Integrator {
+    /// `dopri5` or `rk4`.
+    pub method: String,
+    /// Relative tolerance (adaptive methods).
+    pub rtol: f64,
+    /// Absolute tolerance (adaptive methods).
+    pub atol: f64,
+    /// Step (fixed-step methods).
+    pub step: f64,
+}
+
+/// A scene that cannot be used: where and why, and what to do.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneError {
+    /// The file.
+    pub file: String,
+    /// 1-based line.
+    pub line: usize,
+    /// 1-based column.
+    pub column: usize,
+    /// What is wrong.
+    pub message: String,
+    /// What to do.
+    pub help: String,
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(f, "{}:{}:{}: error: {}", self.file, self.line, self.column, self.message)?;
+        write!(f, "  help: {}", self.help)
+    }
+}
+
+impl std::error::Error for SceneError {}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    title: Option<String>,
+    model: Option<Spanned<String>>,
+    t_final: Option<Spanned<f64>>,
+    output_step: Option<Spanned<f64>>,
+    outputs: Option<Vec<Spanned<String>>>,
+    integrator: Option<IntegratorFile>,
+    parameters: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
+    initial: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct IntegratorFile {
+    method: Option<Spanned<String>>,
+    rtol: Option<Spanned<f64>>,
+    atol: Option<Spanned<f64>>,
+    step: Option<Spanned<f64>>,
+}
+
+fn line_col(src: &str, offset: usize) -> (usize, usize) {
+    let before = &src[..offset.min(src.len())];
+    let line = before.matches('\n').count() + 1;
+    let col = before.rfind('\n').map_or(before.len(), |i| before.len() - i - 1) + 1;
+    (line, col)
+}
+
+impl Scene {
+    /// Reads and validates a scene file.
+    pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        let file = path.display().to_string();
+        let source = std::fs::read_to_string(path).map_err(|e| SceneError {
+            file: file.clone(),
+            line: 1,
+            column: 1,
+            message: format!("cannot read the scene: {e}"),
+            help: "give the path of a scene .toml file, e.g. gyro-sim/scenes/paper/trial3.toml".into(),
+        })?;
+        Scene::parse(&file, &source)
+    }
+
+    /// Parses and validates a scene from its text.
+    pub fn parse(file: &str, source: &str) -> Result<Scene, SceneError> {
+        let err = |span: std::ops::Range<usize>, message: String, help: &str| {
+            let (line, column) = line_col(source, span.start);
+            SceneError { file: file.to_string(), line, column, message, help: help.to_string() }
+        };
+        let raw: SceneFile = toml::from_str(source).map_err(|e| {
+            let span = e.span().unwrap_or(0..0);
+            err(
+                span,
+                e.message().to_string(),
+                "keys are title, model, t_final, output_step, outputs, [integrator], [parameters], [initial]",
+            )
+        })?;
+        let model = raw.model.ok_or_else(|| {
+            err(
+                0..0,
+                "missing `model`".into(),
+                "add model = \"gimbal_gyroscope\" (or another compiled model)",
+            )
+        })?;
+        if !crate::models::MODEL_NAMES.contains(&model.get_ref().as_str()) {
+            return Err(err(
+                model.span(),
+                format!("unknown model `{}`", model.get_ref()),
+                &format!("the compiled models are: {}", crate::models::MODEL_NAMES.join(", ")),
+            ));
+        }
+        let t_final = raw
+            .t_final
+            .ok_or_else(|| err(0..0, "missing `t_final`".into(), "add t_final = 5.0 (seconds)"))?;
+        if !(*t_final.get_ref() > 0.0 && t_final.get_ref().is_finite()) {
+            return Err(err(
+                t_final.span(),
+                format!("t_final must be positive, not {}", t_final.get_ref()),
+                "the simulation starts at t = 0; give a positive end time",
+            ));
+        }
+        let output_step = raw
+            .output_step
+            .ok_or_else(|| err(0..0, "missing `output_step`".into(), "add output_step = 0.05"))?;
+        if !(*output_step.get_ref() > 0.0 && *output_step.get_ref() <= *t_final.get_ref()) {
+            return Err(err(
+                output_step.span(),
+                format!("output_step must be in (0, t_final], not {}", output_step.get_ref()),
+                "give a positive step no longer than t_final",
+            ));
+        }
+        let integ =
+            raw.integrator.unwrap_or(IntegratorFile { method: None, rtol: None, atol: None, step: None });
+        let method = integ.method.as_ref().map_or("dopri5".to_string(), |m| m.get_ref().to_ascii_lowercase());
+        if !["dopri5", "rk4"].contains(&method.as_str()) {
+            let span = integ.method.as_ref().map_or(0..0, |m| m.span());
+            return Err(err(
+                span,
+                format!("unknown integrator `{method}`"),
+                "methods: dopri5 (adaptive), rk4 (fixed step)",
+            ));
+        }
+        let positive = |v: &Option<Spanned<f64>>, default: f64, what: &str| -> Result<f64, SceneError> {
+            match v {
+                Some(s) if !(*s.get_ref() > 0.0 && s.get_ref().is_finite()) => Err(err(
+                    s.span(),
+                    format!("{what} must be positive, not {}", s.get_ref()),
+                    &format!("give a positive {what}"),
+                )),
+                Some(s) => Ok(*s.get_ref()),
+                None => Ok(default),
+            }
+        };
+        let integrator = Integrator {
+            method,
+            rtol: positive(&integ.rtol, 1e-9, "rtol")?,
+            atol: positive(&integ.atol, 1e-9, "atol")?,
+            step: positive(&integ.step, output_step.get_ref() / 10.0, "step")?,
+        };
+        let values = |table: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>| -> Result<Vec<(String, Value, std::ops::Range<usize>)>, SceneError> {
+            let mut out = Vec::new();
+            for (k, v) in table.unwrap_or_default() {
+                let span = v.span();
+                let value = match v.get_ref() {
+                    toml::Value::Float(x) => Value { number: *x, unit: None },
+                    toml::Value::Integer(i) => Value { number: *i as f64, unit: None },
+                    toml::Value::String(s) => {
+                        let mut parts = s.split_whitespace();
+                        let number: f64 = parts.next().and_then(|n| n.parse().ok()).ok_or_else(|| {
+                            err(span.clone(), format!("`{s}` is not a number with a unit"), "write a number, or a string like \"30 deg\" or \"10 rad/s\"")
+                        })?;
+                        let unit: String = parts.collect::<Vec<_>>().join(" ");
+                        Value { number, unit: (!unit.is_empty()).then_some(unit) }
+                    }
+                    other => return Err(err(span, format!("`{other}` is not a number"), "write a number, or a string like \"30 deg\"")),
+                };
+                out.push((k.get_ref().clone(), value, span));
+            }
+            Ok(out)
+        };
+        let outputs =
+            raw.outputs.unwrap_or_default().into_iter().map(|o| (o.get_ref().clone(), o.span())).collect();
+        Ok(Scene {
+            path: PathBuf::from(file),
+            source: source.to_string(),
+            title: raw.title.unwrap_or_else(|| model.get_ref().clone()),
+            model: model.into_inner(),
+            parameters: values(raw.parameters)?,
+            initial: values(raw.initial)?,
+            t_final: t_final.into_inner(),
+            output_step: output_step.into_inner(),
+            outputs,
+            integrator,
+        })
+    }
+
+    /// An error at a span of this scene's text.
+    pub fn error_at(&self, span: std::ops::Range<usize>, message: String, help: &str) -> SceneError {
+        let (line, column) = line_col(&self.source, span.start);
+        SceneError { file: self.path.display().to_string(), line, column, message, help: help.to_string() }
+    }
+}

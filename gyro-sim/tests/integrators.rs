@@ -1,0 +1,80 @@
+//! The integrators: observed order by step halving, tolerance proportionality, and errors for
+//! a solution that blows up.
+
+use gyro_sim::ode::{integrate, tableau, Method, OdeError, System, Tolerances};
+
+/// y1' = y2, y2' = -y1: y = (sin t, cos t).
+struct Oscillator;
+
+impl System for Oscillator {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn rhs(&self, _: f64, y: &[f64], dy: &mut [f64]) {
+        dy[0] = y[1];
+        dy[1] = -y[0];
+    }
+}
+
+fn error_at_one(method: Method) -> f64 {
+    let mut last = [0.0; 2];
+    integrate(&Oscillator, 0.0, &[0.0, 1.0], &[1.0], method, |_, y| {
+        last.copy_from_slice(y);
+        Ok(())
+    })
+    .unwrap();
+    ((last[0] - 1f64.sin()).powi(2) + (last[1] - 1f64.cos()).powi(2)).sqrt()
+}
+
+#[test]
+fn observed_order_matches_each_tableau() {
+    for (tab, order) in [(&tableau::RK4, 4.0), (&tableau::DOPRI5, 5.0)] {
+        let e1 = error_at_one(Method::Fixed(tab, 0.1));
+        let e2 = error_at_one(Method::Fixed(tab, 0.05));
+        let observed = (e1 / e2).log2();
+        assert!((observed - order).abs() < 0.3, "{}: observed order {observed}", tab.name);
+    }
+}
+
+#[test]
+fn adaptive_error_follows_the_tolerance() {
+    let mut last = 1.0;
+    for tol in [1e-6, 1e-8, 1e-10] {
+        let e = error_at_one(Method::Adaptive(&tableau::DOPRI5, Tolerances { rtol: tol, atol: tol }));
+        assert!(e < 50.0 * tol, "tol {tol}: error {e}");
+        assert!(e < last);
+        last = e;
+    }
+}
+
+/// y' = y^2, y(0) = 1: y = 1 / (1 - t) blows up at t = 1.
+struct BlowUp;
+
+impl System for BlowUp {
+    fn dim(&self) -> usize {
+        1
+    }
+    fn rhs(&self, _: f64, y: &[f64], dy: &mut [f64]) {
+        dy[0] = y[0] * y[0];
+    }
+}
+
+#[test]
+fn blow_up_is_an_error_not_a_hang() {
+    let r = integrate(
+        &BlowUp,
+        0.0,
+        &[1.0],
+        &[2.0],
+        Method::Adaptive(&tableau::DOPRI5, Tolerances { rtol: 1e-8, atol: 1e-8 }),
+        |_, _| Ok(()),
+    );
+    match r {
+        Err(OdeError::StepSizeUnderflow { time, .. }) | Err(OdeError::NonFinite { time, .. }) => {
+            assert!((time - 1.0).abs() < 1e-2, "stopped at {time}")
+        }
+        other => panic!("expected an error near t = 1, got {other:?}"),
+    }
+    let r = integrate(&BlowUp, 0.0, &[1.0], &[2.0], Method::Fixed(&tableau::RK4, 0.01), |_, _| Ok(()));
+    assert!(matches!(r, Err(OdeError::NonFinite { .. })), "{r:?}");
+}

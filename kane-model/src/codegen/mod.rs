@@ -1,0 +1,352 @@
+//! Code generation: Kane's equations become a Rust module with a straight-line `rhs`, generic
+//! over `num_traits::Float`, and an `outputs` function evaluated only at output times.
+//!
+//! `rhs` computes the CSE'd entries of `M` and `f`, solves `M u' = f` with an `LDL^T`
+//! factorisation unrolled at generation time (structural zeros of `M` skipped), and writes
+//! `y' = (q', u')`. The same model gives byte-identical code.
+// Symmetric-matrix code reads clearest with two indices (M[i][j] and M[j][i]).
+#![allow(clippy::needless_range_loop)]
+
+mod ldlt;
+mod names;
+
+use proc_macro2::{Ident, Span, TokenStream};
+use quote::{format_ident, quote};
+use rustc_hash::FxHashMap;
+use thiserror::Error;
+
+use crate::expr::{Cse, ExprId, RustStyle, Scalar, SymbolId, SymbolKind, Tape};
+use crate::lang::{LoadedModel, Value};
+
+pub use names::rust_ident;
+
+/// Why a model cannot be turned into code.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum CodegenError {
+    /// The model file does not call KANE().
+    #[error("the model derives no equations: call KANE() in the model file")]
+    NoEquations,
+    /// A symbol the equations need is neither a state, a parameter nor time.
+    #[error("`{0}` is a time-dependent quantity that is not a state; specified functions are not supported in generated code")]
+    UnsupportedSymbol(String),
+    /// An OUTPUT name that is not a scalar the model defines.
+    #[error("OUTPUT `{0}` is not a state or a scalar defined in the model")]
+    UnknownOutput(String),
+    /// An expression operation failed.
+    #[error(transparent)]
+    Expr(#[from] crate::expr::ExprError),
+    /// A mechanics operation failed.
+    #[error(transparent)]
+    Mechanics(#[from] crate::mechanics::MechanicsError),
+}
+
+/// Generated code and what it costs.
+#[derive(Clone, Debug)]
+pub struct Emitted {
+    /// The module's items.
+    pub tokens: TokenStream,
+    /// Arithmetic operations in `rhs` (equations and solve) and in `outputs` (beyond `rhs`).
+    pub op_counts: (usize, usize),
+    /// A one-line description for the module's documentation.
+    pub doc: String,
+}
+
+/// Generates the items of a model module named `name` from a loaded model file.
+pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenError> {
+    let mut eqs = loaded.equations.clone().ok_or(CodegenError::NoEquations)?;
+    // Generated code runs many times: the collected form (terms grouped by state monomial) is
+    // worth its derivation cost.
+    loaded.model.simplify_equations(&mut eqs)?;
+    let states: Vec<SymbolId> = eqs.coordinates.iter().chain(&eqs.speeds).copied().collect();
+    let (nq, n) = (eqs.coordinates.len(), eqs.speeds.len());
+
+    // Outputs: OUTPUT names other than T and the states, each a scalar of the model.
+    let mut outputs: Vec<(String, ExprId, String)> = Vec::new();
+    for (oname, _) in &loaded.outputs {
+        let upper = oname.to_ascii_uppercase();
+        if upper == "T"
+            || states.iter().any(|s| loaded.model.ar.symbol_info(*s).name.eq_ignore_ascii_case(oname))
+        {
+            continue;
+        }
+        match loaded.value(oname) {
+            Some(Value::Scalar(e)) => {
+                let unit = loaded.units.get(&upper).cloned().unwrap_or_default();
+                outputs.push((oname.clone(), e, unit));
+            }
+            _ => return Err(CodegenError::UnknownOutput(oname.clone())),
+        }
+    }
+
+    let ar = &mut loaded.model.ar;
+    let mut rhs_roots: Vec<ExprId> = Vec::new();
+    for i in 0..n {
+        for j in i..n {
+            rhs_roots.push(eqs.mass_matrix[i][j]);
+        }
+    }
+    rhs_roots.extend(&eqs.forcing);
+    rhs_roots.extend(&eqs.kinematics);
+    let out_roots: Vec<ExprId> = outputs.iter().map(|o| o.1).collect();
+
+    // Parameters: the constants the code reads, in declaration order.
+    let mut all = rhs_roots.clone();
+    all.extend(&out_roots);
+    let udot: Vec<SymbolId> = eqs.speed_derivatives.clone();
+    let mut params: Vec<SymbolId> = Vec::new();
+    for s in ar.free_symbols(&all) {
+        match ar.symbol_info(s).kind {
+            SymbolKind::Constant => params.push(s),
+            SymbolKind::Time => {}
+            _ if states.contains(&s) || udot.contains(&s) => {}
+            _ => return Err(CodegenError::UnsupportedSymbol(ar.symbol_info(s).name.clone())),
+        }
+    }
+    let ident_of = |s: SymbolId| -> Ident { rust_ident(&ar.symbol_info(s).name) };
+    let state_idents: Vec<Ident> = states.iter().map(|s| ident_of(*s)).collect();
+    let param_idents: Vec<Ident> = params.iter().map(|s| ident_of(*s)).collect();
+    let udot_idents: Vec<Ident> = udot.iter().map(|s| ident_of(*s)).collect();
+
+    let t_ident = format_ident!("T");
+    let symbol_tokens = |s: SymbolId| -> TokenStream {
+        match ar.symbol_info(s).kind {
+            SymbolKind::Time => quote!(t),
+            _ => {
+                let id = ident_of(s);
+                quote!(#id)
+            }
+        }
+    };
+
+    // rhs: parameters and states as locals, shared subexpressions, M and f, the solve, y'.
+    let (rhs_body, rhs_ops) = {
+        let cse = Cse::new(ar, &rhs_roots);
+        let names: FxHashMap<ExprId, TokenStream> = cse
+            .temps
+            .iter()
+            .enumerate()
+            .map(|(i, e)| {
+                (*e, {
+                    let x = format_ident!("__x{}", i);
+                    quote!(#x)
+                })
+            })
+            .collect();
+        let style = RustStyle {
+            scalar: Scalar::Generic(t_ident.clone()),
+            symbol: &symbol_tokens,
+            names: Some(&names),
+        };
+        let mut body = TokenStream::new();
+        for (i, e) in cse.temps.iter().enumerate() {
+            let x = format_ident!("__x{}", i);
+            let v = ar.to_rust(*e, &style);
+            body.extend(quote!(let #x: #t_ident = #v;));
+        }
+        let mut k = 0;
+        let mut m_tokens: Vec<Vec<Option<TokenStream>>> = vec![vec![None; n]; n];
+        for i in 0..n {
+            for j in i..n {
+                let e = rhs_roots[k];
+                k += 1;
+                if ar.is_zero(e) {
+                    continue;
+                }
+                let id = format_ident!("__m{}_{}", i, j);
+                let v = names.get(&e).cloned().unwrap_or_else(|| ar.to_rust(e, &style));
+                body.extend(quote!(let #id: #t_ident = #v;));
+                m_tokens[i][j] = Some(quote!(#id));
+                m_tokens[j][i] = Some(quote!(#id));
+            }
+        }
+        let mut f_tokens = Vec::with_capacity(n);
+        for i in 0..n {
+            let e = rhs_roots[k];
+            k += 1;
+            let id = format_ident!("__f{}", i);
+            let v = names.get(&e).cloned().unwrap_or_else(|| ar.to_rust(e, &style));
+            body.extend(quote!(let #id: #t_ident = #v;));
+            f_tokens.push(quote!(#id));
+        }
+        let (solve, x, solve_ops) = ldlt::emit(&m_tokens, &f_tokens, &t_ident);
+        body.extend(solve);
+        for i in 0..nq {
+            let e = rhs_roots[k];
+            k += 1;
+            let v = names.get(&e).cloned().unwrap_or_else(|| ar.to_rust(e, &style));
+            body.extend(quote!(dy[#i] = #v;));
+        }
+        for (i, xi) in x.iter().enumerate() {
+            let idx = nq + i;
+            body.extend(quote!(dy[#idx] = #xi;));
+        }
+        let mut inputs: Vec<SymbolId> = states.clone();
+        inputs.extend(&params);
+        inputs.push(crate::expr::TIME);
+        let ops = Tape::compile(ar, &rhs_roots, &inputs).map(|t| t.op_count()).unwrap_or(0) + solve_ops;
+        (body, ops)
+    };
+
+    // outputs: y' from rhs, then the output expressions.
+    let (out_body, out_ops) = {
+        let cse = Cse::new(ar, &out_roots);
+        let names: FxHashMap<ExprId, TokenStream> = cse
+            .temps
+            .iter()
+            .enumerate()
+            .map(|(i, e)| {
+                (*e, {
+                    let x = format_ident!("__x{}", i);
+                    quote!(#x)
+                })
+            })
+            .collect();
+        let style = RustStyle {
+            scalar: Scalar::Generic(t_ident.clone()),
+            symbol: &symbol_tokens,
+            names: Some(&names),
+        };
+        let mut body = TokenStream::new();
+        for (i, e) in cse.temps.iter().enumerate() {
+            let x = format_ident!("__x{}", i);
+            let v = ar.to_rust(*e, &style);
+            body.extend(quote!(let #x: #t_ident = #v;));
+        }
+        for (i, e) in out_roots.iter().enumerate() {
+            let v = names.get(e).cloned().unwrap_or_else(|| ar.to_rust(*e, &style));
+            body.extend(quote!(out[#i] = #v;));
+        }
+        let mut inputs: Vec<SymbolId> = states.clone();
+        inputs.extend(&params);
+        inputs.extend(&udot);
+        inputs.push(crate::expr::TIME);
+        let ops = Tape::compile(ar, &out_roots, &inputs).map(|t| t.op_count()).unwrap_or(0);
+        (body, ops)
+    };
+
+    let ns = states.len();
+    let no = outputs.len();
+    let np = params.len();
+    let state_names: Vec<String> = states.iter().map(|s| ar.symbol_info(*s).name.clone()).collect();
+    let state_units: Vec<String> = state_names
+        .iter()
+        .map(|s| loaded.units.get(&s.to_ascii_uppercase()).cloned().unwrap_or_default())
+        .collect();
+    let state_consts: Vec<Ident> = state_names.iter().map(|s| names::const_ident(s)).collect();
+    let state_idx: Vec<usize> = (0..ns).collect();
+    let param_names: Vec<String> =
+        params.iter().map(|s| loaded.model.ar.symbol_info(*s).name.clone()).collect();
+    let param_defaults: Vec<f64> = param_names.iter().map(|p| loaded.input(p).unwrap_or(f64::NAN)).collect();
+    let initial: Vec<f64> = state_names.iter().map(|s| loaded.input(s).unwrap_or(f64::NAN)).collect();
+    let output_names: Vec<&String> = outputs.iter().map(|o| &o.0).collect();
+    let output_units: Vec<&String> = outputs.iter().map(|o| &o.2).collect();
+    let udot_idx: Vec<usize> = (nq..ns).collect();
+    let param_match: Vec<String> = param_names.iter().map(|p| p.to_ascii_uppercase()).collect();
+    let (rhs_ops_lit, out_ops_lit) = (rhs_ops, out_ops);
+    let doc = format!("Generated by kane-model from the model `{name}`: do not edit by hand.");
+    let defaults = param_defaults.iter().map(|v| nan_or(*v));
+    let initial_tokens = initial.iter().map(|v| nan_or(*v));
+    let name_lit = name.to_string();
+    let _ = Span::call_site();
+
+    let tokens = quote! {
+
+        /// Number of states: coordinates, then speeds.
+        pub const N_STATES: usize = #ns;
+        /// Number of outputs.
+        pub const N_OUTPUTS: usize = #no;
+        #(
+            /// Index of a state in `y`.
+            pub const #state_consts: usize = #state_idx;
+        )*
+
+        /// The model's parameters (defaults from the model file's INPUT; NaN where none).
+        #[derive(Clone, Debug, PartialEq)]
+        pub struct Params {
+            #(
+                /// A constant of the model.
+                pub #param_idents: f64,
+            )*
+        }
+
+        impl Default for Params {
+            fn default() -> Self {
+                Params { #( #param_idents: #defaults, )* }
+            }
+        }
+
+        /// `dy = f(t, y)`: the kinematic equations and `M u' = f` solved for `u'`.
+        #[allow(unused_variables, clippy::all)]
+        pub fn rhs<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, dy: &mut [T]) {
+            #( let #param_idents: T = ::kane_model::__private::cast::<T>(p.#param_idents); )*
+            #( let #state_idents: T = y[#state_idx]; )*
+            #rhs_body
+        }
+
+        /// The model's outputs at `(t, y)`.
+        #[allow(unused_variables, clippy::all)]
+        pub fn outputs<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, out: &mut [T]) {
+            let mut dy = [T::zero(); #ns];
+            rhs(t, y, p, &mut dy);
+            #( let #param_idents: T = ::kane_model::__private::cast::<T>(p.#param_idents); )*
+            #( let #state_idents: T = y[#state_idx]; )*
+            #( let #udot_idents: T = dy[#udot_idx]; )*
+            #out_body
+        }
+
+        /// The model as a [`::kane_model::runtime::GeneratedModel`].
+        #[derive(Clone, Copy, Debug, Default)]
+        pub struct Model;
+
+        impl ::kane_model::runtime::GeneratedModel for Model {
+            type Params = Params;
+            const NAME: &'static str = #name_lit;
+            const STATE_NAMES: &'static [&'static str] = &[#(#state_names),*];
+            const STATE_UNITS: &'static [&'static str] = &[#(#state_units),*];
+            const OUTPUT_NAMES: &'static [&'static str] = &[#(#output_names),*];
+            const OUTPUT_UNITS: &'static [&'static str] = &[#(#output_units),*];
+            const PARAM_NAMES: &'static [&'static str] = &[#(#param_names),*];
+            const OP_COUNTS: (usize, usize) = (#rhs_ops_lit, #out_ops_lit);
+            fn initial_state() -> Vec<f64> {
+                vec![#(#initial_tokens),*]
+            }
+            fn set_param(p: &mut Params, name: &str, value: f64) -> bool {
+                match name.to_ascii_uppercase().as_str() {
+                    #( #param_match => { p.#param_idents = value; true } )*
+                    _ => false,
+                }
+            }
+            fn param(p: &Params, name: &str) -> Option<f64> {
+                match name.to_ascii_uppercase().as_str() {
+                    #( #param_match => Some(p.#param_idents), )*
+                    _ => None,
+                }
+            }
+            fn rhs(t: f64, y: &[f64], p: &Params, dy: &mut [f64]) {
+                rhs(t, y, p, dy)
+            }
+            fn outputs(t: f64, y: &[f64], p: &Params, out: &mut [f64]) {
+                outputs(t, y, p, out)
+            }
+        }
+
+        const _: usize = #np;
+    };
+    Ok(Emitted { tokens, op_counts: (rhs_ops, out_ops), doc })
+}
+
+/// `f64::NAN` as tokens for NaN, else the literal.
+fn nan_or(v: f64) -> TokenStream {
+    if v.is_nan() {
+        quote!(f64::NAN)
+    } else {
+        let lit = proc_macro2::Literal::f64_suffixed(v);
+        quote!(#lit)
+    }
+}
+
+/// The generated module as formatted source text (for `kane gen` and snapshots).
+pub fn to_source(emitted: &Emitted) -> Result<String, String> {
+    let file: syn::File = syn::parse2(emitted.tokens.clone()).map_err(|e| e.to_string())?;
+    Ok(format!("//! {}\n\n{}", emitted.doc, prettyplease::unparse(&file)))
+}
