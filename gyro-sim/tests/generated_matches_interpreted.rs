@@ -89,3 +89,28 @@ fn generated_code_is_generic_over_the_number_type() {
         assert!((dd[i].eps - fd).abs() < 1e-6 * fd.abs().max(1.0), "d y'{i}/d u1: {} vs {fd}", dd[i].eps);
     }
 }
+
+#[test]
+fn jacobian_matches_central_differences() {
+    let p = gimbal::Params::default();
+    let y = [0.3, -0.4, 1.1, 0.7, -0.2, 12.0];
+    let mut jac = [0.0; 36];
+    gimbal::jacobian(0.0, &y, &p, &mut jac);
+    for col in 0..6 {
+        let h = 1e-6 * y[col].abs().max(1.0);
+        let (mut yp, mut ym) = (y, y);
+        yp[col] += h;
+        ym[col] -= h;
+        let (mut fp, mut fm) = ([0.0; 6], [0.0; 6]);
+        gimbal::rhs(0.0, &yp, &p, &mut fp);
+        gimbal::rhs(0.0, &ym, &p, &mut fm);
+        for row in 0..6 {
+            let fd = (fp[row] - fm[row]) / (2.0 * h);
+            assert!(
+                (jac[row * 6 + col] - fd).abs() < 1e-6 * fd.abs().max(1.0),
+                "J[{row}][{col}] {} vs {fd}",
+                jac[row * 6 + col]
+            );
+        }
+    }
+}

@@ -294,6 +294,23 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
             #out_body
         }
 
+        /// The Jacobian `d(y')/dy` at `(t, y)`, row-major, exact to round-off: one pass of `rhs`
+        /// in dual numbers per column.
+        pub fn jacobian(t: f64, y: &[f64], p: &Params, jac: &mut [f64]) {
+            use ::kane_model::dual::Dual;
+            let mut yd = [Dual::new(0.0, 0.0); #ns];
+            let mut dyd = [Dual::new(0.0, 0.0); #ns];
+            for col in 0..#ns {
+                for (k, v) in yd.iter_mut().enumerate() {
+                    *v = Dual::new(y[k], if k == col { 1.0 } else { 0.0 });
+                }
+                rhs(Dual::new(t, 0.0), &yd, p, &mut dyd);
+                for row in 0..#ns {
+                    jac[row * #ns + col] = dyd[row].eps;
+                }
+            }
+        }
+
         /// The model as a [`::kane_model::runtime::GeneratedModel`].
         #[derive(Clone, Copy, Debug, Default)]
         pub struct Model;
@@ -343,6 +360,32 @@ fn nan_or(v: f64) -> TokenStream {
         let lit = proc_macro2::Literal::f64_suffixed(v);
         quote!(#lit)
     }
+}
+
+/// For `build.rs`: reads `model` (a model file), writes its generated module to `out` (for
+/// `include!`), and asks cargo to rerun when the model file changes.
+///
+/// ```ignore
+/// // build.rs
+/// fn main() {
+///     let out = std::path::Path::new(&std::env::var("OUT_DIR").unwrap()).join("gimbal.rs");
+///     kane_model::codegen::build_script("models/gimbal_gyroscope.al", &out).unwrap();
+/// }
+/// // src/lib.rs: pub mod gimbal { include!(concat!(env!("OUT_DIR"), "/gimbal.rs")); }
+/// ```
+pub fn build_script(model: &str, out: &std::path::Path) -> Result<(), String> {
+    println!("cargo:rerun-if-changed={model}");
+    let src = std::fs::read_to_string(model).map_err(|e| format!("{model}: {e}"))?;
+    let mut loaded = crate::lang::load(model, &src).map_err(|r| r.to_string())?;
+    let name =
+        std::path::Path::new(model).file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
+    let emitted = emit(&mut loaded, &name).map_err(|e| format!("{model}: {e}"))?;
+    // No inner doc comment: the file is include!d inside a module.
+    let file: syn::File = syn::parse2(emitted.tokens).map_err(|e| e.to_string())?;
+    let text = prettyplease::unparse(&file);
+    let tmp = out.with_extension("rs.partial");
+    std::fs::write(&tmp, text).map_err(|e| format!("{}: {e}", tmp.display()))?;
+    std::fs::rename(&tmp, out).map_err(|e| format!("{}: {e}", out.display()))
 }
 
 /// The generated module as formatted source text (for `kane gen` and snapshots).
