@@ -56,11 +56,13 @@ fn benches(c: &mut Criterion) {
         })
     });
     let mut g = c.benchmark_group("trial3_to_t5");
-    for tol in [1e-6, 1e-9, 1e-12] {
-        let m = Method::Adaptive(&tableau::DOPRI5, Tolerances { rtol: tol, atol: tol });
-        let (evals, err) = run(m);
-        println!("dopri5 tol {tol:e}: {evals} RHS evaluations, largest relative error {err:.2e}");
-        g.bench_function(format!("dopri5_tol_{tol:e}"), |b| b.iter(|| black_box(run(m))));
+    for tab in [&tableau::DOPRI5, &tableau::DOP853] {
+        for tol in [1e-6, 1e-9, 1e-12] {
+            let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
+            let (evals, err) = run(m);
+            println!("{} tol {tol:e}: {evals} RHS evaluations, largest relative error {err:.2e}", tab.name);
+            g.bench_function(format!("{}_tol_{tol:e}", tab.name), |b| b.iter(|| black_box(run(m))));
+        }
     }
     for step in [1e-3, 1e-4] {
         let m = Method::Fixed(&tableau::RK4, step);

@@ -226,6 +226,10 @@ fn run_model<M: GeneratedModel>(scene: &Scene, out_dir: Option<&Path>) -> Result
     }
     let method = match scene.integrator.method.as_str() {
         "rk4" => Method::Fixed(&tableau::RK4, scene.integrator.step),
+        "dop853" => Method::Adaptive(
+            &tableau::DOP853,
+            Tolerances { rtol: scene.integrator.rtol, atol: scene.integrator.atol },
+        ),
         _ => Method::Adaptive(
             &tableau::DOPRI5,
             Tolerances { rtol: scene.integrator.rtol, atol: scene.integrator.atol },

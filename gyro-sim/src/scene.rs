@@ -45,7 +45,7 @@ pub struct Value {
 /// Integrator settings.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Integrator {
-    /// `dopri5` or `rk4`.
+    /// `dop853`, `dopri5` or `rk4`.
     pub method: String,
     /// Relative tolerance (adaptive methods).
     pub rtol: f64,
@@ -173,12 +173,12 @@ impl Scene {
         let integ =
             raw.integrator.unwrap_or(IntegratorFile { method: None, rtol: None, atol: None, step: None });
         let method = integ.method.as_ref().map_or("dopri5".to_string(), |m| m.get_ref().to_ascii_lowercase());
-        if !["dopri5", "rk4"].contains(&method.as_str()) {
+        if !["dopri5", "dop853", "rk4"].contains(&method.as_str()) {
             let span = integ.method.as_ref().map_or(0..0, |m| m.span());
             return Err(err(
                 span,
                 format!("unknown integrator `{method}`"),
-                "methods: dopri5 (adaptive), rk4 (fixed step)",
+                "methods: dop853, dopri5 (adaptive), rk4 (fixed step)",
             ));
         }
         let positive = |v: &Option<Spanned<f64>>, default: f64, what: &str| -> Result<f64, SceneError> {

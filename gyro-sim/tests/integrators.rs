@@ -28,9 +28,11 @@ fn error_at_one(method: Method) -> f64 {
 
 #[test]
 fn observed_order_matches_each_tableau() {
-    for (tab, order) in [(&tableau::RK4, 4.0), (&tableau::DOPRI5, 5.0)] {
-        let e1 = error_at_one(Method::Fixed(tab, 0.1));
-        let e2 = error_at_one(Method::Fixed(tab, 0.05));
+    for (tab, order, h) in
+        [(&tableau::RK4, 4.0, 0.1), (&tableau::DOPRI5, 5.0, 0.1), (&tableau::DOP853, 8.0, 0.25)]
+    {
+        let e1 = error_at_one(Method::Fixed(tab, h));
+        let e2 = error_at_one(Method::Fixed(tab, h / 2.0));
         let observed = (e1 / e2).log2();
         assert!((observed - order).abs() < 0.3, "{}: observed order {observed}", tab.name);
     }
@@ -38,12 +40,25 @@ fn observed_order_matches_each_tableau() {
 
 #[test]
 fn adaptive_error_follows_the_tolerance() {
-    let mut last = 1.0;
-    for tol in [1e-6, 1e-8, 1e-10] {
-        let e = error_at_one(Method::Adaptive(&tableau::DOPRI5, Tolerances { rtol: tol, atol: tol }));
-        assert!(e < 50.0 * tol, "tol {tol}: error {e}");
-        assert!(e < last);
-        last = e;
+    for tab in [&tableau::DOPRI5, &tableau::DOP853] {
+        let mut last = 1.0;
+        for tol in [1e-6, 1e-8, 1e-10] {
+            let e = error_at_one(Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol }));
+            assert!(e < 50.0 * tol, "{} tol {tol}: error {e}", tab.name);
+            assert!(e < last, "{}", tab.name);
+            last = e;
+        }
+    }
+}
+
+#[test]
+fn each_tableau_is_consistent() {
+    // Rows of a sum to c; weights sum to 1 (order conditions of order one).
+    for tab in [&tableau::RK4, &tableau::DOPRI5, &tableau::DOP853] {
+        for (i, row) in tab.a.iter().enumerate() {
+            assert!((row.iter().sum::<f64>() - tab.c[i]).abs() < 1e-12, "{} row {i}", tab.name);
+        }
+        assert!((tab.b.iter().sum::<f64>() - 1.0).abs() < 1e-12, "{}", tab.name);
     }
 }
 

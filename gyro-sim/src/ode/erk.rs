@@ -46,66 +46,86 @@ const SAFETY: f64 = 0.9;
 struct Work<'a, S: System + ?Sized> {
     sys: &'a S,
     tab: &'static Tableau,
-    k: Vec<Vec<f64>>,
+    n: usize,
+    /// Stage derivatives, stage-major: stage j is `k[j * n..(j + 1) * n]`.
+    k: Vec<f64>,
     tmp: Vec<f64>,
     ynew: Vec<f64>,
+    scale: Vec<f64>,
     stats: Stats,
 }
 
 impl<S: System + ?Sized> Work<'_, S> {
-    /// One step of size `h` from `(t, y)`, with `k[0] = f(t, y)`: fills `ynew` and the stages.
-    fn step(&mut self, t: f64, y: &[f64], h: f64) {
-        let n = y.len();
-        for i in 1..self.tab.c.len() {
-            let row = self.tab.a[i];
-            for m in 0..n {
-                let mut acc = 0.0;
-                for (j, a) in row.iter().enumerate() {
-                    if *a != 0.0 {
-                        acc += a * self.k[j][m];
-                    }
-                }
-                self.tmp[m] = y[m] + h * acc;
-            }
-            self.sys.rhs(t + self.tab.c[i] * h, &self.tmp, &mut self.k[i]);
-            self.stats.rhs_evals += 1;
-        }
-        for m in 0..n {
-            let mut acc = 0.0;
-            for (j, b) in self.tab.b.iter().enumerate() {
-                if *b != 0.0 {
-                    acc += b * self.k[j][m];
+    fn stage(&self, j: usize) -> &[f64] {
+        &self.k[j * self.n..(j + 1) * self.n]
+    }
+
+    /// `out = y + h * sum_j w_j k_j`, skipping zero weights; contiguous loops.
+    fn combine(k: &[f64], n: usize, y: &[f64], h: f64, w: &[f64], out: &mut [f64]) {
+        out.copy_from_slice(y);
+        Self::accumulate(k, n, h, w, out);
+    }
+
+    /// `out += h * sum_j w_j k_j`.
+    fn accumulate(k: &[f64], n: usize, h: f64, w: &[f64], out: &mut [f64]) {
+        for (j, wj) in w.iter().enumerate() {
+            if *wj != 0.0 {
+                let c = h * wj;
+                for (o, kj) in out.iter_mut().zip(&k[j * n..(j + 1) * n]) {
+                    *o += c * kj;
                 }
             }
-            self.ynew[m] = y[m] + h * acc;
         }
     }
 
-    /// RMS of the local error estimate over `atol + rtol * max(|y|, |ynew|)`.
-    fn error(&self, y: &[f64], h: f64, e: &[f64], tol: Tolerances) -> f64 {
-        let n = y.len();
-        let mut sum = 0.0;
+    /// One step of size `h` from `(t, y)`, with stage 0 = f(t, y): fills `ynew` and the stages.
+    fn step(&mut self, t: f64, y: &[f64], h: f64) {
+        let n = self.n;
+        for i in 1..self.tab.c.len() {
+            Self::combine(&self.k, n, y, h, self.tab.a[i], &mut self.tmp);
+            let (_, rest) = self.k.split_at_mut(i * n);
+            self.sys.rhs(t + self.tab.c[i] * h, &self.tmp, &mut rest[..n]);
+            self.stats.rhs_evals += 1;
+        }
+        Self::combine(&self.k, n, y, h, self.tab.b, &mut self.ynew);
+    }
+
+    /// The local error estimate relative to `atol + rtol * max(|y|, |ynew|)`: an RMS for
+    /// embedded pairs; for DOP853, Hairer's blend of its fifth- and third-order estimates,
+    /// `|h| e5^2 / sqrt(n (e5^2 + 0.01 e3^2))`.
+    fn error(&mut self, y: &[f64], h: f64, e: &[f64], tol: Tolerances) -> f64 {
+        let n = self.n;
+        // tmp = sum_j e_j k_j (h = 1: the step size multiplies the norm below).
+        self.tmp.fill(0.0);
+        Self::accumulate(&self.k, n, 1.0, e, &mut self.tmp);
+        let mut sum5 = 0.0;
         for m in 0..n {
-            let mut est = 0.0;
-            for (j, ej) in e.iter().enumerate() {
-                if *ej != 0.0 {
-                    est += ej * self.k[j][m];
+            self.scale[m] = tol.atol + tol.rtol * y[m].abs().max(self.ynew[m].abs());
+            let r = self.tmp[m] / self.scale[m];
+            sum5 += r * r;
+        }
+        match self.tab.e3 {
+            None => h.abs() * (sum5 / n.max(1) as f64).sqrt(),
+            Some(e3) => {
+                self.tmp.fill(0.0);
+                Self::accumulate(&self.k, n, 1.0, e3, &mut self.tmp);
+                let sum3: f64 = self.tmp.iter().zip(&self.scale).map(|(v, s)| (v / s) * (v / s)).sum();
+                if sum5 == 0.0 && sum3 == 0.0 {
+                    0.0
+                } else {
+                    h.abs() * sum5 / (n.max(1) as f64 * (sum5 + 0.01 * sum3)).sqrt()
                 }
             }
-            let scale = tol.atol + tol.rtol * y[m].abs().max(self.ynew[m].abs());
-            let r = h * est / scale;
-            sum += r * r;
         }
-        (sum / n.max(1) as f64).sqrt()
     }
 
     /// The stage at the start of the next step: reused (FSAL) or computed.
     fn next_start(&mut self, t: f64) {
-        let s = self.tab.c.len();
+        let (n, s) = (self.n, self.tab.c.len());
         if self.tab.fsal {
-            self.k.swap(0, s - 1);
+            self.k.copy_within((s - 1) * n..s * n, 0);
         } else {
-            self.sys.rhs(t, &self.ynew, &mut self.k[0]);
+            self.sys.rhs(t, &self.ynew, &mut self.k[..n]);
             self.stats.rhs_evals += 1;
         }
     }
@@ -134,15 +154,17 @@ pub fn integrate<S: System + ?Sized>(
     let mut w = Work {
         sys,
         tab,
-        k: vec![vec![0.0; n]; tab.c.len()],
+        n,
+        k: vec![0.0; n * tab.c.len()],
         tmp: vec![0.0; n],
         ynew: vec![0.0; n],
+        scale: vec![0.0; n],
         stats: Stats::default(),
     };
     let mut t = t0;
     let mut y = y0.to_vec();
     check_finite(t, &y)?;
-    sys.rhs(t, &y, &mut w.k[0]);
+    sys.rhs(t, &y, &mut w.k[..n]);
     w.stats.rhs_evals += 1;
     let mut h = match method {
         Method::Adaptive(_, tol) => {
@@ -225,16 +247,17 @@ fn initial_step<S: System + ?Sized>(
     let norm = |v: &[f64]| {
         (v.iter().zip(&scale).map(|(a, s)| (a / s).powi(2)).sum::<f64>() / n.max(1) as f64).sqrt()
     };
+    let f0 = w.stage(0).to_vec();
     let d0 = norm(y);
-    let d1 = norm(&w.k[0]);
+    let d1 = norm(&f0);
     let h0 = if d0 < 1e-5 || d1 < 1e-5 { 1e-6 } else { 0.01 * d0 / d1 };
     for m in 0..n {
-        w.tmp[m] = y[m] + h0 * w.k[0][m];
+        w.tmp[m] = y[m] + h0 * f0[m];
     }
     let mut f1 = vec![0.0; n];
     w.sys.rhs(t + h0, &w.tmp, &mut f1);
     w.stats.rhs_evals += 1;
-    let diff: Vec<f64> = f1.iter().zip(&w.k[0]).map(|(a, b)| a - b).collect();
+    let diff: Vec<f64> = f1.iter().zip(&f0).map(|(a, b)| a - b).collect();
     let d2 = norm(&diff) / h0;
     let h1 = if d1.max(d2) <= 1e-15 {
         (h0 * 1e-3).max(1e-6)
