@@ -17,7 +17,7 @@ fn trial3() -> (ModelSystem<gimbal::Model>, Vec<f64>, Vec<f64>) {
     gimbal::Model::set_param(&mut p, "Z", 10.0);
     let y0 = vec![0.0, 0.0, 0.0, 0.0, 0.0, 100.0];
     let times: Vec<f64> = (0..=100).map(|i| i as f64 * 0.05).collect();
-    (ModelSystem { params: p }, y0, times)
+    (ModelSystem::new(p), y0, times)
 }
 
 fn reference() -> Vec<Vec<f64>> {
@@ -47,11 +47,12 @@ fn run(method: Method) -> (usize, f64) {
 
 fn benches(c: &mut Criterion) {
     let p = gimbal::Params::default();
+    let d = gimbal::derive(&p);
     let y = [0.1, 0.2, 0.3, 0.4, 0.5, 100.0];
     let mut dy = [0.0; 6];
     c.bench_function("gimbal_rhs_call", |b| {
         b.iter(|| {
-            gimbal::rhs(black_box(0.0), black_box(&y), black_box(&p), &mut dy);
+            gimbal::rhs_derived(black_box(0.0), black_box(&y), black_box(&p), black_box(&d), &mut dy);
             black_box(dy[5])
         })
     });

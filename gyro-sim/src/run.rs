@@ -44,7 +44,17 @@ pub struct RunSummary {
 /// A generated model with parameters, as an ODE system.
 pub struct ModelSystem<M: GeneratedModel> {
     /// Parameter values.
-    pub params: M::Params,
+    params: M::Params,
+    /// Their parameter-only quantities.
+    derived: M::Derived,
+}
+
+impl<M: GeneratedModel> ModelSystem<M> {
+    /// The system for these parameters.
+    pub fn new(params: M::Params) -> Self {
+        let derived = M::derive(&params);
+        ModelSystem { params, derived }
+    }
 }
 
 impl<M: GeneratedModel> System for ModelSystem<M> {
@@ -52,7 +62,7 @@ impl<M: GeneratedModel> System for ModelSystem<M> {
         M::STATE_NAMES.len()
     }
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        M::rhs(t, y, &self.params, dy)
+        M::rhs_derived(t, y, &self.params, &self.derived, dy)
     }
 }
 
@@ -235,7 +245,7 @@ fn run_model<M: GeneratedModel>(scene: &Scene, out_dir: Option<&Path>) -> Result
             Tolerances { rtol: scene.integrator.rtol, atol: scene.integrator.atol },
         ),
     };
-    let sys = ModelSystem::<M> { params: params.clone() };
+    let sys = ModelSystem::<M>::new(params.clone());
     let mut rows: Vec<Vec<f64>> = Vec::with_capacity(times.len());
     let mut outs = vec![0.0; M::OUTPUT_NAMES.len()];
     let start = Instant::now();

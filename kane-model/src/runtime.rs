@@ -4,6 +4,8 @@
 pub trait GeneratedModel {
     /// Parameter values (defaults from the model file's INPUT).
     type Params: Clone + Default + std::fmt::Debug;
+    /// Quantities of the parameters alone, computed once per parameter set.
+    type Derived: Clone + std::fmt::Debug;
     /// The model's name.
     const NAME: &'static str;
     /// State names, coordinates then speeds, as declared.
@@ -24,6 +26,10 @@ pub trait GeneratedModel {
     fn param(p: &Self::Params, name: &str) -> Option<f64>;
     /// `dy = f(t, y)`.
     fn rhs(t: f64, y: &[f64], p: &Self::Params, dy: &mut [f64]);
+    /// The parameter-only quantities of `rhs`.
+    fn derive(p: &Self::Params) -> Self::Derived;
+    /// `dy = f(t, y)` with `d = derive(p)`: the fast path for integration.
+    fn rhs_derived(t: f64, y: &[f64], p: &Self::Params, d: &Self::Derived, dy: &mut [f64]);
     /// The outputs at `(t, y)`.
     fn outputs(t: f64, y: &[f64], p: &Self::Params, out: &mut [f64]);
     /// Arithmetic operations per call of `rhs` and of `outputs`.

@@ -119,27 +119,85 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
     };
 
     // rhs: parameters and states as locals, shared subexpressions, M and f, the solve, y'.
-    let (rhs_body, rhs_ops) = {
+    // Subexpressions of the parameters alone are hoisted into `derive`, computed once per
+    // parameter set, and read by `rhs_derived`.
+    let (rhs_body, derive_body, n_hoisted, rhs_ops) = {
         let cse = Cse::new(ar, &rhs_roots);
-        let names: FxHashMap<ExprId, TokenStream> = cse
-            .temps
-            .iter()
-            .enumerate()
-            .map(|(i, e)| {
-                (*e, {
-                    let x = format_ident!("__x{}", i);
-                    quote!(#x)
-                })
-            })
-            .collect();
+        let param_only = |ar: &crate::expr::Arena, e: ExprId| {
+            !matches!(
+                ar.node(e),
+                crate::expr::Node::Rational(_) | crate::expr::Node::Float(_) | crate::expr::Node::Symbol(_)
+            ) && ar.free_symbols(&[e]).iter().all(|s| params.contains(s))
+        };
+        let mut hoisted: Vec<ExprId> = cse.temps.iter().copied().filter(|e| param_only(ar, *e)).collect();
+        for &r in &rhs_roots {
+            if param_only(ar, r) && !hoisted.contains(&r) {
+                hoisted.push(r);
+            }
+        }
+        hoisted.sort_unstable();
+        let mut names: FxHashMap<ExprId, TokenStream> = FxHashMap::default();
+        for (i, e) in hoisted.iter().enumerate() {
+            let h = format_ident!("__h{}", i);
+            names.insert(*e, quote!(#h));
+        }
+        let temps: Vec<ExprId> = cse.temps.iter().copied().filter(|e| !names.contains_key(e)).collect();
+        for (i, e) in temps.iter().enumerate() {
+            let x = format_ident!("__x{}", i);
+            names.insert(*e, quote!(#x));
+        }
+        // derive: f64 arithmetic on the parameters.
+        let f64_style = RustStyle { scalar: Scalar::F64, symbol: &symbol_tokens, names: Some(&names) };
+        let mut derive = TokenStream::new();
+        for (i, e) in hoisted.iter().enumerate() {
+            let h = format_ident!("__h{}", i);
+            let v = ar.to_rust(*e, &f64_style);
+            derive.extend(quote!(let #h: f64 = #v;));
+        }
+        let hs: Vec<Ident> = (0..hoisted.len()).map(|i| format_ident!("__h{}", i)).collect();
+        derive.extend(quote!(Derived { v: [#(#hs),*] }));
+
         let style = RustStyle {
             scalar: Scalar::Generic(t_ident.clone()),
             symbol: &symbol_tokens,
             names: Some(&names),
         };
         let mut body = TokenStream::new();
-        for (i, e) in cse.temps.iter().enumerate() {
+        for (i, h) in hs.iter().enumerate() {
+            body.extend(
+                quote!(let #h: #t_ident = ::kane_model::__private::cast::<#t_ident>(__derived.v[#i]);),
+            );
+        }
+        // sin and cos of the same argument come from one sin_cos call.
+        let partner = |ar: &crate::expr::Arena, e: ExprId| -> Option<(crate::expr::Func, ExprId)> {
+            match *ar.node(e) {
+                crate::expr::Node::Func(f @ (crate::expr::Func::Sin | crate::expr::Func::Cos), x) => {
+                    Some((f, x))
+                }
+                _ => None,
+            }
+        };
+        let mut emitted_pair: Vec<ExprId> = Vec::new();
+        for (i, e) in temps.iter().enumerate() {
+            if emitted_pair.contains(e) {
+                continue;
+            }
             let x = format_ident!("__x{}", i);
+            if let Some((f, arg)) = partner(ar, *e) {
+                let other =
+                    temps.iter().position(|o| partner(ar, *o).is_some_and(|(g, a)| a == arg && g != f));
+                if let Some(j) = other {
+                    let y = format_ident!("__x{}", j);
+                    let a = names.get(&arg).cloned().unwrap_or_else(|| {
+                        let t = ar.to_rust(arg, &style);
+                        quote!((#t))
+                    });
+                    let (s_id, c_id) = if f == crate::expr::Func::Sin { (x, y) } else { (y, x) };
+                    body.extend(quote!(let (#s_id, #c_id): (#t_ident, #t_ident) = #a.sin_cos();));
+                    emitted_pair.push(temps[j]);
+                    continue;
+                }
+            }
             let v = ar.to_rust(*e, &style);
             body.extend(quote!(let #x: #t_ident = #v;));
         }
@@ -180,11 +238,13 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
             let idx = nq + i;
             body.extend(quote!(dy[#idx] = #xi;));
         }
+        // Per-call operations: everything but the hoisted parameter arithmetic.
         let mut inputs: Vec<SymbolId> = states.clone();
         inputs.extend(&params);
         inputs.push(crate::expr::TIME);
-        let ops = Tape::compile(ar, &rhs_roots, &inputs).map(|t| t.op_count()).unwrap_or(0) + solve_ops;
-        (body, ops)
+        let all_ops = Tape::compile(ar, &rhs_roots, &inputs).map(|t| t.op_count()).unwrap_or(0);
+        let hoisted_ops = Tape::compile(ar, &hoisted, &inputs).map(|t| t.op_count()).unwrap_or(0);
+        (body, derive, hoisted.len(), all_ops - hoisted_ops.min(all_ops) + solve_ops)
     };
 
     // outputs: y' from rhs, then the output expressions.
@@ -275,12 +335,31 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
             }
         }
 
-        /// `dy = f(t, y)`: the kinematic equations and `M u' = f` solved for `u'`.
+        /// Quantities of the parameters alone, computed once per parameter set by [`derive`].
+        #[derive(Clone, Debug, PartialEq)]
+        pub struct Derived {
+            /// The values, in the order `rhs_derived` reads them.
+            pub v: [f64; #n_hoisted],
+        }
+
+        /// The parameter-only subexpressions of `rhs`.
         #[allow(unused_variables, clippy::all)]
-        pub fn rhs<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, dy: &mut [T]) {
+        pub fn derive(p: &Params) -> Derived {
+            #( let #param_idents: f64 = p.#param_idents; )*
+            #derive_body
+        }
+
+        /// `dy = f(t, y)` with the parameter-only quantities `d = derive(p)` precomputed.
+        #[allow(unused_variables, clippy::all)]
+        pub fn rhs_derived<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, __derived: &Derived, dy: &mut [T]) {
             #( let #param_idents: T = ::kane_model::__private::cast::<T>(p.#param_idents); )*
             #( let #state_idents: T = y[#state_idx]; )*
             #rhs_body
+        }
+
+        /// `dy = f(t, y)`: the kinematic equations and `M u' = f` solved for `u'`.
+        pub fn rhs<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, dy: &mut [T]) {
+            rhs_derived(t, y, p, &derive(p), dy)
         }
 
         /// The model's outputs at `(t, y)`.
@@ -317,6 +396,7 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
 
         impl ::kane_model::runtime::GeneratedModel for Model {
             type Params = Params;
+            type Derived = Derived;
             const NAME: &'static str = #name_lit;
             const STATE_NAMES: &'static [&'static str] = &[#(#state_names),*];
             const STATE_UNITS: &'static [&'static str] = &[#(#state_units),*];
@@ -341,6 +421,12 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
             }
             fn rhs(t: f64, y: &[f64], p: &Params, dy: &mut [f64]) {
                 rhs(t, y, p, dy)
+            }
+            fn derive(p: &Params) -> Derived {
+                derive(p)
+            }
+            fn rhs_derived(t: f64, y: &[f64], p: &Params, d: &Derived, dy: &mut [f64]) {
+                rhs_derived(t, y, p, d, dy)
             }
             fn outputs(t: f64, y: &[f64], p: &Params, out: &mut [f64]) {
                 outputs(t, y, p, out)
