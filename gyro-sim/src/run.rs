@@ -39,6 +39,8 @@ pub struct RunSummary {
     pub plot: Option<PathBuf>,
     /// The table of results.
     pub table: Table,
+    /// The states that were integrated (cyclic coordinates nothing needed are left out).
+    pub integrated: Vec<&'static str>,
 }
 
 /// A generated model with parameters, as an ODE system.
@@ -63,6 +65,47 @@ impl<M: GeneratedModel> System for ModelSystem<M> {
     }
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
         M::rhs_derived(t, y, &self.params, &self.derived, dy)
+    }
+}
+
+/// A system without some of its states (cyclic coordinates nothing asked for depends on): they
+/// are held at zero, which no equation reads, and never integrated.
+pub struct Reduced<'a, S: System> {
+    inner: &'a S,
+    keep: Vec<usize>,
+    full: std::cell::RefCell<(Vec<f64>, Vec<f64>)>,
+}
+
+impl<'a, S: System> Reduced<'a, S> {
+    /// `inner` restricted to the states `keep`.
+    pub fn new(inner: &'a S, keep: Vec<usize>) -> Self {
+        let n = inner.dim();
+        Reduced { inner, keep, full: std::cell::RefCell::new((vec![0.0; n], vec![0.0; n])) }
+    }
+
+    /// The full state with the dropped coordinates at zero.
+    pub fn expand(&self, y: &[f64], full: &mut [f64]) {
+        full.fill(0.0);
+        for (i, k) in self.keep.iter().enumerate() {
+            full[*k] = y[i];
+        }
+    }
+}
+
+impl<S: System> System for Reduced<'_, S> {
+    fn dim(&self) -> usize {
+        self.keep.len()
+    }
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        let mut full = self.full.borrow_mut();
+        let (fy, fdy) = &mut *full;
+        for (i, k) in self.keep.iter().enumerate() {
+            fy[*k] = y[i];
+        }
+        self.inner.rhs(t, fy, fdy);
+        for (i, k) in self.keep.iter().enumerate() {
+            dy[i] = fdy[*k];
+        }
     }
 }
 
@@ -245,11 +288,26 @@ fn run_model<M: GeneratedModel>(scene: &Scene, out_dir: Option<&Path>) -> Result
             Tolerances { rtol: scene.integrator.rtol, atol: scene.integrator.atol },
         ),
     };
-    let sys = ModelSystem::<M>::new(params.clone());
+    // Cyclic coordinates that no column and no asked output reads are not integrated.
+    let mut needed = vec![false; M::STATE_NAMES.len()];
+    for (p, _) in &picks {
+        match p {
+            Pick::State(i) => needed[*i] = true,
+            Pick::Output(j) => M::OUTPUT_STATES[*j].iter().for_each(|i| needed[*i] = true),
+        }
+    }
+    let keep: Vec<usize> =
+        (0..M::STATE_NAMES.len()).filter(|i| needed[*i] || !M::CYCLIC.contains(i)).collect();
+    let full_sys = ModelSystem::<M>::new(params.clone());
+    let sys = Reduced::new(&full_sys, keep.clone());
+    let y_reduced: Vec<f64> = keep.iter().map(|k| y[*k]).collect();
+    let mut full_y = vec![0.0; M::STATE_NAMES.len()];
     let mut rows: Vec<Vec<f64>> = Vec::with_capacity(times.len());
     let mut outs = vec![0.0; M::OUTPUT_NAMES.len()];
     let start = Instant::now();
-    let stats = ode::integrate(&sys, 0.0, &y, &times, method, |t, y| {
+    let stats = ode::integrate(&sys, 0.0, &y_reduced, &times, method, |t, y_red| {
+        sys.expand(y_red, &mut full_y);
+        let y = &full_y[..];
         if needs_outputs {
             M::outputs(t, y, &params, &mut outs);
         }
@@ -269,9 +327,10 @@ fn run_model<M: GeneratedModel>(scene: &Scene, out_dir: Option<&Path>) -> Result
         Ok(())
     })
     .map_err(|e| match e {
-        OdeError::NonFinite { time, index, value } => {
-            RunError::Ode(format!("state {} is not finite ({value}) at t = {time}", M::STATE_NAMES[index]))
-        }
+        OdeError::NonFinite { time, index, value } => RunError::Ode(format!(
+            "state {} is not finite ({value}) at t = {time}",
+            M::STATE_NAMES[keep[index]]
+        )),
         other => RunError::Ode(other.to_string()),
     })?;
     let wall = start.elapsed();
@@ -287,5 +346,12 @@ fn run_model<M: GeneratedModel>(scene: &Scene, out_dir: Option<&Path>) -> Result
         }
         None => (None, None),
     };
-    Ok(RunSummary { stats, wall, csv, plot, table })
+    Ok(RunSummary {
+        stats,
+        wall,
+        csv,
+        plot,
+        table,
+        integrated: keep.iter().map(|k| M::STATE_NAMES[*k]).collect(),
+    })
 }

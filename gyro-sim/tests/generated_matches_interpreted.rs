@@ -15,8 +15,8 @@ fn generated_rhs_equals_the_interpreted_equations() {
     let mut simplified = loaded.equations.clone().unwrap();
     loaded.model.simplify_equations(&mut simplified).unwrap();
     let eqs = &simplified;
-    let ar = &loaded.model.ar;
     let Some(kane_model::lang::Value::Scalar(ap)) = loaded.value("AP") else { panic!("AP") };
+    let ar = &loaded.model.ar;
     let mut rng = rand::rngs::StdRng::seed_from_u64(41);
     let mut worst: f64 = 0.0;
     for _ in 0..1000 {

@@ -34,4 +34,9 @@ pub trait GeneratedModel {
     fn outputs(t: f64, y: &[f64], p: &Self::Params, out: &mut [f64]);
     /// Arithmetic operations per call of `rhs` and of `outputs`.
     const OP_COUNTS: (usize, usize);
+    /// Coordinates that no equation reads (cyclic): they can be left out of the integrated state
+    /// when no output needs them.
+    const CYCLIC: &'static [usize];
+    /// For each output, the states it reads.
+    const OUTPUT_STATES: &'static [&'static [usize]];
 }

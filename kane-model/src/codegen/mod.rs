@@ -62,6 +62,7 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
 
     // Outputs: OUTPUT names other than T and the states, each a scalar of the model.
     let mut outputs: Vec<(String, ExprId, String)> = Vec::new();
+    let mut output_reads: Vec<ExprId> = Vec::new();
     for (oname, _) in &loaded.outputs {
         let upper = oname.to_ascii_uppercase();
         if upper == "T"
@@ -72,7 +73,19 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
         match loaded.value(oname) {
             Some(Value::Scalar(e)) => {
                 let unit = loaded.units.get(&upper).cloned().unwrap_or_default();
+                // Which states an output depends on is read from its collected form, where
+                // coordinates that cancel (|a_P| does not depend on the gimbal's q1) are gone; the
+                // code evaluates the original form, which is better conditioned (the expanded
+                // one cancels large terms when the gimbals spin fast).
+                let c = loaded.model.collected_form(e)?;
+                let reads =
+                    if loaded.model.ar.free_symbols(&[c]).len() < loaded.model.ar.free_symbols(&[e]).len() {
+                        c
+                    } else {
+                        e
+                    };
                 outputs.push((oname.clone(), e, unit));
+                output_reads.push(reads);
             }
             _ => return Err(CodegenError::UnknownOutput(oname.clone())),
         }
@@ -284,6 +297,17 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
         (body, ops)
     };
 
+    // Coordinates no equation reads (cyclic), and the states each output reads.
+    let rhs_free = ar.free_symbols(&rhs_roots);
+    let cyclic: Vec<usize> = (0..nq).filter(|i| !rhs_free.contains(&states[*i])).collect();
+    let output_states: Vec<Vec<usize>> = output_reads
+        .iter()
+        .map(|e| {
+            let free = ar.free_symbols(&[*e]);
+            (0..states.len()).filter(|i| free.contains(&states[*i])).collect()
+        })
+        .collect();
+    let output_states_tokens = output_states.iter().map(|v| quote!(&[#(#v),*]));
     let ns = states.len();
     let no = outputs.len();
     let np = params.len();
@@ -404,6 +428,8 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
             const OUTPUT_UNITS: &'static [&'static str] = &[#(#output_units),*];
             const PARAM_NAMES: &'static [&'static str] = &[#(#param_names),*];
             const OP_COUNTS: (usize, usize) = (#rhs_ops_lit, #out_ops_lit);
+            const CYCLIC: &'static [usize] = &[#(#cyclic),*];
+            const OUTPUT_STATES: &'static [&'static [usize]] = &[#(#output_states_tokens),*];
             fn initial_state() -> Vec<f64> {
                 vec![#(#initial_tokens),*]
             }

@@ -210,16 +210,20 @@ impl Model {
         Ok(())
     }
 
-    /// `e` or its collected canonical form, whichever has the smaller expression graph.
-    fn smaller_form(&mut self, e: ExprId) -> Result<ExprId> {
+    /// The collected canonical form of `e`: trigonometric identities applied in the state
+    /// variables, terms grouped by state monomial, parameter-only parts kept whole.
+    pub fn collected_form(&mut self, e: ExprId) -> Result<ExprId> {
         if matches!(self.ar.node(e), Node::Rational(_) | Node::Float(_) | Node::Symbol(_)) {
             return Ok(e);
         }
-        let s = {
-            let ar = &mut self.ar;
-            let kinds: Vec<bool> = ar.symbols().map(|(_, info)| info.kind == SymbolKind::Constant).collect();
-            ar.collect_state(e, |sym| kinds.get(sym.index()).copied().unwrap_or(true))?
-        };
+        let ar = &mut self.ar;
+        let kinds: Vec<bool> = ar.symbols().map(|(_, info)| info.kind == SymbolKind::Constant).collect();
+        Ok(ar.collect_state(e, |sym| kinds.get(sym.index()).copied().unwrap_or(true))?)
+    }
+
+    /// `e` or its collected canonical form, whichever has the smaller expression graph.
+    fn smaller_form(&mut self, e: ExprId) -> Result<ExprId> {
+        let s = self.collected_form(e)?;
         Ok(if self.ar.graph_size(s) < self.ar.graph_size(e) { s } else { e })
     }
 
