@@ -380,18 +380,23 @@ impl Model {
 
     /// Uniform gravity: the force `mass * g` at every mass centre and particle.
     pub fn add_gravity(&mut self, g: &Vector) -> Result<()> {
-        let masses: Vec<(String, Option<ExprId>, PointId)> = self
-            .bodies
-            .iter()
-            .map(|b| (b.name.clone(), b.mass, b.mass_center))
-            .chain(self.particles.iter().map(|p| (p.name.clone(), p.mass, p.point)))
-            .collect();
-        for (name, mass, point) in masses {
-            let m = mass.ok_or(MechanicsError::MissingMass(name))?;
+        for (m, point) in self.masses()? {
             let f = self.scale(g, m)?;
             self.add_force(point, f);
         }
         Ok(())
+    }
+
+    /// Every body's mass and mass centre, then every particle's mass and point.
+    pub fn masses(&self) -> Result<Vec<(ExprId, PointId)>> {
+        let bodies = self.bodies.iter().map(|b| (&b.name, b.mass, b.mass_center));
+        let particles = self.particles.iter().map(|p| (&p.name, p.mass, p.point));
+        bodies
+            .chain(particles)
+            .map(|(name, mass, point)| {
+                Ok((mass.ok_or_else(|| MechanicsError::MissingMass(name.clone()))?, point))
+            })
+            .collect()
     }
 
     /// The applied loads.

@@ -35,15 +35,8 @@ impl Model {
 
     /// Potential energy of uniform gravity `g`, zero at `origin`: `-sum(m g . r)`.
     pub fn gravity_potential(&mut self, g: &Vector, origin: PointId) -> Result<ExprId> {
-        let masses: Vec<(String, Option<ExprId>, PointId)> = self
-            .bodies
-            .iter()
-            .map(|b| (b.name.clone(), b.mass, b.mass_center))
-            .chain(self.particles.iter().map(|p| (p.name.clone(), p.mass, p.point)))
-            .collect();
         let mut terms = Vec::new();
-        for (name, mass, point) in masses {
-            let m = mass.ok_or(MechanicsError::MissingMass(name))?;
+        for (m, point) in self.masses()? {
             let r = self.position(point, origin)?;
             let gr = self.dot(g, &r)?;
             terms.push(self.ar.mul(&[m, gr])?);

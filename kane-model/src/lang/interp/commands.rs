@@ -18,16 +18,7 @@ impl Interpreter {
         };
         let upper = name.to_ascii_uppercase();
         let fail: &Span = &e.span;
-        let arity = |n: usize| -> IResult<()> {
-            if args.len() == n {
-                Ok(())
-            } else {
-                Err(Diagnostic::error(
-                    e.span.clone(),
-                    format!("{upper} takes {n} arguments, got {}", args.len()),
-                ))
-            }
-        };
+        let arity = |n: usize| super::arity(&upper, args, n, &e.span);
         match upper.as_str() {
             "SIMPROT" => {
                 arity(4)?;

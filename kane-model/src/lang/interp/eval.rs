@@ -41,14 +41,8 @@ impl Interpreter {
                     }
                 }
                 if let Some(Value::Matrix { rows, cols, data }) = self.lookup_value(&key) {
-                    let (i, j) = match idx.as_slice() {
-                        [i] if cols == 1 => (*i, 1),
-                        [j] if rows == 1 => (1, *j),
-                        [i, j] => (*i, *j),
-                        _ => (0, 0),
-                    };
-                    if i >= 1 && j >= 1 && (i as usize) <= rows && (j as usize) <= cols {
-                        return Ok(Value::Scalar(data[(i as usize - 1) * cols + j as usize - 1]));
+                    if let Some(k) = value::matrix_position(&idx, rows, cols) {
+                        return Ok(Value::Scalar(data[k]));
                     }
                 }
                 Err(Diagnostic::error(e.span.clone(), format!("`{name}{idx:?}` is not defined"))

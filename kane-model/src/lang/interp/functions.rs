@@ -34,16 +34,7 @@ impl Interpreter {
     pub(crate) fn call(&mut self, name: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
         let upper = name.to_ascii_uppercase();
         let fail: &Span = &e.span;
-        let arity = |n: usize| -> IResult<()> {
-            if args.len() == n {
-                Ok(())
-            } else {
-                Err(Diagnostic::error(
-                    e.span.clone(),
-                    format!("{upper} takes {n} argument(s), got {}", args.len()),
-                ))
-            }
-        };
+        let arity = |n: usize| super::arity(&upper, args, n, &e.span);
         if let Some(f) = elementary(&upper) {
             arity(1)?;
             let x = self.scalar(&args[0])?;

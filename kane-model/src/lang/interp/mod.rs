@@ -437,19 +437,13 @@ impl Interpreter {
         if let (Some(Binding::Value(Value::Matrix { rows, cols, mut data })), Value::Scalar(x)) =
             (self.bindings.get(key).cloned(), &v)
         {
-            let (i, j) = match idx.as_slice() {
-                [i] if cols == 1 => (*i, 1),
-                [j] if rows == 1 => (1, *j),
-                [i, j] => (*i, *j),
-                _ => (0, 0),
-            };
-            if i >= 1 && j >= 1 && (i as usize) <= rows && (j as usize) <= cols {
-                data[(i as usize - 1) * cols + j as usize - 1] = *x;
+            if let Some(k) = value::matrix_position(&idx, rows, cols) {
+                data[k] = *x;
                 self.bindings.insert(key.to_string(), Binding::Value(Value::Matrix { rows, cols, data }));
                 return Ok(());
             }
             // ZERO[n + 1] = x appends a row to a column.
-            if cols == 1 && idx.len() == 1 && i as usize == rows + 1 {
+            if cols == 1 && idx.len() == 1 && idx[0] as usize == rows + 1 {
                 data.push(*x);
                 self.bindings
                     .insert(key.to_string(), Binding::Value(Value::Matrix { rows: rows + 1, cols, data }));
@@ -480,6 +474,15 @@ impl Interpreter {
             Some(Binding::Symbol(e, _)) => Some(Value::Scalar(*e)),
             _ => None,
         }
+    }
+}
+
+/// An error unless `args` has `n` entries.
+pub(crate) fn arity(name: &str, args: &[super::ast::Expr], n: usize, span: &Span) -> IResult<()> {
+    if args.len() == n {
+        Ok(())
+    } else {
+        Err(Diagnostic::error(span.clone(), format!("{name} takes {n} argument(s), got {}", args.len())))
     }
 }
 

@@ -40,6 +40,19 @@ impl Value {
     }
 }
 
+/// The 0-based position in a `rows x cols` matrix of 1-based indices `[i]` (a column or row
+/// vector) or `[i, j]`, if in range.
+pub fn matrix_position(idx: &[i64], rows: usize, cols: usize) -> Option<usize> {
+    let (i, j) = match idx {
+        [i] if cols == 1 => (*i, 1),
+        [j] if rows == 1 => (1, *j),
+        [i, j] => (*i, *j),
+        _ => return None,
+    };
+    (i >= 1 && j >= 1 && (i as usize) <= rows && (j as usize) <= cols)
+        .then(|| (i as usize - 1) * cols + j as usize - 1)
+}
+
 /// `a + b` (or `a - b` with `negate`) for values of the same kind.
 pub fn add(m: &mut Model, a: &Value, b: &Value, negate: bool) -> Result<Option<Value>> {
     let b = if negate { scale(m, b, m.ar.minus_one())? } else { b.clone() };
