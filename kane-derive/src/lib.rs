@@ -4,7 +4,7 @@
 //! `kane_model` for the code, and turns any error into a compile error showing the model file's
 //! line. The file is included with `include_str!`, so editing it triggers a rebuild.
 //!
-//! ```ignore
+//! ```text
 //! mod gimbal {
 //!     kane_derive::model!("../kane-model/models/gimbal_gyroscope.al");
 //! }
@@ -39,4 +39,38 @@ fn expand(lit: &LitStr) -> syn::Result<proc_macro2::TokenStream> {
         #tokens
         const _: &str = include_str!(#full);
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::expand;
+    use proc_macro2::Span;
+    use syn::LitStr;
+
+    #[test]
+    fn a_model_file_error_becomes_a_compile_error_with_its_line() {
+        let err = expand(&LitStr::new("tests/data/bad_model.al", Span::call_site())).unwrap_err();
+        let text = err.to_string();
+        assert!(text.contains("tests/data/bad_model.al:3:18: error: `QQ` is not defined"), "{text}");
+        let tokens = err.into_compile_error().to_string();
+        assert!(tokens.contains("compile_error"), "{tokens}");
+    }
+
+    #[test]
+    fn a_missing_file_is_a_compile_error_naming_it() {
+        let err = expand(&LitStr::new("tests/data/nope.al", Span::call_site())).unwrap_err();
+        assert!(err.to_string().starts_with("cannot read model file"), "{err}");
+    }
+
+    #[test]
+    fn a_good_model_expands_and_tracks_its_file() {
+        let tokens = expand(&LitStr::new("../kane-model/models/gimbal_gyroscope.al", Span::call_site()))
+            .unwrap()
+            .to_string();
+        assert!(
+            tokens.contains("pub fn rhs_derived") && tokens.contains("include_str"),
+            "{}",
+            &tokens[..200]
+        );
+    }
 }

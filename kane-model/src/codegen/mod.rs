@@ -477,7 +477,7 @@ fn nan_or(v: f64) -> TokenStream {
 /// For `build.rs`: reads `model` (a model file), writes its generated module to `out` (for
 /// `include!`), and asks cargo to rerun when the model file changes.
 ///
-/// ```ignore
+/// ```text
 /// // build.rs
 /// fn main() {
 ///     let out = std::path::Path::new(&std::env::var("OUT_DIR").unwrap()).join("gimbal.rs");
