@@ -93,3 +93,27 @@ fn blow_up_is_an_error_not_a_hang() {
     let r = integrate(&BlowUp, 0.0, &[1.0], &[2.0], Method::Fixed(&tableau::RK4, 0.01), |_, _| Ok(()));
     assert!(matches!(r, Err(OdeError::NonFinite { .. })), "{r:?}");
 }
+
+#[test]
+fn dense_output_is_accurate_between_steps_and_saves_steps() {
+    // 1001 output times on [0, 10]: interpolated values stay within the tolerance's reach, with far
+    // fewer steps than landing on every output time would need.
+    let times: Vec<f64> = (0..=1000).map(|i| i as f64 * 0.01).collect();
+    let tol = Tolerances { rtol: 1e-9, atol: 1e-9 };
+    let mut worst: f64 = 0.0;
+    let stats =
+        integrate(&Oscillator, 0.0, &[0.0, 1.0], &times, Method::Adaptive(&tableau::DOPRI5, tol), |t, y| {
+            worst = worst.max((y[0] - t.sin()).abs()).max((y[1] - t.cos()).abs());
+            Ok(())
+        })
+        .unwrap();
+    assert!(worst < 1e-7, "largest error {worst:e}");
+    assert!(stats.steps < 400, "{} steps for 1000 outputs", stats.steps);
+    // DOP853 (no dense output here) lands on every output time.
+    let landing =
+        integrate(&Oscillator, 0.0, &[0.0, 1.0], &times, Method::Adaptive(&tableau::DOP853, tol), |_, _| {
+            Ok(())
+        })
+        .unwrap();
+    assert!(landing.steps >= 1000);
+}

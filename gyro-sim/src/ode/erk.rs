@@ -119,6 +119,27 @@ impl<S: System + ?Sized> Work<'_, S> {
         }
     }
 
+    /// `y(t_old + theta h)` from the accepted step `y -> ynew` (before the stages are reused):
+    /// `y0 + th (dy + (1 - th)(b + th (dy - h k_last - b + (1 - th) h sum_j d_j k_j)))` with
+    /// `dy = ynew - y0`, `b = h k_0 - dy` (Hairer's contd5).
+    fn interpolate(&self, y0: &[f64], h: f64, theta: f64, d: &[f64], out: &mut [f64]) {
+        let n = self.n;
+        let last = self.tab.c.len() - 1;
+        let t1 = 1.0 - theta;
+        for m in 0..n {
+            let dy = self.ynew[m] - y0[m];
+            let bspl = h * self.k[m] - dy;
+            let r4 = dy - h * self.k[last * n + m] - bspl;
+            let mut r5 = 0.0;
+            for (j, dj) in d.iter().enumerate() {
+                if *dj != 0.0 {
+                    r5 += dj * self.k[j * n + m];
+                }
+            }
+            out[m] = y0[m] + theta * (dy + t1 * (bspl + theta * (r4 + t1 * h * r5)));
+        }
+    }
+
     /// The stage at the start of the next step: reused (FSAL) or computed.
     fn next_start(&mut self, t: f64) {
         let (n, s) = (self.n, self.tab.c.len());
@@ -173,6 +194,9 @@ pub fn integrate<S: System + ?Sized>(
         Method::Fixed(_, step) => step,
     };
     let mut err_old: f64 = 1e-4;
+    if let (Method::Adaptive(_, tol), Some(d)) = (method, tab.dense) {
+        return dense_run(&mut w, t, y, h, tol, d, times, &mut out);
+    }
     for &target in times {
         while t < target {
             if w.stats.steps >= MAX_STEPS {
@@ -230,6 +254,74 @@ pub fn integrate<S: System + ?Sized>(
             }
         }
         out(target, &y).map_err(OdeError::Output)?;
+    }
+    Ok(w.stats)
+}
+
+/// Adaptive stepping to the last output time only, with outputs in between from the dense
+/// interpolant; the last output is the last step's own value, at `t_final` exactly.
+#[allow(clippy::too_many_arguments)]
+fn dense_run<S: System + ?Sized>(
+    w: &mut Work<'_, S>,
+    mut t: f64,
+    mut y: Vec<f64>,
+    mut h: f64,
+    tol: Tolerances,
+    d: &[f64],
+    times: &[f64],
+    out: &mut impl FnMut(f64, &[f64]) -> Result<(), String>,
+) -> Result<Stats, OdeError> {
+    let tab = w.tab;
+    let e = tab.e.unwrap_or(&[]);
+    let Some(&t_end) = times.last() else { return Ok(w.stats) };
+    let mut next = 0;
+    while next < times.len() && times[next] <= t {
+        out(times[next], &y).map_err(OdeError::Output)?;
+        next += 1;
+    }
+    let mut y_out = vec![0.0; w.n];
+    let mut err_old: f64 = 1e-4;
+    while t < t_end {
+        if w.stats.steps >= MAX_STEPS {
+            return Err(OdeError::TooManySteps { time: t, max: MAX_STEPS });
+        }
+        let remaining = t_end - t;
+        let (mut h_try, mut last) =
+            if h >= remaining * (1.0 - 1e-12) { (remaining, true) } else { (h, false) };
+        loop {
+            if h_try < 16.0 * f64::EPSILON * t.abs().max(1.0) {
+                return Err(OdeError::StepSizeUnderflow { time: t, step: h_try });
+            }
+            w.step(t, &y, h_try);
+            let err = w.error(&y, h_try, e, tol);
+            if err <= 1.0 {
+                let t_new = if last { t_end } else { t + h_try };
+                check_finite(t_new, &w.ynew)?;
+                // Outputs inside the step, from the interpolant; the step's end exactly.
+                while next < times.len() && times[next] <= t_new {
+                    if times[next] == t_new {
+                        out(t_new, &w.ynew).map_err(OdeError::Output)?;
+                    } else {
+                        w.interpolate(&y, h_try, (times[next] - t) / h_try, d, &mut y_out);
+                        out(times[next], &y_out).map_err(OdeError::Output)?;
+                    }
+                    next += 1;
+                }
+                t = t_new;
+                y.copy_from_slice(&w.ynew);
+                w.next_start(t);
+                w.stats.steps += 1;
+                let alpha = 1.0 / tab.order as f64 - 0.75 * BETA;
+                let fac = (SAFETY * err.max(1e-10).powf(-alpha) * err_old.powf(BETA)).clamp(0.2, 10.0);
+                h = h_try * fac;
+                err_old = err.max(1e-4);
+                break;
+            }
+            h_try *=
+                if err.is_finite() { (SAFETY * err.powf(-1.0 / tab.order as f64)).max(0.2) } else { 0.2 };
+            last = false;
+            w.stats.rejected += 1;
+        }
     }
     Ok(w.stats)
 }

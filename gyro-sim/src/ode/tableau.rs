@@ -18,6 +18,9 @@ pub struct Tableau {
     pub e: Option<&'static [f64]>,
     /// DOP853's third-order error weights, combined with `e` as in Hairer's code.
     pub e3: Option<&'static [f64]>,
+    /// Dense-output weights `d` of Hairer's 4th-order continuous extension for Dormand-Prince
+    /// 5(4) (`contd5`); without them steps land on output times.
+    pub dense: Option<&'static [f64]>,
     /// The last stage is `f(t + h, y_new)`, reusable as the next step's first.
     pub fsal: bool,
     /// Where the coefficients come from.
@@ -49,8 +52,17 @@ pub const DOPRI5: Tableau = Tableau {
         -1.0 / 40.0,
     ]),
     e3: None,
+    dense: Some(&[
+        -12715105075.0 / 11282082432.0,
+        0.0,
+        87487479700.0 / 32700410799.0,
+        -10690763975.0 / 1880347072.0,
+        701980252875.0 / 199316789632.0,
+        -1453857185.0 / 822651844.0,
+        69997945.0 / 29380423.0,
+    ]),
     fsal: true,
-    source: "J. R. Dormand and P. J. Prince, A family of embedded Runge-Kutta formulae, J. Comput. Appl. Math. 6 (1980) 19-26; Hairer, Norsett, Wanner, Solving ODEs I, Table II.5.2",
+    source: "J. R. Dormand and P. J. Prince, A family of embedded Runge-Kutta formulae, J. Comput. Appl. Math. 6 (1980) 19-26; Hairer, Norsett, Wanner, Solving ODEs I, Table II.5.2; dense output of L. F. Shampine (1986) as in Hairer's DOPRI5 (contd5)",
 };
 
 /// The classical fourth-order Runge-Kutta method.
@@ -62,6 +74,7 @@ pub const RK4: Tableau = Tableau {
     b: &[1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0],
     e: None,
     e3: None,
+    dense: None,
     fsal: false,
     source: "W. Kutta, Beitrag zur naeherungsweisen Integration totaler Differentialgleichungen, Z. Math. Phys. 46 (1901); Hairer, Norsett, Wanner, Solving ODEs I, Table II.1.2",
 };
@@ -88,6 +101,7 @@ pub const DOP853: Tableau = Tableau {
     ],
     b: &[0.054293734116568765, 0.0, 0.0, 0.0, 0.0, 4.450312892752409, 1.8915178993145003, -5.801203960010585, 0.3111643669578199, -0.1521609496625161, 0.20136540080403034, 0.04471061572777259, 0.0],
     e: Some(&[0.01312004499419488, 0.0, 0.0, 0.0, 0.0, -1.2251564463762044, -0.4957589496572502, 1.6643771824549864, -0.35032884874997366, 0.3341791187130175, 0.08192320648511571, -0.022355307863886294, 0.0]),
+    dense: None,
     e3: Some(&[-0.18980075407240762, 0.0, 0.0, 0.0, 0.0, 4.450312892752409, 1.8915178993145003, -5.801203960010585, -0.4226823213237919, -0.1521609496625161, 0.20136540080403034, 0.02265179219836082, 0.0]),
     fsal: true,
     source: "E. Hairer, S. P. Norsett, G. Wanner, Solving Ordinary Differential Equations I, 2nd ed., section II.10 and the DOP853 code (coefficients of J. R. Dormand and P. J. Prince, 1980, as published with it)",

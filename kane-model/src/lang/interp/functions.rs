@@ -443,6 +443,29 @@ impl Interpreter {
     }
 
     fn matrix_function(&mut self, upper: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
+        let (least, most) = match upper {
+            "TRANSPOSE" | "TRACE" | "DET" => (1, 1),
+            "ELEMENT" => (3, 3),
+            "DIAGMAT" => (2, 3),
+            "MATRIX" | "VECTOR" => (2, 2),
+            _ => (1, usize::MAX),
+        };
+        if args.len() < least || args.len() > most {
+            return Err(Diagnostic::error(
+                e.span.clone(),
+                format!(
+                    "{upper} takes {least}{} arguments, got {}",
+                    if most == least {
+                        String::new()
+                    } else if most == usize::MAX {
+                        " or more".into()
+                    } else {
+                        format!(" to {most}")
+                    },
+                    args.len()
+                ),
+            ));
+        }
         let fail: &Span = &e.span;
         let matrix = |s: &mut Self, a: &Expr| -> IResult<(usize, usize, Vec<ExprId>)> {
             match s.eval(a)? {
@@ -477,12 +500,15 @@ impl Interpreter {
                 Ok(Value::Scalar(determinant(&mut self.model.ar, &d, r).at(fail)?))
             }
             "ELEMENT" => {
-                let (_, c, d) = matrix(self, &args[0])?;
-                let i = self.index_value(&args[1])? as usize;
-                let j = self.index_value(&args[2])? as usize;
-                d.get((i - 1) * c + j - 1)
-                    .map(|x| Value::Scalar(*x))
-                    .ok_or_else(|| Diagnostic::error(e.span.clone(), "ELEMENT index out of range"))
+                let (r, c, d) = matrix(self, &args[0])?;
+                let i = self.index_value(&args[1])?;
+                let j = self.index_value(&args[2])?;
+                super::value::matrix_position(&[i, j], r, c).map(|k| Value::Scalar(d[k])).ok_or_else(|| {
+                    Diagnostic::error(
+                        e.span.clone(),
+                        format!("ELEMENT({i}, {j}) is outside the {r}x{c} matrix"),
+                    )
+                })
             }
             "DIAGMAT" => {
                 let (n, m, x) = match args.len() {
@@ -500,6 +526,12 @@ impl Interpreter {
                     }
                 };
                 let cols = m.unwrap_or(n);
+                if !(1..=1000).contains(&n) || !(1..=1000).contains(&cols) {
+                    return Err(Diagnostic::error(
+                        e.span.clone(),
+                        "DIAGMAT sizes must be between 1 and 1000",
+                    ));
+                }
                 let z = self.model.ar.zero();
                 let data = (0..n * cols).map(|k| if k / cols == k % cols { x } else { z }).collect();
                 Ok(Value::Matrix { rows: n, cols, data })
