@@ -37,6 +37,9 @@ pub enum ExprError {
     /// number).
     #[error("the linear system has no unique solution (singular coefficient matrix)")]
     SingularSystem,
+    /// An expansion would produce too many terms.
+    #[error("expanding this expression would give {0} terms or more; expand a smaller expression")]
+    TooLarge(usize),
     /// A symbol name declared twice with different kinds.
     #[error("symbol `{0}` is already declared with another kind")]
     SymbolKindClash(String),

@@ -8,6 +8,8 @@ type Res = Result<ExprId, ExprError>;
 
 /// Largest positive integer power of a sum that expansion multiplies out.
 const MAX_EXPANDED_POWER: i64 = 64;
+/// Most terms one expanded product may have; beyond it expansion is refused, not attempted.
+pub(crate) const MAX_EXPANDED_TERMS: usize = 200_000;
 
 impl Arena {
     /// Multiplies out products of sums and positive integer powers of sums, everywhere.
@@ -50,6 +52,9 @@ impl Arena {
                 Node::Sum(t) => t.to_vec(),
                 _ => vec![f],
             };
+            if acc.len().saturating_mul(terms.len()) > MAX_EXPANDED_TERMS {
+                return Err(ExprError::TooLarge(acc.len().saturating_mul(terms.len())));
+            }
             let mut next = Vec::with_capacity(acc.len() * terms.len());
             for &a in &acc {
                 for &t in &terms {

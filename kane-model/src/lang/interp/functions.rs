@@ -547,6 +547,13 @@ impl Interpreter {
                     match &a.kind {
                         ExprKind::Range(lo, hi) => {
                             let (lo, hi) = (self.index_value(lo)?, self.index_value(hi)?);
+                            let limit = if upper == "ROWS" { r } else { c } as i64;
+                            if lo < 1 || hi > limit || lo > hi {
+                                return Err(Diagnostic::error(
+                                    a.span.clone(),
+                                    format!("{upper} range {lo}:{hi} is outside 1..{limit}"),
+                                ));
+                            }
                             picks.extend(lo..=hi);
                         }
                         _ => picks.push(self.index_value(a)?),
