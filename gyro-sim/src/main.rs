@@ -39,12 +39,15 @@ fn main() -> ExitCode {
     match run::run(&scene, Some(&out)) {
         Ok(s) => {
             println!(
-                "{}: {} steps ({} rejected), {} RHS evaluations, {:.3} ms; wrote {} rows to {} and {}",
+                "{}: {} steps ({} rejected), {} RHS evaluations, {:.3} ms; kinetic energy {:.6e} -> {:.6e} (change {:+.6e}); wrote {} rows to {} and {}",
                 scene.title,
                 s.stats.steps,
                 s.stats.rejected,
                 s.stats.rhs_evals,
                 s.wall.as_secs_f64() * 1e3,
+                s.kinetic_energy.0,
+                s.kinetic_energy.1,
+                s.kinetic_energy.1 - s.kinetic_energy.0,
                 s.table.rows.len(),
                 s.csv.as_ref().map_or(String::new(), |p| p.display().to_string()),
                 s.plot.as_ref().map_or(String::new(), |p| p.display().to_string()),

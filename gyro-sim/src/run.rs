@@ -41,6 +41,9 @@ pub struct RunSummary {
     pub table: Table,
     /// The states that were integrated (cyclic coordinates nothing needed are left out).
     pub integrated: Vec<&'static str>,
+    /// Kinetic energy at the start and at the end (the end's cyclic coordinates at zero when
+    /// they were not integrated: no energy depends on them).
+    pub kinetic_energy: (f64, f64),
 }
 
 /// A generated model with parameters, as an ODE system.
@@ -302,11 +305,14 @@ fn run_model<M: GeneratedModel>(scene: &Scene, out_dir: Option<&Path>) -> Result
     let sys = Reduced::new(&full_sys, keep.clone());
     let y_reduced: Vec<f64> = keep.iter().map(|k| y[*k]).collect();
     let mut full_y = vec![0.0; M::STATE_NAMES.len()];
+    let ke_start = M::kinetic_energy(0.0, &y, &params);
+    let mut y_end = y.clone();
     let mut rows: Vec<Vec<f64>> = Vec::with_capacity(times.len());
     let mut outs = vec![0.0; M::OUTPUT_NAMES.len()];
     let start = Instant::now();
     let stats = ode::integrate(&sys, 0.0, &y_reduced, &times, method, |t, y_red| {
         sys.expand(y_red, &mut full_y);
+        y_end.copy_from_slice(&full_y);
         let y = &full_y[..];
         if needs_outputs {
             M::outputs(t, y, &params, &mut outs);
@@ -334,6 +340,7 @@ fn run_model<M: GeneratedModel>(scene: &Scene, out_dir: Option<&Path>) -> Result
         other => RunError::Ode(other.to_string()),
     })?;
     let wall = start.elapsed();
+    let ke_end = M::kinetic_energy(scene.t_final, &y_end, &params);
     let table = Table { title: scene.title.clone(), columns: picks.into_iter().map(|p| p.1).collect(), rows };
     let (csv, plot) = match out_dir {
         Some(dir) => {
@@ -353,5 +360,6 @@ fn run_model<M: GeneratedModel>(scene: &Scene, out_dir: Option<&Path>) -> Result
         plot,
         table,
         integrated: keep.iter().map(|k| M::STATE_NAMES[*k]).collect(),
+        kinetic_energy: (ke_start, ke_end),
     })
 }

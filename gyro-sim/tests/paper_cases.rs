@@ -139,3 +139,18 @@ fn cyclic_coordinates_nothing_needs_are_not_integrated() {
         }
     }
 }
+
+#[test]
+fn trial_one_kinetic_energy_grows_by_the_work_of_the_torque() {
+    // Only Y acts, on u1 (generalized force -Y): dT/dt = -Y u1, so
+    // T(t) - T(0) = Y^2 t^2 / (2 (I1 + J1)) with u1 = -Y t / (I1 + J1).
+    let summary = run(&scene("scenes/paper/trial1.toml"), None).unwrap();
+    let (m1, m2, h1, h2, w, y, t) = (2.0, 2.0, 0.6, 0.5, 0.025, 10.0, 5.0);
+    let i1 = 2.0 / 3.0 * m1 * (h1 * w - w * w);
+    let j1 = 2.0 / 3.0 * m2 * (h2 * w - w * w);
+    let (start, end) = summary.kinetic_energy;
+    let k1 = 50.0 * 0.3f64 * 0.3 / 2.0;
+    assert!((start - k1 * 100.0 / 2.0).abs() < 1e-9, "T(0) = K1 U3^2 / 2: {start}");
+    let work = y * y * t * t / (2.0 * (i1 + j1));
+    assert!(((end - start) - work).abs() < 1e-6 * work, "{} vs {work}", end - start);
+}

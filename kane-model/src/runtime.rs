@@ -30,6 +30,8 @@ pub trait GeneratedModel {
     fn derive(p: &Self::Params) -> Self::Derived;
     /// `dy = f(t, y)` with `d = derive(p)`: the fast path for integration.
     fn rhs_derived(t: f64, y: &[f64], p: &Self::Params, d: &Self::Derived, dy: &mut [f64]);
+    /// The kinetic energy at `(t, y)`.
+    fn kinetic_energy(t: f64, y: &[f64], p: &Self::Params) -> f64;
     /// The outputs at `(t, y)`.
     fn outputs(t: f64, y: &[f64], p: &Self::Params, out: &mut [f64]);
     /// Arithmetic operations per call of `rhs` and of `outputs`.

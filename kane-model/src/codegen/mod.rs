@@ -91,6 +91,21 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
         }
     }
 
+    // Kinetic energy in terms of the states (for run summaries); q' eliminated like velocities.
+    let ke = loaded.model.kinetic_energy()?;
+    let ke = {
+        let mut map = FxHashMap::default();
+        for (q, rhs) in eqs.coordinates.iter().zip(&eqs.kinematics) {
+            let name = format!("{}'", loaded.model.ar.symbol_info(*q).name);
+            if let Some(d) = loaded.model.ar.lookup(&name) {
+                map.insert(loaded.model.ar.symbol_expr(d), *rhs);
+            }
+        }
+        for (u, e) in &eqs.dependent_speeds {
+            map.insert(loaded.model.ar.symbol_expr(*u), *e);
+        }
+        loaded.model.ar.subs(ke, &map)?
+    };
     let ar = &mut loaded.model.ar;
     let mut rhs_roots: Vec<ExprId> = Vec::new();
     for i in 0..n {
@@ -105,6 +120,7 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
     // Parameters: the constants the code reads, in declaration order.
     let mut all = rhs_roots.clone();
     all.extend(&out_roots);
+    all.push(ke);
     let udot: Vec<SymbolId> = eqs.speed_derivatives.clone();
     let mut params: Vec<SymbolId> = Vec::new();
     for s in ar.free_symbols(&all) {
@@ -297,6 +313,34 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
         (body, ops)
     };
 
+    // Kinetic energy as one expression, its shared parts named.
+    let ke_body = {
+        let cse = Cse::new(ar, &[ke]);
+        let names: FxHashMap<ExprId, TokenStream> = cse
+            .temps
+            .iter()
+            .enumerate()
+            .map(|(i, e)| {
+                let x = format_ident!("__x{}", i);
+                (*e, quote!(#x))
+            })
+            .collect();
+        let style = RustStyle {
+            scalar: Scalar::Generic(t_ident.clone()),
+            symbol: &symbol_tokens,
+            names: Some(&names),
+        };
+        let mut body = TokenStream::new();
+        for (i, e) in cse.temps.iter().enumerate() {
+            let x = format_ident!("__x{}", i);
+            let v = ar.to_rust(*e, &style);
+            body.extend(quote!(let #x: #t_ident = #v;));
+        }
+        let v = names.get(&ke).cloned().unwrap_or_else(|| ar.to_rust(ke, &style));
+        body.extend(quote!(#v));
+        body
+    };
+
     // Coordinates no equation reads (cyclic), and the states each output reads.
     let rhs_free = ar.free_symbols(&rhs_roots);
     let cyclic: Vec<usize> = (0..nq).filter(|i| !rhs_free.contains(&states[*i])).collect();
@@ -397,6 +441,14 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
             #out_body
         }
 
+        /// The kinetic energy at `(t, y)`.
+        #[allow(unused_variables, clippy::all)]
+        pub fn kinetic_energy<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params) -> T {
+            #( let #param_idents: T = ::kane_model::__private::cast::<T>(p.#param_idents); )*
+            #( let #state_idents: T = y[#state_idx]; )*
+            #ke_body
+        }
+
         /// The Jacobian `d(y')/dy` at `(t, y)`, row-major, exact to round-off: one pass of `rhs`
         /// in dual numbers per column.
         pub fn jacobian(t: f64, y: &[f64], p: &Params, jac: &mut [f64]) {
@@ -456,6 +508,9 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
             }
             fn outputs(t: f64, y: &[f64], p: &Params, out: &mut [f64]) {
                 outputs(t, y, p, out)
+            }
+            fn kinetic_energy(t: f64, y: &[f64], p: &Params) -> f64 {
+                kinetic_energy(t, y, p)
             }
         }
 
