@@ -278,31 +278,8 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
 
     // outputs: y' from rhs, then the output expressions.
     let (out_body, out_ops) = {
-        let cse = Cse::new(ar, &out_roots);
-        let names: FxHashMap<ExprId, TokenStream> = cse
-            .temps
-            .iter()
-            .enumerate()
-            .map(|(i, e)| {
-                (*e, {
-                    let x = format_ident!("__x{}", i);
-                    quote!(#x)
-                })
-            })
-            .collect();
-        let style = RustStyle {
-            scalar: Scalar::Generic(t_ident.clone()),
-            symbol: &symbol_tokens,
-            names: Some(&names),
-        };
-        let mut body = TokenStream::new();
-        for (i, e) in cse.temps.iter().enumerate() {
-            let x = format_ident!("__x{}", i);
-            let v = ar.to_rust(*e, &style);
-            body.extend(quote!(let #x: #t_ident = #v;));
-        }
-        for (i, e) in out_roots.iter().enumerate() {
-            let v = names.get(e).cloned().unwrap_or_else(|| ar.to_rust(*e, &style));
+        let (mut body, values) = straight_line(ar, &out_roots, &symbol_tokens, &t_ident);
+        for (i, v) in values.iter().enumerate() {
             body.extend(quote!(out[#i] = #v;));
         }
         let mut inputs: Vec<SymbolId> = states.clone();
@@ -315,28 +292,8 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
 
     // Kinetic energy as one expression, its shared parts named.
     let ke_body = {
-        let cse = Cse::new(ar, &[ke]);
-        let names: FxHashMap<ExprId, TokenStream> = cse
-            .temps
-            .iter()
-            .enumerate()
-            .map(|(i, e)| {
-                let x = format_ident!("__x{}", i);
-                (*e, quote!(#x))
-            })
-            .collect();
-        let style = RustStyle {
-            scalar: Scalar::Generic(t_ident.clone()),
-            symbol: &symbol_tokens,
-            names: Some(&names),
-        };
-        let mut body = TokenStream::new();
-        for (i, e) in cse.temps.iter().enumerate() {
-            let x = format_ident!("__x{}", i);
-            let v = ar.to_rust(*e, &style);
-            body.extend(quote!(let #x: #t_ident = #v;));
-        }
-        let v = names.get(&ke).cloned().unwrap_or_else(|| ar.to_rust(ke, &style));
+        let (mut body, values) = straight_line(ar, &[ke], &symbol_tokens, &t_ident);
+        let v = &values[0];
         body.extend(quote!(#v));
         body
     };
@@ -517,6 +474,37 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
         const _: usize = #np;
     };
     Ok(Emitted { tokens, op_counts: (rhs_ops, out_ops), doc })
+}
+
+/// The shared subexpressions of `roots` as `let __xi: T = ...;` statements, and each root's
+/// value written in them.
+fn straight_line(
+    ar: &crate::expr::Arena,
+    roots: &[ExprId],
+    symbol_tokens: &dyn Fn(SymbolId) -> TokenStream,
+    t_ident: &Ident,
+) -> (TokenStream, Vec<TokenStream>) {
+    let cse = Cse::new(ar, roots);
+    let names: FxHashMap<ExprId, TokenStream> = cse
+        .temps
+        .iter()
+        .enumerate()
+        .map(|(i, e)| {
+            let x = format_ident!("__x{}", i);
+            (*e, quote!(#x))
+        })
+        .collect();
+    let style =
+        RustStyle { scalar: Scalar::Generic(t_ident.clone()), symbol: symbol_tokens, names: Some(&names) };
+    let mut body = TokenStream::new();
+    for (i, e) in cse.temps.iter().enumerate() {
+        let x = format_ident!("__x{}", i);
+        let v = ar.to_rust(*e, &style);
+        body.extend(quote!(let #x: #t_ident = #v;));
+    }
+    let values =
+        roots.iter().map(|e| names.get(e).cloned().unwrap_or_else(|| ar.to_rust(*e, &style))).collect();
+    (body, values)
 }
 
 /// `f64::NAN` as tokens for NaN, else the literal.
