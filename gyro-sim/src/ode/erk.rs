@@ -43,6 +43,39 @@ const MAX_STEPS: usize = 10_000_000;
 const BETA: f64 = 0.04;
 const SAFETY: f64 = 0.9;
 
+/// PI step-size control `h_new = h * SAFETY * err^-alpha * err_old^beta` with
+/// `alpha = 1/order - 0.75 beta` (Hairer's DOPRI5/DOP853), in logarithms: one `ln` and one
+/// `exp` per accepted step instead of two `powf`.
+struct PiControl {
+    alpha: f64,
+    inv_order: f64,
+    ln_err_old: f64,
+}
+
+impl PiControl {
+    fn new(order: u32) -> Self {
+        let inv_order = 1.0 / order as f64;
+        Self { alpha: inv_order - 0.75 * BETA, inv_order, ln_err_old: 1e-4f64.ln() }
+    }
+
+    /// The step-size factor after an accepted step with error `err <= 1`.
+    fn accepted(&mut self, err: f64) -> f64 {
+        let ln_err = err.max(1e-10).ln();
+        let fac = (-self.alpha * ln_err + BETA * self.ln_err_old).exp();
+        self.ln_err_old = ln_err.max(1e-4f64.ln());
+        (SAFETY * fac).clamp(0.2, 10.0)
+    }
+
+    /// The step-size factor after a rejected step (`err > 1` or not finite).
+    fn rejected(&self, err: f64) -> f64 {
+        if err.is_finite() {
+            (SAFETY * (-self.inv_order * err.ln()).exp()).max(0.2)
+        } else {
+            0.2
+        }
+    }
+}
+
 struct Work<'a, S: System + ?Sized> {
     sys: &'a S,
     tab: &'static Tableau,
@@ -193,7 +226,7 @@ pub fn integrate<S: System + ?Sized>(
         }
         Method::Fixed(_, step) => step,
     };
-    let mut err_old: f64 = 1e-4;
+    let mut control = PiControl::new(tab.order);
     if let (Method::Adaptive(_, tol), Some(d)) = (method, tab.dense) {
         return dense_run(&mut w, t, y, h, tol, d, times, &mut out);
     }
@@ -232,21 +265,12 @@ pub fn integrate<S: System + ?Sized>(
                             y.copy_from_slice(&w.ynew);
                             w.next_start(t);
                             w.stats.steps += 1;
-                            // PI control: h err^-alpha err_old^beta, alpha = 1/order - 0.75 beta.
-                            let alpha = 1.0 / tab.order as f64 - 0.75 * BETA;
-                            let fac =
-                                (SAFETY * err.max(1e-10).powf(-alpha) * err_old.powf(BETA)).clamp(0.2, 10.0);
-                            let proposed = h_try * fac;
+                            let proposed = h_try * control.accepted(err);
                             // A step shortened to land on an output time does not shrink the next.
                             h = if last { proposed.max(h) } else { proposed };
-                            err_old = err.max(1e-4);
                             break;
                         }
-                        if !err.is_finite() {
-                            h_try *= 0.2;
-                        } else {
-                            h_try *= (SAFETY * err.powf(-1.0 / tab.order as f64)).max(0.2);
-                        }
+                        h_try *= control.rejected(err);
                         last = false;
                         w.stats.rejected += 1;
                     }
@@ -280,7 +304,7 @@ fn dense_run<S: System + ?Sized>(
         next += 1;
     }
     let mut y_out = vec![0.0; w.n];
-    let mut err_old: f64 = 1e-4;
+    let mut control = PiControl::new(tab.order);
     while t < t_end {
         if w.stats.steps >= MAX_STEPS {
             return Err(OdeError::TooManySteps { time: t, max: MAX_STEPS });
@@ -311,14 +335,10 @@ fn dense_run<S: System + ?Sized>(
                 y.copy_from_slice(&w.ynew);
                 w.next_start(t);
                 w.stats.steps += 1;
-                let alpha = 1.0 / tab.order as f64 - 0.75 * BETA;
-                let fac = (SAFETY * err.max(1e-10).powf(-alpha) * err_old.powf(BETA)).clamp(0.2, 10.0);
-                h = h_try * fac;
-                err_old = err.max(1e-4);
+                h = h_try * control.accepted(err);
                 break;
             }
-            h_try *=
-                if err.is_finite() { (SAFETY * err.powf(-1.0 / tab.order as f64)).max(0.2) } else { 0.2 };
+            h_try *= control.rejected(err);
             last = false;
             w.stats.rejected += 1;
         }
@@ -357,4 +377,26 @@ fn initial_step<S: System + ?Sized>(
         (0.01 / d1.max(d2)).powf(1.0 / (w.tab.order as f64 + 1.0))
     };
     (100.0 * h0).min(h1).min(span.abs().max(f64::MIN_POSITIVE))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pi_control_matches_the_power_law() {
+        let mut control = PiControl::new(8);
+        let alpha = 1.0 / 8.0 - 0.75 * BETA;
+        let mut err_old: f64 = 1e-4;
+        for err in [0.5f64, 1e-3, 1e-12, 0.9, 1.0, 0.0] {
+            let want = (SAFETY * err.max(1e-10).powf(-alpha) * err_old.powf(BETA)).clamp(0.2, 10.0);
+            let got = control.accepted(err);
+            assert!((got - want).abs() <= 1e-13 * want, "err {err}: {got} vs {want}");
+            err_old = err.max(1e-4);
+        }
+        let rejected = control.rejected(4.0);
+        assert!((rejected - (SAFETY * 4.0f64.powf(-0.125)).max(0.2)).abs() < 1e-14);
+        assert_eq!(control.rejected(f64::NAN), 0.2);
+        assert_eq!(control.rejected(f64::INFINITY), 0.2);
+    }
 }
