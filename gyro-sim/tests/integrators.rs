@@ -109,11 +109,48 @@ fn dense_output_is_accurate_between_steps_and_saves_steps() {
         .unwrap();
     assert!(worst < 1e-7, "largest error {worst:e}");
     assert!(stats.steps < 400, "{} steps for 1000 outputs", stats.steps);
-    // DOP853 (no dense output here) lands on every output time.
-    let landing =
-        integrate(&Oscillator, 0.0, &[0.0, 1.0], &times, Method::Adaptive(&tableau::DOP853, tol), |_, _| {
+    // DOP853's septic interpolant: as accurate between steps as at them, in a few dozen steps.
+    let mut worst8: f64 = 0.0;
+    let stats8 =
+        integrate(&Oscillator, 0.0, &[0.0, 1.0], &times, Method::Adaptive(&tableau::DOP853, tol), |t, y| {
+            worst8 = worst8.max((y[0] - t.sin()).abs()).max((y[1] - t.cos()).abs());
             Ok(())
         })
         .unwrap();
-    assert!(landing.steps >= 1000);
+    assert!(worst8 < 1e-8, "dop853 largest error {worst8:e}");
+    assert!(stats8.steps < 150, "dop853: {} steps for 1000 outputs", stats8.steps);
+}
+
+/// `y' = -2 t y`, `y = exp(-t^2)`: time enters the right-hand side, so every stage node counts.
+struct Gaussian;
+
+impl System for Gaussian {
+    fn dim(&self) -> usize {
+        1
+    }
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        dy[0] = -2.0 * t * y[0];
+    }
+}
+
+#[test]
+fn dop853_dense_output_converges_with_its_order() {
+    // Interpolation error at 0.013-spaced output times shrinks with the tolerance like the
+    // steps' own error, and stays near it (a wrong extra stage or `d` row would not).
+    let times: Vec<f64> = (0..=230).map(|i| i as f64 * 0.013).collect();
+    let run = |tol: f64| {
+        let mut worst: f64 = 0.0;
+        let m = Method::Adaptive(&tableau::DOP853, Tolerances { rtol: tol, atol: tol });
+        let stats = integrate(&Gaussian, 0.0, &[1.0], &times, m, |t, y| {
+            worst = worst.max((y[0] - (-t * t).exp()).abs());
+            Ok(())
+        })
+        .unwrap();
+        (worst, stats.steps)
+    };
+    let (e6, s6) = run(1e-6);
+    let (e10, s10) = run(1e-10);
+    assert!(s6 < 100 && s10 < 200, "steps {s6}, {s10}");
+    assert!(e6 < 1e-5, "tol 1e-6: error {e6:e}");
+    assert!(e10 < 2e-9 && e10 < e6 * 1e-2, "tol 1e-10: error {e10:e} (tol 1e-6: {e6:e})");
 }

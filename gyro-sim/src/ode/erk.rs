@@ -1,11 +1,12 @@
 //! Explicit Runge-Kutta integration: adaptive steps with PI control for embedded pairs, fixed
-//! steps otherwise. Output times are hit exactly (a step is shortened to land on them), so the
-//! value at `t_final` is at `t_final`, not at a sum of step sizes.
+//! steps otherwise. Pairs with a continuous extension interpolate output times inside steps;
+//! others shorten a step to land on them. Either way the value at `t_final` is a step's own value
+//! at `t_final`, not at a sum of step sizes.
 
 // Stage arithmetic walks one component index over several arrays at once.
 #![allow(clippy::needless_range_loop)]
 
-use super::tableau::Tableau;
+use super::tableau::{Dense, Tableau};
 use super::{OdeError, System};
 
 /// Error tolerances in Autolev's sense: each component's local error is kept below
@@ -85,6 +86,8 @@ struct Work<'a, S: System + ?Sized> {
     tmp: Vec<f64>,
     ynew: Vec<f64>,
     scale: Vec<f64>,
+    /// The septic interpolant's seven coefficient vectors for the last accepted step.
+    dense_coef: Vec<f64>,
     stats: Stats,
 }
 
@@ -152,24 +155,66 @@ impl<S: System + ?Sized> Work<'_, S> {
         }
     }
 
-    /// `y(t_old + theta h)` from the accepted step `y -> ynew` (before the stages are reused):
-    /// `y0 + th (dy + (1 - th)(b + th (dy - h k_last - b + (1 - th) h sum_j d_j k_j)))` with
-    /// `dy = ynew - y0`, `b = h k_0 - dy` (Hairer's contd5).
-    fn interpolate(&self, y0: &[f64], h: f64, theta: f64, d: &[f64], out: &mut [f64]) {
-        let n = self.n;
-        let last = self.tab.c.len() - 1;
-        let t1 = 1.0 - theta;
+    /// Prepares interpolation in the accepted step `y0 -> ynew` of size `h` from `t` (before
+    /// the stages are reused): for the septic extension, its three extra stages and the
+    /// coefficient vectors of Hairer's `contd8`.
+    fn prepare_dense(&mut self, t: f64, y0: &[f64], h: f64, dense: &Dense) {
+        let Dense::Septic { c, a, d } = dense else { return };
+        let (n, s) = (self.n, self.tab.c.len());
+        for (i, (ci, ai)) in c.iter().zip(a.iter()).enumerate() {
+            Self::combine(&self.k, n, y0, h, ai, &mut self.tmp);
+            let (_, rest) = self.k.split_at_mut((s + i) * n);
+            self.sys.rhs(t + ci * h, &self.tmp, &mut rest[..n]);
+            self.stats.rhs_evals += 1;
+        }
+        let coef = &mut self.dense_coef;
         for m in 0..n {
             let dy = self.ynew[m] - y0[m];
-            let bspl = h * self.k[m] - dy;
-            let r4 = dy - h * self.k[last * n + m] - bspl;
-            let mut r5 = 0.0;
-            for (j, dj) in d.iter().enumerate() {
-                if *dj != 0.0 {
-                    r5 += dj * self.k[j * n + m];
+            let (f0, f1) = (self.k[m], self.k[(s - 1) * n + m]);
+            coef[m] = dy;
+            coef[n + m] = h * f0 - dy;
+            coef[2 * n + m] = 2.0 * dy - h * (f0 + f1);
+        }
+        for (r, dr) in d.iter().enumerate() {
+            let row = &mut coef[(3 + r) * n..(4 + r) * n];
+            row.fill(0.0);
+            Self::accumulate(&self.k, n, h, dr, row);
+        }
+    }
+
+    /// `y(t_old + theta h)` in the accepted step `y0 -> ynew`, after [`Self::prepare_dense`].
+    /// Quartic (Hairer's contd5): `y0 + th (dy + (1 - th)(b + th (dy - h k_last - b + (1 - th) h
+    /// sum_j d_j k_j)))` with `dy = ynew - y0`, `b = h k_0 - dy`. Septic (contd8): the nested
+    /// form `y0 + th (r0 + (1 - th)(r1 + th (r2 + ...)))` of the coefficient vectors.
+    fn interpolate(&self, y0: &[f64], h: f64, theta: f64, dense: &Dense, out: &mut [f64]) {
+        let n = self.n;
+        let t1 = 1.0 - theta;
+        match dense {
+            Dense::Quartic(d) => {
+                let last = self.tab.c.len() - 1;
+                for m in 0..n {
+                    let dy = self.ynew[m] - y0[m];
+                    let bspl = h * self.k[m] - dy;
+                    let r4 = dy - h * self.k[last * n + m] - bspl;
+                    let mut r5 = 0.0;
+                    for (j, dj) in d.iter().enumerate() {
+                        if *dj != 0.0 {
+                            r5 += dj * self.k[j * n + m];
+                        }
+                    }
+                    out[m] = y0[m] + theta * (dy + t1 * (bspl + theta * (r4 + t1 * h * r5)));
                 }
             }
-            out[m] = y0[m] + theta * (dy + t1 * (bspl + theta * (r4 + t1 * h * r5)));
+            Dense::Septic { .. } => {
+                let rows = self.dense_coef.len() / n.max(1);
+                for m in 0..n {
+                    let mut acc = 0.0;
+                    for r in (0..rows).rev() {
+                        acc = (acc + self.dense_coef[r * n + m]) * if r % 2 == 0 { theta } else { t1 };
+                    }
+                    out[m] = y0[m] + acc;
+                }
+            }
         }
     }
 
@@ -205,14 +250,19 @@ pub fn integrate<S: System + ?Sized>(
     let tab = match method {
         Method::Adaptive(t, _) | Method::Fixed(t, _) => t,
     };
+    let (extra_stages, coef_rows) = match &tab.dense {
+        Some(Dense::Septic { c, d, .. }) => (c.len(), 3 + d.len()),
+        _ => (0, 0),
+    };
     let mut w = Work {
         sys,
         tab,
         n,
-        k: vec![0.0; n * tab.c.len()],
+        k: vec![0.0; n * (tab.c.len() + extra_stages)],
         tmp: vec![0.0; n],
         ynew: vec![0.0; n],
         scale: vec![0.0; n],
+        dense_coef: vec![0.0; n * coef_rows],
         stats: Stats::default(),
     };
     let mut t = t0;
@@ -227,7 +277,7 @@ pub fn integrate<S: System + ?Sized>(
         Method::Fixed(_, step) => step,
     };
     let mut control = PiControl::new(tab.order);
-    if let (Method::Adaptive(_, tol), Some(d)) = (method, tab.dense) {
+    if let (Method::Adaptive(_, tol), Some(d)) = (method, &tab.dense) {
         return dense_run(&mut w, t, y, h, tol, d, times, &mut out);
     }
     for &target in times {
@@ -291,7 +341,7 @@ fn dense_run<S: System + ?Sized>(
     mut y: Vec<f64>,
     mut h: f64,
     tol: Tolerances,
-    d: &[f64],
+    dense: &Dense,
     times: &[f64],
     out: &mut impl FnMut(f64, &[f64]) -> Result<(), String>,
 ) -> Result<Stats, OdeError> {
@@ -322,11 +372,16 @@ fn dense_run<S: System + ?Sized>(
                 let t_new = if last { t_end } else { t + h_try };
                 check_finite(t_new, &w.ynew)?;
                 // Outputs inside the step, from the interpolant; the step's end exactly.
+                let mut prepared = false;
                 while next < times.len() && times[next] <= t_new {
                     if times[next] == t_new {
                         out(t_new, &w.ynew).map_err(OdeError::Output)?;
                     } else {
-                        w.interpolate(&y, h_try, (times[next] - t) / h_try, d, &mut y_out);
+                        if !prepared {
+                            w.prepare_dense(t, &y, h_try, dense);
+                            prepared = true;
+                        }
+                        w.interpolate(&y, h_try, (times[next] - t) / h_try, dense, &mut y_out);
                         out(times[next], &y_out).map_err(OdeError::Output)?;
                     }
                     next += 1;
