@@ -276,10 +276,10 @@ pub fn integrate<S: System + ?Sized>(
         }
         Method::Fixed(_, step) => step,
     };
-    let mut control = PiControl::new(tab.order);
     if let (Method::Adaptive(_, tol), Some(d)) = (method, &tab.dense) {
         return dense_run(&mut w, t, y, h, tol, d, times, &mut out);
     }
+    let mut control = PiControl::new(tab.order);
     for &target in times {
         while t < target {
             if w.stats.steps >= MAX_STEPS {
@@ -299,37 +299,64 @@ pub fn integrate<S: System + ?Sized>(
                     }
                 }
                 Method::Adaptive(_, tol) => {
-                    let e = tab.e.unwrap_or(&[]);
-                    let remaining = target - t;
-                    let (mut h_try, mut last) =
-                        if h >= remaining * (1.0 - 1e-12) { (remaining, true) } else { (h, false) };
-                    loop {
-                        if h_try < 16.0 * f64::EPSILON * t.abs().max(1.0) {
-                            return Err(OdeError::StepSizeUnderflow { time: t, step: h_try });
-                        }
-                        w.step(t, &y, h_try);
-                        let err = w.error(&y, h_try, e, tol);
-                        if err <= 1.0 {
-                            t = if last { target } else { t + h_try };
-                            check_finite(t, &w.ynew)?;
-                            y.copy_from_slice(&w.ynew);
-                            w.next_start(t);
-                            w.stats.steps += 1;
-                            let proposed = h_try * control.accepted(err);
-                            // A step shortened to land on an output time does not shrink the next.
-                            h = if last { proposed.max(h) } else { proposed };
-                            break;
-                        }
-                        h_try *= control.rejected(err);
-                        last = false;
-                        w.stats.rejected += 1;
-                    }
+                    let step = accepted_step(&mut w, t, &y, h, target, tol, &control)?;
+                    t = step.t_new;
+                    check_finite(t, &w.ynew)?;
+                    y.copy_from_slice(&w.ynew);
+                    w.next_start(t);
+                    w.stats.steps += 1;
+                    let proposed = step.h * control.accepted(step.err);
+                    // A step shortened to land on an output time does not shrink the next.
+                    h = if step.at_target { proposed.max(h) } else { proposed };
                 }
             }
         }
         out(target, &y).map_err(OdeError::Output)?;
     }
     Ok(w.stats)
+}
+
+/// An accepted step from `(t, y)` toward `target`, in `w.ynew` and the stages.
+struct AcceptedStep {
+    /// The step size used.
+    h: f64,
+    /// Where it ends: `target` exactly when it reaches it.
+    t_new: f64,
+    /// Its error estimate (at most 1).
+    err: f64,
+    /// It ends at `target`.
+    at_target: bool,
+}
+
+/// Tries `h` (or the rest of the way to `target` when `h` nearly reaches it), shrinking the step
+/// after each rejection until the error estimate is at most 1.
+fn accepted_step<S: System + ?Sized>(
+    w: &mut Work<'_, S>,
+    t: f64,
+    y: &[f64],
+    h: f64,
+    target: f64,
+    tol: Tolerances,
+    control: &PiControl,
+) -> Result<AcceptedStep, OdeError> {
+    let e = w.tab.e.unwrap_or(&[]);
+    let remaining = target - t;
+    let (mut h_try, mut at_target) =
+        if h >= remaining * (1.0 - 1e-12) { (remaining, true) } else { (h, false) };
+    loop {
+        if h_try < 16.0 * f64::EPSILON * t.abs().max(1.0) {
+            return Err(OdeError::StepSizeUnderflow { time: t, step: h_try });
+        }
+        w.step(t, y, h_try);
+        let err = w.error(y, h_try, e, tol);
+        if err <= 1.0 {
+            let t_new = if at_target { target } else { t + h_try };
+            return Ok(AcceptedStep { h: h_try, t_new, err, at_target });
+        }
+        h_try *= control.rejected(err);
+        at_target = false;
+        w.stats.rejected += 1;
+    }
 }
 
 /// Adaptive stepping to the last output time only, with outputs in between from the dense
@@ -345,8 +372,6 @@ fn dense_run<S: System + ?Sized>(
     times: &[f64],
     out: &mut impl FnMut(f64, &[f64]) -> Result<(), String>,
 ) -> Result<Stats, OdeError> {
-    let tab = w.tab;
-    let e = tab.e.unwrap_or(&[]);
     let Some(&t_end) = times.last() else { return Ok(w.stats) };
     let mut next = 0;
     while next < times.len() && times[next] <= t {
@@ -354,49 +379,33 @@ fn dense_run<S: System + ?Sized>(
         next += 1;
     }
     let mut y_out = vec![0.0; w.n];
-    let mut control = PiControl::new(tab.order);
+    let mut control = PiControl::new(w.tab.order);
     while t < t_end {
         if w.stats.steps >= MAX_STEPS {
             return Err(OdeError::TooManySteps { time: t, max: MAX_STEPS });
         }
-        let remaining = t_end - t;
-        let (mut h_try, mut last) =
-            if h >= remaining * (1.0 - 1e-12) { (remaining, true) } else { (h, false) };
-        loop {
-            if h_try < 16.0 * f64::EPSILON * t.abs().max(1.0) {
-                return Err(OdeError::StepSizeUnderflow { time: t, step: h_try });
-            }
-            w.step(t, &y, h_try);
-            let err = w.error(&y, h_try, e, tol);
-            if err <= 1.0 {
-                let t_new = if last { t_end } else { t + h_try };
-                check_finite(t_new, &w.ynew)?;
-                // Outputs inside the step, from the interpolant; the step's end exactly.
-                let mut prepared = false;
-                while next < times.len() && times[next] <= t_new {
-                    if times[next] == t_new {
-                        out(t_new, &w.ynew).map_err(OdeError::Output)?;
-                    } else {
-                        if !prepared {
-                            w.prepare_dense(t, &y, h_try, dense);
-                            prepared = true;
-                        }
-                        w.interpolate(&y, h_try, (times[next] - t) / h_try, dense, &mut y_out);
-                        out(times[next], &y_out).map_err(OdeError::Output)?;
-                    }
-                    next += 1;
+        let step = accepted_step(w, t, &y, h, t_end, tol, &control)?;
+        check_finite(step.t_new, &w.ynew)?;
+        // Outputs inside the step, from the interpolant; the step's end exactly.
+        let mut prepared = false;
+        while next < times.len() && times[next] <= step.t_new {
+            if times[next] == step.t_new {
+                out(step.t_new, &w.ynew).map_err(OdeError::Output)?;
+            } else {
+                if !prepared {
+                    w.prepare_dense(t, &y, step.h, dense);
+                    prepared = true;
                 }
-                t = t_new;
-                y.copy_from_slice(&w.ynew);
-                w.next_start(t);
-                w.stats.steps += 1;
-                h = h_try * control.accepted(err);
-                break;
+                w.interpolate(&y, step.h, (times[next] - t) / step.h, dense, &mut y_out);
+                out(times[next], &y_out).map_err(OdeError::Output)?;
             }
-            h_try *= control.rejected(err);
-            last = false;
-            w.stats.rejected += 1;
+            next += 1;
         }
+        t = step.t_new;
+        y.copy_from_slice(&w.ynew);
+        w.next_start(t);
+        w.stats.steps += 1;
+        h = step.h * control.accepted(step.err);
     }
     Ok(w.stats)
 }
