@@ -56,15 +56,7 @@ fn contact_fixed_disk_matches_sympys_closed_form() {
             -2.0 * u1 * u3 / 3.0,
             (-2.0 * u2 + u3 * q2.tan()) * u1,
         ];
-        for i in 0..3 {
-            assert!(
-                (got[i] - want[i]).abs() < 1e-11 * want[i].abs().max(1.0),
-                "u{}' {} vs {}",
-                i + 1,
-                got[i],
-                want[i]
-            );
-        }
+        assert_speed_rates_agree(&got, &want);
     }
 }
 
@@ -88,20 +80,25 @@ fn nonholonomic_disk_equals_the_contact_fixed_disk() {
             })
             .collect();
         let want = udot(&fixed.model.ar, &fixed_eqs, &by_name);
-        for i in 0..3 {
-            assert!(
-                (got[i] - want[i]).abs() < 1e-11 * want[i].abs().max(1.0),
-                "u{}' {} vs {}",
-                i + 1,
-                got[i],
-                want[i]
-            );
-        }
+        assert_speed_rates_agree(&got, &want);
         // The contact point moves as the rolling constraint says: x' = r (u2 - u3 tan q2) cos q1.
         let v = |n: &str| value(&tracked.model.ar, &vals, n);
         let ar = &tracked.model.ar;
         let xdot = ar.eval(&[eqs.kinematics[3]], |s| vals.iter().find(|x| x.0 == s).map(|x| x.1)).unwrap()[0];
         let want_x = v("r") * (v("u2") - v("u3") * v("q2").tan()) * v("q1").cos();
         assert!((xdot - want_x).abs() < 1e-12 * want_x.abs().max(1.0), "x' {xdot} vs {want_x}");
+    }
+}
+
+/// The three speed derivatives agree to 1e-11 relative.
+fn assert_speed_rates_agree(got: &[f64], want: &[f64]) {
+    for i in 0..3 {
+        assert!(
+            (got[i] - want[i]).abs() < 1e-11 * want[i].abs().max(1.0),
+            "u{}' {} vs {}",
+            i + 1,
+            got[i],
+            want[i]
+        );
     }
 }
