@@ -45,6 +45,69 @@ fn run(method: Method, reference: &[Vec<f64>]) -> (usize, f64) {
     (stats.rhs_evals, worst)
 }
 
+/// The hand-written RHS the 12 ns anchor describes, written from the hand derivation
+/// (tests/tests/gimbal_hand_derivation.rs): constants computed once, `u2'` from `M22` alone and
+/// the 1-3 block by its 2x2 inverse.
+struct HandGimbal {
+    i1: f64,
+    jk: f64,
+    j1k1: f64,
+    k1: f64,
+    r22: f64,
+    y: f64,
+    z: f64,
+}
+
+impl HandGimbal {
+    fn new(p: &gimbal::Params) -> Self {
+        let moments = |m: f64, h: f64| {
+            let w = p.w;
+            (2.0 / 3.0 * m * (h * w - w * w), m * h * h / 6.0 - m * (h - w) * (h - w) / 6.0)
+        };
+        let (i1, _) = moments(p.m1, p.h1);
+        let (j1, j2) = moments(p.m2, p.h2);
+        let k1 = p.m3 * p.l * p.l / 2.0;
+        let k2 = p.m3 * p.l * p.l / 4.0 + p.m3 * p.h3 * p.h3 / 12.0;
+        // M11 = I1 + (J1 + K1) c^2 + (J2 + K2) s^2 = (I1 + J2 + K2) + (J1 + K1 - J2 - K2) c^2
+        HandGimbal {
+            i1: i1 + j2 + k2,
+            jk: j1 + k1 - j2 - k2,
+            j1k1: k1,
+            k1,
+            r22: 1.0 / (j1 + k2),
+            y: p.y_,
+            z: p.z,
+        }
+    }
+
+    #[inline]
+    fn rhs(&self, y: &[f64], dy: &mut [f64]) {
+        let (u1, u2, u3) = (y[3], y[4], y[5]);
+        let (s, c) = y[1].sin_cos();
+        let m11 = self.i1 + self.jk * c * c;
+        let m13 = self.j1k1 * c;
+        let f1 = -self.y + 2.0 * self.jk * s * c * u1 * u2 + self.k1 * s * u2 * u3;
+        let f2 = -self.z - self.jk * s * c * u1 * u1 - self.k1 * s * u1 * u3;
+        let f3 = self.k1 * s * u1 * u2;
+        let rdet = 1.0 / (m11 * self.k1 - m13 * m13);
+        dy[0] = u1;
+        dy[1] = u2;
+        dy[2] = u3;
+        dy[3] = (self.k1 * f1 - m13 * f3) * rdet;
+        dy[4] = f2 * self.r22;
+        dy[5] = (m11 * f3 - m13 * f1) * rdet;
+    }
+}
+
+impl gyro_sim::ode::System for HandGimbal {
+    fn dim(&self) -> usize {
+        6
+    }
+    fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+        HandGimbal::rhs(self, y, dy)
+    }
+}
+
 fn benches(c: &mut Criterion) {
     let p = gimbal::Params::default();
     let d = gimbal::derive(&p);
@@ -53,6 +116,24 @@ fn benches(c: &mut Criterion) {
     c.bench_function("gimbal_rhs_call", |b| {
         b.iter(|| {
             gimbal::rhs_derived(black_box(0.0), black_box(&y), black_box(&p), black_box(&d), &mut dy);
+            black_box(dy[5])
+        })
+    });
+    let mut p3 = p.clone();
+    gimbal::Model::set_param(&mut p3, "Y", 10.0);
+    let hand = HandGimbal::new(&p3);
+    let (mut dy_hand, mut dy_gen) = ([0.0; 6], [0.0; 6]);
+    hand.rhs(&y, &mut dy_hand);
+    gimbal::rhs(0.0, &y, &p3, &mut dy_gen);
+    for (a, b) in dy_hand.iter().zip(&dy_gen) {
+        assert!(
+            (a - b).abs() <= 1e-12 * a.abs().max(1.0),
+            "hand-written {dy_hand:?} vs generated {dy_gen:?}"
+        );
+    }
+    c.bench_function("hand_written_rhs_call", |b| {
+        b.iter(|| {
+            black_box(&hand).rhs(black_box(&y), &mut dy);
             black_box(dy[5])
         })
     });

@@ -7,8 +7,10 @@
 // Symmetric-matrix code reads clearest with two indices (M[i][j] and M[j][i]).
 #![allow(clippy::needless_range_loop)]
 
+mod hoist;
 mod ldlt;
 mod names;
+mod solve;
 
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::{format_ident, quote};
@@ -131,6 +133,26 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
             _ => return Err(CodegenError::UnsupportedSymbol(ar.symbol_info(s).name.clone())),
         }
     }
+    // Parameter-only parts (whole subexpressions, the parameter terms of sums and factors of
+    // products, reciprocals of constant pivots) become constants computed once per parameter
+    // set by `derive` and read by `rhs_derived`.
+    let is_param = |s: SymbolId| params.contains(&s);
+    let mut hoisted = hoist::Hoisted::default();
+    let mut roots = Vec::with_capacity(rhs_roots.len());
+    for &r in &rhs_roots {
+        roots.push(hoisted.rewrite(ar, r, &is_param)?);
+    }
+    // A pivot without fill-in is M's diagonal entry itself: a constant one is inverted once.
+    let mut pivot_recips: Vec<Option<ExprId>> = vec![None; n];
+    for j in 0..n {
+        let row_empty = (0..j).all(|k| ar.is_zero(eqs.mass_matrix[k][j]));
+        let mjj = eqs.mass_matrix[j][j];
+        if row_empty && !ar.is_zero(mjj) && ar.free_symbols(&[mjj]).iter().all(|s| is_param(*s)) {
+            let minus_one = ar.minus_one();
+            let recip = ar.pow(mjj, minus_one)?;
+            pivot_recips[j] = Some(hoisted.constant(ar, recip)?);
+        }
+    }
     let ident_of = |s: SymbolId| -> Ident { rust_ident(&ar.symbol_info(s).name) };
     let state_idents: Vec<Ident> = states.iter().map(|s| ident_of(*s)).collect();
     let param_idents: Vec<Ident> = params.iter().map(|s| ident_of(*s)).collect();
@@ -148,47 +170,32 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
     };
 
     // rhs: parameters and states as locals, shared subexpressions, M and f, the solve, y'.
-    // Subexpressions of the parameters alone are hoisted into `derive`, computed once per
-    // parameter set, and read by `rhs_derived`.
     let (rhs_body, derive_body, n_hoisted, rhs_ops) = {
-        let cse = Cse::new(ar, &rhs_roots);
-        let param_only = |ar: &crate::expr::Arena, e: ExprId| {
-            !matches!(
-                ar.node(e),
-                crate::expr::Node::Rational(_) | crate::expr::Node::Float(_) | crate::expr::Node::Symbol(_)
-            ) && ar.free_symbols(&[e]).iter().all(|s| params.contains(s))
-        };
-        let mut hoisted: Vec<ExprId> = cse.temps.iter().copied().filter(|e| param_only(ar, *e)).collect();
-        for &r in &rhs_roots {
-            if param_only(ar, r) && !hoisted.contains(&r) {
-                hoisted.push(r);
+        let hoisted_ident = |s: SymbolId| hoisted.index_of(s).map(|i| format_ident!("__h{}", i));
+        let local_tokens = |s: SymbolId| -> TokenStream {
+            match hoisted_ident(s) {
+                Some(h) => quote!(#h),
+                None => symbol_tokens(s),
             }
-        }
-        hoisted.sort_unstable();
+        };
+        // derive: f64 arithmetic on the parameters, shared parts computed once.
+        let defs: Vec<ExprId> = hoisted.defs.iter().map(|d| d.1).collect();
+        let mut derive = TokenStream::new();
+        let (body, values) = straight_line(ar, &defs, &symbol_tokens, Scalar::F64);
+        derive.extend(body);
+        let hs: Vec<Ident> = (0..defs.len()).map(|i| format_ident!("__h{}", i)).collect();
+        derive.extend(quote!(Derived { v: [#(#values),*] }));
+
+        let cse = Cse::new(ar, &roots);
         let mut names: FxHashMap<ExprId, TokenStream> = FxHashMap::default();
-        for (i, e) in hoisted.iter().enumerate() {
-            let h = format_ident!("__h{}", i);
-            names.insert(*e, quote!(#h));
-        }
-        let temps: Vec<ExprId> = cse.temps.iter().copied().filter(|e| !names.contains_key(e)).collect();
+        let temps: Vec<ExprId> = cse.temps.clone();
         for (i, e) in temps.iter().enumerate() {
             let x = format_ident!("__x{}", i);
             names.insert(*e, quote!(#x));
         }
-        // derive: f64 arithmetic on the parameters.
-        let f64_style = RustStyle { scalar: Scalar::F64, symbol: &symbol_tokens, names: Some(&names) };
-        let mut derive = TokenStream::new();
-        for (i, e) in hoisted.iter().enumerate() {
-            let h = format_ident!("__h{}", i);
-            let v = ar.to_rust(*e, &f64_style);
-            derive.extend(quote!(let #h: f64 = #v;));
-        }
-        let hs: Vec<Ident> = (0..hoisted.len()).map(|i| format_ident!("__h{}", i)).collect();
-        derive.extend(quote!(Derived { v: [#(#hs),*] }));
-
         let style = RustStyle {
             scalar: Scalar::Generic(t_ident.clone()),
-            symbol: &symbol_tokens,
+            symbol: &local_tokens,
             names: Some(&names),
         };
         let mut body = TokenStream::new();
@@ -234,7 +241,7 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
         let mut m_tokens: Vec<Vec<Option<TokenStream>>> = vec![vec![None; n]; n];
         for i in 0..n {
             for j in i..n {
-                let e = rhs_roots[k];
+                let e = roots[k];
                 k += 1;
                 if ar.is_zero(e) {
                     continue;
@@ -248,17 +255,19 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
         }
         let mut f_tokens = Vec::with_capacity(n);
         for i in 0..n {
-            let e = rhs_roots[k];
+            let e = roots[k];
             k += 1;
             let id = format_ident!("__f{}", i);
             let v = names.get(&e).cloned().unwrap_or_else(|| ar.to_rust(e, &style));
             body.extend(quote!(let #id: #t_ident = #v;));
             f_tokens.push(quote!(#id));
         }
-        let (solve, x, solve_ops) = ldlt::emit(&m_tokens, &f_tokens, &t_ident);
+        let recips: Vec<Option<TokenStream>> =
+            pivot_recips.iter().map(|r| r.map(|e| ar.to_rust(e, &style))).collect();
+        let (solve, x, solve_ops) = solve::emit(&m_tokens, &f_tokens, &recips, &t_ident);
         body.extend(solve);
         for i in 0..nq {
-            let e = rhs_roots[k];
+            let e = roots[k];
             k += 1;
             let v = names.get(&e).cloned().unwrap_or_else(|| ar.to_rust(e, &style));
             body.extend(quote!(dy[#i] = #v;));
@@ -267,18 +276,19 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
             let idx = nq + i;
             body.extend(quote!(dy[#idx] = #xi;));
         }
-        // Per-call operations: everything but the hoisted parameter arithmetic.
+        // Per-call operations: the rewritten equations and the solve.
         let mut inputs: Vec<SymbolId> = states.clone();
         inputs.extend(&params);
+        inputs.extend(hoisted.defs.iter().map(|d| d.0));
         inputs.push(crate::expr::TIME);
-        let all_ops = Tape::compile(ar, &rhs_roots, &inputs).map(|t| t.op_count()).unwrap_or(0);
-        let hoisted_ops = Tape::compile(ar, &hoisted, &inputs).map(|t| t.op_count()).unwrap_or(0);
-        (body, derive, hoisted.len(), all_ops - hoisted_ops.min(all_ops) + solve_ops)
+        let eq_ops = Tape::compile(ar, &roots, &inputs).map(|t| t.op_count()).unwrap_or(0);
+        (body, derive, defs.len(), eq_ops + solve_ops)
     };
 
     // outputs: y' from rhs, then the output expressions.
     let (out_body, out_ops) = {
-        let (mut body, values) = straight_line(ar, &out_roots, &symbol_tokens, &t_ident);
+        let (mut body, values) =
+            straight_line(ar, &out_roots, &symbol_tokens, Scalar::Generic(t_ident.clone()));
         for (i, v) in values.iter().enumerate() {
             body.extend(quote!(out[#i] = #v;));
         }
@@ -292,7 +302,7 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
 
     // Kinetic energy as one expression, its shared parts named.
     let ke_body = {
-        let (mut body, values) = straight_line(ar, &[ke], &symbol_tokens, &t_ident);
+        let (mut body, values) = straight_line(ar, &[ke], &symbol_tokens, Scalar::Generic(t_ident.clone()));
         let v = &values[0];
         body.extend(quote!(#v));
         body
@@ -376,6 +386,7 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
 
         /// `dy = f(t, y)` with the parameter-only quantities `d = derive(p)` precomputed.
         #[allow(unused_variables, clippy::all)]
+        #[inline]
         pub fn rhs_derived<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, __derived: &Derived, dy: &mut [T]) {
             #( let #param_idents: T = ::kane_model::__private::cast::<T>(p.#param_idents); )*
             #( let #state_idents: T = y[#state_idx]; )*
@@ -482,7 +493,7 @@ fn straight_line(
     ar: &crate::expr::Arena,
     roots: &[ExprId],
     symbol_tokens: &dyn Fn(SymbolId) -> TokenStream,
-    t_ident: &Ident,
+    scalar: Scalar,
 ) -> (TokenStream, Vec<TokenStream>) {
     let cse = Cse::new(ar, roots);
     let names: FxHashMap<ExprId, TokenStream> = cse
@@ -494,13 +505,16 @@ fn straight_line(
             (*e, quote!(#x))
         })
         .collect();
-    let style =
-        RustStyle { scalar: Scalar::Generic(t_ident.clone()), symbol: symbol_tokens, names: Some(&names) };
+    let ty = match &scalar {
+        Scalar::F64 => quote!(f64),
+        Scalar::Generic(t) => quote!(#t),
+    };
+    let style = RustStyle { scalar, symbol: symbol_tokens, names: Some(&names) };
     let mut body = TokenStream::new();
     for (i, e) in cse.temps.iter().enumerate() {
         let x = format_ident!("__x{}", i);
         let v = ar.to_rust(*e, &style);
-        body.extend(quote!(let #x: #t_ident = #v;));
+        body.extend(quote!(let #x: #ty = #v;));
     }
     let values =
         roots.iter().map(|e| names.get(e).cloned().unwrap_or_else(|| ar.to_rust(*e, &style))).collect();
