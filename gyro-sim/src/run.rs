@@ -66,6 +66,7 @@ impl<M: GeneratedModel> System for ModelSystem<M> {
     fn dim(&self) -> usize {
         M::STATE_NAMES.len()
     }
+    #[inline(always)]
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
         M::rhs_derived(t, y, &self.params, &self.derived, dy)
     }

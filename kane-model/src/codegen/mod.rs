@@ -471,6 +471,7 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
             fn derive(p: &Params) -> Derived {
                 derive(p)
             }
+            #[inline]
             fn rhs_derived(t: f64, y: &[f64], p: &Params, d: &Derived, dy: &mut [f64]) {
                 rhs_derived(t, y, p, d, dy)
             }

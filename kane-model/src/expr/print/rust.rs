@@ -76,9 +76,22 @@ impl Syntax for Rust<'_, '_> {
         quote!(-#t)
     }
     fn product(&mut self, factors: Vec<(TokenStream, Prec)>) -> TokenStream {
-        let mut parts = factors.into_iter().map(|f| wrap(f, Prec::Neg));
-        let first = parts.next().unwrap_or_default();
-        parts.fold(first, |acc, p| quote!(#acc * #p))
+        // A balanced tree, not a left-to-right chain: the factors' products run in parallel,
+        // so the latency is log2 of the factor count multiplications, not the count.
+        let mut level: Vec<TokenStream> = factors.into_iter().map(|f| wrap(f, Prec::Neg)).collect();
+        while level.len() > 1 {
+            let mut next = Vec::with_capacity(level.len().div_ceil(2));
+            let mut it = level.into_iter();
+            while let Some(a) = it.next() {
+                next.push(match it.next() {
+                    Some(b) => quote!((#a * #b)),
+                    None => a,
+                });
+            }
+            level = next;
+        }
+        let out = level.pop().unwrap_or_default();
+        strip_parens(out)
     }
     fn quotient(&mut self, num: (TokenStream, Prec), den: (TokenStream, Prec)) -> TokenStream {
         let n = wrap(num, Prec::Product);
@@ -110,6 +123,19 @@ impl Syntax for Rust<'_, '_> {
     }
     fn atan2(&mut self, y: TokenStream, x: TokenStream) -> TokenStream {
         quote!((#y).atan2(#x))
+    }
+}
+
+/// `x` without one pair of enclosing parentheses (a product's outermost grouping needs none).
+fn strip_parens(x: TokenStream) -> TokenStream {
+    let mut it = x.clone().into_iter();
+    match (it.next(), it.next()) {
+        (Some(proc_macro2::TokenTree::Group(g)), None)
+            if g.delimiter() == proc_macro2::Delimiter::Parenthesis =>
+        {
+            g.stream()
+        }
+        _ => x,
     }
 }
 
