@@ -52,6 +52,12 @@ fn main() -> ExitCode {
                 s.csv.as_ref().map_or(String::new(), |p| p.display().to_string()),
                 s.plot.as_ref().map_or(String::new(), |p| p.display().to_string()),
             );
+            if let Some(a) = s.accuracy {
+                println!(
+                    "accuracy {:e} asked: {} runs; the written one (rtol {:.1e}, atol {:.1e}) differs by {:.2e} from the run before (about that run's error; the written run's is far smaller)",
+                    a.goal, a.runs, a.rtol, a.atol, a.estimate
+                );
+            }
             ExitCode::SUCCESS
         }
         Err(e) => {

@@ -44,6 +44,24 @@ pub struct RunSummary {
     /// Kinetic energy at the start and at the end (the end's cyclic coordinates at zero when
     /// they were not integrated: no energy depends on them).
     pub kinetic_energy: (f64, f64),
+    /// How an asked accuracy was met, when the scene asks one.
+    pub accuracy: Option<Accuracy>,
+}
+
+/// An accuracy asked of a run and how it was reached.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Accuracy {
+    /// Asked: largest error relative to max(1, |value|).
+    pub goal: f64,
+    /// The difference between the written run and one at 100 times looser tolerances: about
+    /// the looser run's error, far above the written run's.
+    pub estimate: f64,
+    /// Tolerances of the written run.
+    pub rtol: f64,
+    /// Absolute tolerance of the written run.
+    pub atol: f64,
+    /// Integrations done (their costs are summed in the statistics).
+    pub runs: usize,
 }
 
 /// A generated model with parameters, as an ODE system.
@@ -305,41 +323,50 @@ fn run_model<M: GeneratedModel>(scene: &Scene, out_dir: Option<&Path>) -> Result
     let full_sys = ModelSystem::<M>::new(params.clone());
     let sys = Reduced::new(&full_sys, keep.clone());
     let y_reduced: Vec<f64> = keep.iter().map(|k| y[*k]).collect();
-    let mut full_y = vec![0.0; M::STATE_NAMES.len()];
     let ke_start = M::kinetic_energy(0.0, &y, &params);
-    let mut y_end = y.clone();
-    let mut rows: Vec<Vec<f64>> = Vec::with_capacity(times.len());
-    let mut outs = vec![0.0; M::OUTPUT_NAMES.len()];
-    let start = Instant::now();
-    let stats = ode::integrate(&sys, 0.0, &y_reduced, &times, method, |t, y_red| {
-        sys.expand(y_red, &mut full_y);
-        y_end.copy_from_slice(&full_y);
-        let y = &full_y[..];
-        if needs_outputs {
-            M::outputs(t, y, &params, &mut outs);
-        }
-        let mut row = Vec::with_capacity(picks.len() + 1);
-        row.push(t);
-        for (p, col) in &picks {
-            let v = match p {
-                Pick::State(i) => y[*i],
-                Pick::Output(j) => outs[*j],
-            };
-            if !v.is_finite() {
-                return Err(format!("{} is not finite ({v}) at t = {t}", col.label));
+    // One integration at `method`: the rows written and the full state at t_final.
+    let integrate_at = |method: Method| -> Result<Integration, RunError> {
+        let mut full_y = vec![0.0; M::STATE_NAMES.len()];
+        let mut y_end = y.clone();
+        let mut rows: Vec<Vec<f64>> = Vec::with_capacity(times.len());
+        let mut outs = vec![0.0; M::OUTPUT_NAMES.len()];
+        let stats = ode::integrate(&sys, 0.0, &y_reduced, &times, method, |t, y_red| {
+            sys.expand(y_red, &mut full_y);
+            y_end.copy_from_slice(&full_y);
+            let y = &full_y[..];
+            if needs_outputs {
+                M::outputs(t, y, &params, &mut outs);
             }
-            row.push(if col.degrees { v.to_degrees() } else { v });
-        }
-        rows.push(row);
-        Ok(())
-    })
-    .map_err(|e| match e {
-        OdeError::NonFinite { time, index, value } => RunError::Ode(format!(
-            "state {} is not finite ({value}) at t = {time}",
-            M::STATE_NAMES[keep[index]]
-        )),
-        other => RunError::Ode(other.to_string()),
-    })?;
+            let mut row = Vec::with_capacity(picks.len() + 1);
+            row.push(t);
+            for (p, col) in &picks {
+                let v = match p {
+                    Pick::State(i) => y[*i],
+                    Pick::Output(j) => outs[*j],
+                };
+                if !v.is_finite() {
+                    return Err(format!("{} is not finite ({v}) at t = {t}", col.label));
+                }
+                row.push(if col.degrees { v.to_degrees() } else { v });
+            }
+            rows.push(row);
+            Ok(())
+        })
+        .map_err(|e| match e {
+            OdeError::NonFinite { time, index, value } => RunError::Ode(format!(
+                "state {} is not finite ({value}) at t = {time}",
+                M::STATE_NAMES[keep[index]]
+            )),
+            other => RunError::Ode(other.to_string()),
+        })?;
+        Ok(Integration { stats, rows, y_end })
+    };
+    let start = Instant::now();
+    let degrees: Vec<bool> = picks.iter().map(|p| p.1.degrees).collect();
+    let (Integration { stats, rows, y_end }, accuracy) = match (scene.integrator.accuracy, method) {
+        (Some(goal), Method::Adaptive(tab, tol)) => refine(goal, tab, tol, &degrees, integrate_at)?,
+        _ => (integrate_at(method)?, None),
+    };
     let wall = start.elapsed();
     let ke_end = M::kinetic_energy(scene.t_final, &y_end, &params);
     let table = Table { title: scene.title.clone(), columns: picks.into_iter().map(|p| p.1).collect(), rows };
@@ -362,5 +389,71 @@ fn run_model<M: GeneratedModel>(scene: &Scene, out_dir: Option<&Path>) -> Result
         table,
         integrated: keep.iter().map(|k| M::STATE_NAMES[*k]).collect(),
         kinetic_energy: (ke_start, ke_end),
+        accuracy,
     })
+}
+
+/// One integration's cost, rows written and full state at t_final.
+struct Integration {
+    stats: Stats,
+    rows: Vec<Vec<f64>>,
+    y_end: Vec<f64>,
+}
+
+/// Tolerances shrink by this factor from one run to the next when an accuracy is asked.
+const REFINEMENT: f64 = 100.0;
+/// The smallest relative tolerance the refinement tries (round-off dominates below).
+const SMALLEST_RTOL: f64 = 1e-14;
+
+/// Runs at `tol`, `tol / 100`, ... until two successive runs differ by at most `goal` (relative to
+/// max(1, |value|), angles in radians); returns the finer run, whose error is well below that
+/// difference (the coarser run's error, to a few percent, for pairs of order 5 and 8).
+fn refine(
+    goal: f64,
+    tab: &'static tableau::Tableau,
+    mut tol: Tolerances,
+    degrees: &[bool],
+    integrate_at: impl Fn(Method) -> Result<Integration, RunError>,
+) -> Result<(Integration, Option<Accuracy>), RunError> {
+    let mut total = Stats::default();
+    let mut add = |s: Stats| {
+        total.steps += s.steps;
+        total.rejected += s.rejected;
+        total.rhs_evals += s.rhs_evals;
+    };
+    let first = integrate_at(Method::Adaptive(tab, tol))?;
+    add(first.stats);
+    let mut coarse = first.rows;
+    let mut runs = 1;
+    loop {
+        let finer = Tolerances { rtol: tol.rtol / REFINEMENT, atol: tol.atol / REFINEMENT };
+        if finer.rtol < SMALLEST_RTOL {
+            return Err(RunError::Ode(format!(
+                "accuracy {goal:e} not reached: runs at rtol {:e} and below still differ by more; ask a looser accuracy",
+                tol.rtol
+            )));
+        }
+        let fine = integrate_at(Method::Adaptive(tab, finer))?;
+        add(fine.stats);
+        runs += 1;
+        let estimate = largest_difference(&coarse, &fine.rows, degrees);
+        if estimate <= goal {
+            let accuracy = Accuracy { goal, estimate, rtol: finer.rtol, atol: finer.atol, runs };
+            return Ok((Integration { stats: total, ..fine }, Some(accuracy)));
+        }
+        coarse = fine.rows;
+        tol = finer;
+    }
+}
+
+/// The largest difference of two runs' rows relative to max(1, |value|), angles in radians.
+fn largest_difference(a: &[Vec<f64>], b: &[Vec<f64>], degrees: &[bool]) -> f64 {
+    let mut worst: f64 = 0.0;
+    for (ra, rb) in a.iter().zip(b) {
+        for (k, (x, y)) in ra[1..].iter().zip(&rb[1..]).enumerate() {
+            let (x, y) = if degrees[k] { (x.to_radians(), y.to_radians()) } else { (*x, *y) };
+            worst = worst.max((x - y).abs() / y.abs().max(1.0));
+        }
+    }
+    worst
 }

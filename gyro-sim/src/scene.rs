@@ -53,6 +53,9 @@ pub struct Integrator {
     pub atol: f64,
     /// Step (fixed-step methods).
     pub step: f64,
+    /// The accuracy asked of the trajectory (largest error relative to max(1, |value|)),
+    /// reached by refining the tolerances until two runs agree to it (adaptive methods).
+    pub accuracy: Option<f64>,
 }
 
 /// A scene that cannot be used: where and why, and what to do.
@@ -99,6 +102,7 @@ struct IntegratorFile {
     rtol: Option<Spanned<f64>>,
     atol: Option<Spanned<f64>>,
     step: Option<Spanned<f64>>,
+    accuracy: Option<Spanned<f64>>,
 }
 
 fn line_col(src: &str, offset: usize) -> (usize, usize) {
@@ -170,8 +174,13 @@ impl Scene {
                 "give a positive step no longer than t_final",
             ));
         }
-        let integ =
-            raw.integrator.unwrap_or(IntegratorFile { method: None, rtol: None, atol: None, step: None });
+        let integ = raw.integrator.unwrap_or(IntegratorFile {
+            method: None,
+            rtol: None,
+            atol: None,
+            step: None,
+            accuracy: None,
+        });
         let method = integ.method.as_ref().map_or("dopri5".to_string(), |m| m.get_ref().to_ascii_lowercase());
         if !["dopri5", "dop853", "rk4"].contains(&method.as_str()) {
             let span = integ.method.as_ref().map_or(0..0, |m| m.span());
@@ -192,11 +201,25 @@ impl Scene {
                 None => Ok(default),
             }
         };
+        let accuracy = match &integ.accuracy {
+            Some(a) if method == "rk4" => {
+                return Err(err(
+                    a.span(),
+                    "accuracy needs an adaptive method: rk4 has a fixed step".into(),
+                    "use method = \"dop853\" or \"dopri5\", or remove accuracy",
+                ))
+            }
+            Some(_) => Some(positive(&integ.accuracy, 0.0, "accuracy")?),
+            None => None,
+        };
+        // Without tolerances, an accuracy asked is where the refinement starts.
+        let default_tol = accuracy.unwrap_or(1e-9);
         let integrator = Integrator {
             method,
-            rtol: positive(&integ.rtol, 1e-9, "rtol")?,
-            atol: positive(&integ.atol, 1e-9, "atol")?,
+            rtol: positive(&integ.rtol, default_tol, "rtol")?,
+            atol: positive(&integ.atol, default_tol, "atol")?,
             step: positive(&integ.step, output_step.get_ref() / 10.0, "step")?,
+            accuracy,
         };
         let values = |table: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>| -> Result<Vec<(String, Value, std::ops::Range<usize>)>, SceneError> {
             let mut out = Vec::new();

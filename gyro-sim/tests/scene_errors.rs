@@ -52,3 +52,13 @@ fn unknown_parameter_and_output() {
         error("model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\noutputs = [\"Q1\", \"AQ\"]\n");
     assert!(e.contains("`AQ` is neither a state nor an output"), "{e}");
 }
+
+#[test]
+fn accuracy_must_be_positive_and_needs_an_adaptive_method() {
+    let base = "model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[integrator]\n";
+    let e = error(&format!("{base}method = \"dop853\"\naccuracy = -1e-6\n"));
+    assert!(e.starts_with("bad.toml:6:12: error: accuracy must be positive"), "{e}");
+    let e = error(&format!("{base}method = \"rk4\"\naccuracy = 1e-6\n"));
+    assert!(e.starts_with("bad.toml:6:12: error: accuracy needs an adaptive method"), "{e}");
+    assert!(e.contains("dop853"), "{e}");
+}
