@@ -133,13 +133,25 @@ impl<'a, S: System + ?Sized, const N: usize> Work<'a, S, N> {
         &self.k[j * n..(j + 1) * n]
     }
 
-    /// `out = y + h * sum_j w_j k_j`, skipping zero weights (the same arithmetic, in the same
-    /// order, as the unrolled steps).
+    /// `out = y + h * sum_j w_j k_j`, skipping zero weights; the last stage's term is added
+    /// after `y` (`(y + h * rest) + (h w_last) k_last`), so the newest stage, the one a step
+    /// waits for, passes through one multiply-add. The unrolled steps do the same arithmetic in
+    /// the same order.
     fn combine(k: &[f64], n: usize, y: &[f64], h: f64, w: &[f64], out: &mut [f64]) {
+        let (last, rest) = match w.split_last() {
+            Some((wl, rest)) if *wl != 0.0 => (Some(h * wl), rest),
+            _ => (None, w),
+        };
         out.fill(0.0);
-        Self::accumulate(k, n, 1.0, w, out);
+        Self::accumulate(k, n, 1.0, rest, out);
         for (o, yi) in out.iter_mut().zip(y) {
             *o = yi + h * *o;
+        }
+        if let Some(c) = last {
+            let j = w.len() - 1;
+            for (o, kj) in out.iter_mut().zip(&k[j * n..(j + 1) * n]) {
+                *o += c * kj;
+            }
         }
     }
 

@@ -153,6 +153,22 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
             pivot_recips[j] = Some(hoisted.constant(ar, recip)?);
         }
     }
+    // The determinant of each 2x2 block of M, collected by state monomial, so that its
+    // parameter parts are constants too (the gimbal's is A + B cos^2 q2): appended to the roots.
+    let pairs: Vec<(usize, usize)> = solve::blocks(n, |i, j| !ar.is_zero(eqs.mass_matrix[i][j]))
+        .into_iter()
+        .filter_map(|b| if let [a, c] = b[..] { Some((a, c)) } else { None })
+        .collect();
+    let mut det_roots: Vec<((usize, usize), usize)> = Vec::new();
+    for (a, c) in pairs {
+        let mm = &eqs.mass_matrix;
+        let diag = ar.mul(&[mm[a][a], mm[c][c]])?;
+        let off = ar.powi(mm[a][c], 2)?;
+        let det = ar.sub(diag, off)?;
+        let det = ar.collect_state(det, is_param)?;
+        roots.push(hoisted.rewrite(ar, det, &is_param)?);
+        det_roots.push(((a, c), roots.len() - 1));
+    }
     let ident_of = |s: SymbolId| -> Ident { rust_ident(&ar.symbol_info(s).name) };
     let state_idents: Vec<Ident> = states.iter().map(|s| ident_of(*s)).collect();
     let param_idents: Vec<Ident> = params.iter().map(|s| ident_of(*s)).collect();
@@ -193,10 +209,22 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
             let x = format_ident!("__x{}", i);
             names.insert(*e, quote!(#x));
         }
+        // Speeds arrive last in an integrator's stage (they come from the previous stage's u'):
+        // products multiply the factors without speeds first.
+        let late_memo = std::cell::RefCell::new(FxHashMap::<ExprId, bool>::default());
+        let is_late = |e: ExprId| -> bool {
+            if let Some(v) = late_memo.borrow().get(&e) {
+                return *v;
+            }
+            let v = ar.free_symbols(&[e]).iter().any(|s| eqs.speeds.contains(s));
+            late_memo.borrow_mut().insert(e, v);
+            v
+        };
         let style = RustStyle {
             scalar: Scalar::Generic(t_ident.clone()),
             symbol: &local_tokens,
             names: Some(&names),
+            late: Some(&is_late),
         };
         let mut body = TokenStream::new();
         for (i, h) in hs.iter().enumerate() {
@@ -264,7 +292,14 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
         }
         let recips: Vec<Option<TokenStream>> =
             pivot_recips.iter().map(|r| r.map(|e| ar.to_rust(e, &style))).collect();
-        let (solve, x, solve_ops) = solve::emit(&m_tokens, &f_tokens, &recips, &t_ident);
+        let mut dets: Vec<((usize, usize), TokenStream)> = Vec::new();
+        for ((a, c), k) in &det_roots {
+            let id = format_ident!("__det{}_{}", a, c);
+            let v = names.get(&roots[*k]).cloned().unwrap_or_else(|| ar.to_rust(roots[*k], &style));
+            body.extend(quote!(let #id: #t_ident = #v;));
+            dets.push(((*a, *c), quote!(#id)));
+        }
+        let (solve, x, solve_ops) = solve::emit(&m_tokens, &f_tokens, &recips, &dets, &t_ident);
         body.extend(solve);
         for i in 0..nq {
             let e = roots[k];
@@ -510,7 +545,7 @@ fn straight_line(
         Scalar::F64 => quote!(f64),
         Scalar::Generic(t) => quote!(#t),
     };
-    let style = RustStyle { scalar, symbol: symbol_tokens, names: Some(&names) };
+    let style = RustStyle { scalar, symbol: symbol_tokens, names: Some(&names), late: None };
     let mut body = TokenStream::new();
     for (i, e) in cse.temps.iter().enumerate() {
         let x = format_ident!("__x{}", i);

@@ -13,17 +13,19 @@ use super::ldlt;
 /// Statements computing `x` from the named entries of `m` (None: structurally zero) and `f`;
 /// `recips[j]`, when given, names `1 / m[j][j]`. Returns the statements, the names of `x`, and
 /// their arithmetic-operation count.
+/// `dets` names the determinants of 2x2 blocks computed elsewhere, by the block's indices.
 pub fn emit(
     m: &[Vec<Option<TokenStream>>],
     f: &[TokenStream],
     recips: &[Option<TokenStream>],
+    dets: &[((usize, usize), TokenStream)],
     t: &Ident,
 ) -> (TokenStream, Vec<TokenStream>, usize) {
     let n = f.len();
     let mut out = TokenStream::new();
     let mut ops = 0;
     let mut x: Vec<TokenStream> = vec![TokenStream::new(); n];
-    for block in blocks(m) {
+    for block in blocks(n, |i, j| m[i][j].is_some()) {
         match block[..] {
             [a] => {
                 let (fa, id) = (&f[a], format_ident!("__udot{}", a));
@@ -46,12 +48,19 @@ pub fn emit(
                 let (fa, fb) = (&f[a], &f[b]);
                 let rdet = format_ident!("__rdet{}_{}", a, b);
                 let (xa, xb) = (format_ident!("__udot{}", a), format_ident!("__udot{}", b));
+                let det = match dets.iter().find(|d| d.0 == (a, b)) {
+                    Some((_, given)) => given.clone(),
+                    None => {
+                        ops += 3;
+                        quote!((#maa * #mbb - #mab * #mab))
+                    }
+                };
                 out.extend(quote! {
-                    let #rdet: #t = #t::one() / (#maa * #mbb - #mab * #mab);
+                    let #rdet: #t = #t::one() / #det;
                     let #xa: #t = (#mbb * #fa - #mab * #fb) * #rdet;
                     let #xb: #t = (#maa * #fb - #mab * #fa) * #rdet;
                 });
-                ops += 12;
+                ops += 9;
                 x[a] = quote!(#xa);
                 x[b] = quote!(#xb);
             }
@@ -65,10 +74,9 @@ pub fn emit(
     (out, x, ops)
 }
 
-/// The connected components of the structural nonzeros of `m`, each in increasing order,
-/// ordered by their first index.
-fn blocks(m: &[Vec<Option<TokenStream>>]) -> Vec<Vec<usize>> {
-    let n = m.len();
+/// The connected components of the structural nonzeros of an `n x n` matrix, each in
+/// increasing order, ordered by their first index.
+pub fn blocks(n: usize, nonzero: impl Fn(usize, usize) -> bool) -> Vec<Vec<usize>> {
     let mut component: Vec<Option<usize>> = vec![None; n];
     let mut out: Vec<Vec<usize>> = Vec::new();
     for start in 0..n {
@@ -83,7 +91,7 @@ fn blocks(m: &[Vec<Option<TokenStream>>]) -> Vec<Vec<usize>> {
             let i = members[next];
             next += 1;
             for j in 0..n {
-                if j != i && component[j].is_none() && m[i][j].is_some() {
+                if j != i && component[j].is_none() && nonzero(i, j) {
                     component[j] = Some(id);
                     members.push(j);
                 }
@@ -111,6 +119,6 @@ mod tests {
         m[2][0] = some();
         m[3][4] = some();
         m[4][3] = some();
-        assert_eq!(blocks(&m), vec![vec![0, 2], vec![1], vec![3, 4]]);
+        assert_eq!(blocks(5, |i, j| m[i][j].is_some()), vec![vec![0, 2], vec![1], vec![3, 4]]);
     }
 }

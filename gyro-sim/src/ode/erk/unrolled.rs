@@ -79,28 +79,41 @@ impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
         let y = &y[..N];
         seq!(I in 1..13 {
             if I < stages {
-                let mut acc = [0.0f64; N];
-                seq!(J in 0..I {
-                    let a = tab.a[I][J];
-                    if a != 0.0 {
-                        let kj = &self.k[J * N..(J + 1) * N];
-                        for m in 0..N {
-                            acc[m] += a * kj[m];
-                        }
-                    }
-                });
-                for m in 0..N {
-                    self.tmp[m] = y[m] + h * acc[m];
-                }
+                let input = self.fixed_combine(tab.a[I], y, h);
+                self.tmp[..N].copy_from_slice(&input);
                 let (_, rest) = self.k.split_at_mut(I * N);
                 self.sys.rhs(t + tab.c[I] * h, &self.tmp[..N], &mut rest[..N]);
                 self.stats.rhs_evals += 1;
             }
         });
-        let acc = self.fixed_sum::<T>(tab.b);
+        let ynew = self.fixed_combine(tab.b, y, h);
+        self.ynew[..N].copy_from_slice(&ynew);
+    }
+
+    /// [`Work::combine`] for a compile-time weight row `w` (at most 13 stages).
+    #[inline(always)]
+    fn fixed_combine(&self, w: &[f64], y: &[f64], h: f64) -> [f64; N] {
+        let last = w.len() - 1;
+        let mut acc = [0.0f64; N];
+        seq!(J in 0..13 {
+            if J < last && w[J] != 0.0 {
+                let kj = &self.k[J * N..(J + 1) * N];
+                for m in 0..N {
+                    acc[m] += w[J] * kj[m];
+                }
+            }
+        });
         for m in 0..N {
-            self.ynew[m] = y[m] + h * acc[m];
+            acc[m] = y[m] + h * acc[m];
         }
+        if w[last] != 0.0 {
+            let c = h * w[last];
+            let kl = &self.k[last * N..(last + 1) * N];
+            for m in 0..N {
+                acc[m] += c * kl[m];
+            }
+        }
+        acc
     }
 
     /// `sum_j w_j k_j` over the stages of `T`, `w` one of its weight rows.

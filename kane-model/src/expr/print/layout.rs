@@ -28,6 +28,19 @@ pub(crate) trait Syntax {
     fn sum(&mut self, terms: Vec<(bool, Self::Out)>) -> Self::Out;
     fn neg(&mut self, x: (Self::Out, Prec)) -> Self::Out;
     fn product(&mut self, factors: Vec<(Self::Out, Prec)>) -> Self::Out;
+    /// True for a factor whose value arrives late (generated code multiplies those last).
+    fn late(&mut self, _id: ExprId) -> bool {
+        false
+    }
+    /// A product of `early` factors and then `late` ones.
+    fn product_grouped(
+        &mut self,
+        mut early: Vec<(Self::Out, Prec)>,
+        late: Vec<(Self::Out, Prec)>,
+    ) -> Self::Out {
+        early.extend(late);
+        self.product(early)
+    }
     fn quotient(&mut self, num: (Self::Out, Prec), den: (Self::Out, Prec)) -> Self::Out;
     fn pow_int(&mut self, base: (Self::Out, Prec), k: i64) -> Self::Out;
     fn pow(&mut self, base: (Self::Out, Prec), exp: (Self::Out, Prec)) -> Self::Out;
@@ -123,8 +136,16 @@ fn product<S: Syntax>(ar: &Arena, e: ExprId, syntax: &mut S) -> (S::Out, Prec) {
     };
     let mut coeff = Rational::ONE;
     let mut num: Vec<(S::Out, Prec)> = Vec::new();
+    let mut late_num: Vec<(S::Out, Prec)> = Vec::new();
     let mut den: Vec<(S::Out, Prec)> = Vec::new();
     for f in factors {
+        if f != e
+            && syntax.late(f)
+            && !matches!(ar.node(f), Node::Pow([_, x]) if ar.as_rational(*x).is_some_and(|r| r.is_negative()))
+        {
+            late_num.push(layout(ar, f, syntax, false));
+            continue;
+        }
         // The power being laid out is not replaced by its own name.
         let named_elsewhere = f != e && syntax.named(f).is_some();
         match ar.node(f) {
@@ -153,10 +174,11 @@ fn product<S: Syntax>(ar: &Arena, e: ExprId, syntax: &mut S) -> (S::Out, Prec) {
         let c = syntax.number(Number::Rational(Rational::integer(coeff.denom())));
         den.insert(0, (c, Prec::Atom));
     }
-    let numerator = match num.len() {
-        0 => (syntax.number(Number::ONE), Prec::Atom),
-        1 => num.pop().unwrap_or_else(|| unreachable_piece(syntax)),
-        _ => (syntax.product(num), Prec::Product),
+    let numerator = match (num.len(), late_num.len()) {
+        (0, 0) => (syntax.number(Number::ONE), Prec::Atom),
+        (1, 0) => num.pop().unwrap_or_else(|| unreachable_piece(syntax)),
+        (0, 1) => late_num.pop().unwrap_or_else(|| unreachable_piece(syntax)),
+        _ => (syntax.product_grouped(num, late_num), Prec::Product),
     };
     match den.len() {
         0 => numerator,

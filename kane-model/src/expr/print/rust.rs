@@ -26,6 +26,9 @@ pub struct RustStyle<'a> {
     pub symbol: &'a dyn Fn(SymbolId) -> TokenStream,
     /// Subexpressions already bound to local names (from CSE).
     pub names: Option<&'a FxHashMap<ExprId, TokenStream>>,
+    /// Factors whose values arrive late (for example the speeds a stage has just computed):
+    /// products multiply the others first, so the late ones pass through fewer multiplications.
+    pub late: Option<&'a dyn Fn(ExprId) -> bool>,
 }
 
 struct Rust<'a, 'b> {
@@ -76,22 +79,24 @@ impl Syntax for Rust<'_, '_> {
         quote!(-#t)
     }
     fn product(&mut self, factors: Vec<(TokenStream, Prec)>) -> TokenStream {
-        // A balanced tree, not a left-to-right chain: the factors' products run in parallel,
-        // so the latency is log2 of the factor count multiplications, not the count.
-        let mut level: Vec<TokenStream> = factors.into_iter().map(|f| wrap(f, Prec::Neg)).collect();
-        while level.len() > 1 {
-            let mut next = Vec::with_capacity(level.len().div_ceil(2));
-            let mut it = level.into_iter();
-            while let Some(a) = it.next() {
-                next.push(match it.next() {
-                    Some(b) => quote!((#a * #b)),
-                    None => a,
-                });
+        strip_parens(balanced(factors))
+    }
+    fn late(&mut self, id: ExprId) -> bool {
+        self.style.late.is_some_and(|late| late(id))
+    }
+    fn product_grouped(
+        &mut self,
+        early: Vec<(TokenStream, Prec)>,
+        late: Vec<(TokenStream, Prec)>,
+    ) -> TokenStream {
+        match (early.is_empty(), late.is_empty()) {
+            (true, _) => self.product(late),
+            (_, true) => self.product(early),
+            _ => {
+                let (e, l) = (balanced(early), balanced(late));
+                quote!(#e * #l)
             }
-            level = next;
         }
-        let out = level.pop().unwrap_or_default();
-        strip_parens(out)
     }
     fn quotient(&mut self, num: (TokenStream, Prec), den: (TokenStream, Prec)) -> TokenStream {
         let n = wrap(num, Prec::Product);
@@ -124,6 +129,25 @@ impl Syntax for Rust<'_, '_> {
     fn atan2(&mut self, y: TokenStream, x: TokenStream) -> TokenStream {
         quote!((#y).atan2(#x))
     }
+}
+
+/// The factors multiplied as a balanced tree, not a left-to-right chain: the partial products
+/// run in parallel, so the latency is log2 of the factor count multiplications. Parenthesised
+/// when more than one factor.
+fn balanced(factors: Vec<(TokenStream, Prec)>) -> TokenStream {
+    let mut level: Vec<TokenStream> = factors.into_iter().map(|f| wrap(f, Prec::Neg)).collect();
+    while level.len() > 1 {
+        let mut next = Vec::with_capacity(level.len().div_ceil(2));
+        let mut it = level.into_iter();
+        while let Some(a) = it.next() {
+            next.push(match it.next() {
+                Some(b) => quote!((#a * #b)),
+                None => a,
+            });
+        }
+        level = next;
+    }
+    level.pop().unwrap_or_default()
 }
 
 /// `x` without one pair of enclosing parentheses (a product's outermost grouping needs none).
@@ -170,12 +194,13 @@ mod tests {
         let half = ar.rational(1, 2).unwrap();
         let h = ar.mul(&[half, y]).unwrap();
         let f = sym_tokens(&ar);
-        let style = RustStyle { scalar: Scalar::F64, symbol: &f, names: None };
+        let style = RustStyle { scalar: Scalar::F64, symbol: &f, names: None, late: None };
         assert_eq!(ar.to_rust(m, &style).to_string(), "- (x + y) . cos () / x . powi (2)");
         let g = RustStyle {
             scalar: Scalar::Generic(Ident::new("T", proc_macro2::Span::call_site())),
             symbol: &f,
             names: None,
+            late: None,
         };
         assert_eq!(ar.to_rust(h, &g).to_string(), "y / :: kane_model :: __private :: cast :: < T > (2f64)");
     }
