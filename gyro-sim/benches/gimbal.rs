@@ -80,32 +80,61 @@ impl HandGimbal {
         }
     }
 
+    /// `u'` from q2 and the speeds.
     #[inline]
-    fn rhs(&self, y: &[f64], dy: &mut [f64]) {
-        let (u1, u2, u3) = (y[3], y[4], y[5]);
-        let (s, c) = y[1].sin_cos();
+    fn accelerations(&self, q2: f64, u1: f64, u2: f64, u3: f64) -> [f64; 3] {
+        let (s, c) = q2.sin_cos();
         let m11 = self.i1 + self.jk * c * c;
         let m13 = self.j1k1 * c;
         let f1 = -self.y + 2.0 * self.jk * s * c * u1 * u2 + self.k1 * s * u2 * u3;
         let f2 = -self.z - self.jk * s * c * u1 * u1 - self.k1 * s * u1 * u3;
         let f3 = self.k1 * s * u1 * u2;
         let rdet = 1.0 / (m11 * self.k1 - m13 * m13);
-        dy[0] = u1;
-        dy[1] = u2;
-        dy[2] = u3;
-        dy[3] = (self.k1 * f1 - m13 * f3) * rdet;
-        dy[4] = f2 * self.r22;
-        dy[5] = (m11 * f3 - m13 * f1) * rdet;
+        [(self.k1 * f1 - m13 * f3) * rdet, f2 * self.r22, (m11 * f3 - m13 * f1) * rdet]
+    }
+
+    #[inline]
+    fn rhs(&self, y: &[f64], dy: &mut [f64]) {
+        let a = self.accelerations(y[1], y[3], y[4], y[5]);
+        dy[..3].copy_from_slice(&y[3..6]);
+        dy[3..6].copy_from_slice(&a);
     }
 }
 
-impl gyro_sim::ode::System for HandGimbal {
+/// The hand-written RHS on (q2, u1, u2, u3) alone: the cyclic q1 and q3 left out without any
+/// copying, to see whether a smaller state pays.
+struct HandGimbalReduced(HandGimbal);
+
+impl gyro_sim::ode::System for HandGimbalReduced {
     fn dim(&self) -> usize {
-        6
+        4
     }
+    #[inline]
     fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
-        HandGimbal::rhs(self, y, dy)
+        let a = self.0.accelerations(y[0], y[1], y[2], y[3]);
+        dy[0] = y[2];
+        dy[1..4].copy_from_slice(&a);
     }
+}
+
+/// A Trial 3 run of a system integrating (q2, u1, u2, u3) (states `keep` of the full one).
+fn run_reduced<S: gyro_sim::ode::System>(sys: &S, tol: f64, reference: &[Vec<f64>]) -> (usize, f64) {
+    let (_, y0, times) = trial3();
+    let keep = [1, 3, 4, 5];
+    let y_red: Vec<f64> = keep.iter().map(|k| y0[*k]).collect();
+    let mut worst: f64 = 0.0;
+    let mut row = 0;
+    let m = Method::Adaptive(&tableau::DOP853, Tolerances { rtol: tol, atol: tol });
+    let stats = integrate(sys, 0.0, &y_red, &times, m, |_, y| {
+        for (i, k) in keep.iter().enumerate() {
+            let want = reference[row][k + 1];
+            worst = worst.max((y[i] - want).abs() / want.abs().max(1.0));
+        }
+        row += 1;
+        Ok(())
+    })
+    .unwrap();
+    (stats.rhs_evals, worst)
 }
 
 fn benches(c: &mut Criterion) {
@@ -137,6 +166,24 @@ fn benches(c: &mut Criterion) {
             black_box(dy[5])
         })
     });
+    // Latency: each call's q2 and u2 depend on the last call's result, as a stage depends on
+    // the stage before in an integrator.
+    c.bench_function("gimbal_rhs_latency", |b| {
+        let mut yy = y;
+        b.iter(|| {
+            gimbal::rhs_derived(0.0, &yy, black_box(&p), black_box(&d), &mut dy);
+            yy[1] = 0.1 + 1e-9 * dy[5];
+            yy[4] = 0.4 + 1e-9 * dy[3];
+        })
+    });
+    c.bench_function("hand_written_rhs_latency", |b| {
+        let mut yy = y;
+        b.iter(|| {
+            black_box(&hand).rhs(&yy, &mut dy);
+            yy[1] = 0.1 + 1e-9 * dy[5];
+            yy[4] = 0.4 + 1e-9 * dy[3];
+        })
+    });
     let reference = reference();
     let reference = reference.as_slice();
     let mut g = c.benchmark_group("trial3_to_t5");
@@ -150,29 +197,23 @@ fn benches(c: &mut Criterion) {
             });
         }
     }
-    // Q2 and the speeds only: the cyclic q1 and q3 are not integrated.
-    let reduced = |tol: f64| -> (usize, f64) {
-        let (sys, y0, times) = trial3();
-        let keep = vec![1, 3, 4, 5];
-        let red = Reduced::new(&sys, keep.clone());
-        let y_red: Vec<f64> = keep.iter().map(|k| y0[*k]).collect();
-        let mut worst: f64 = 0.0;
-        let mut row = 0;
-        let m = Method::Adaptive(&tableau::DOP853, Tolerances { rtol: tol, atol: tol });
-        let stats = integrate(&red, 0.0, &y_red, &times, m, |_, y| {
-            for (i, k) in keep.iter().enumerate() {
-                let want = reference[row][k + 1];
-                worst = worst.max((y[i] - want).abs() / want.abs().max(1.0));
-            }
-            row += 1;
-            Ok(())
-        })
-        .unwrap();
-        (stats.rhs_evals, worst)
-    };
-    let (evals, err) = reduced(1e-9);
+    // Q2 and the speeds only: the cyclic q1 and q3 are not integrated, through gyro-sim's
+    // wrapper around the generated rhs and with the hand-written reduced RHS.
+    let (full, _, _) = trial3();
+    let wrapped = Reduced::new(&full, vec![1, 3, 4, 5]);
+    let (evals, err) = run_reduced(&wrapped, 1e-9, reference);
     println!("dop853 reduced (q1, q3 left out) tol 1e-9: {evals} RHS evaluations, largest relative error {err:.2e}");
-    g.bench_function("dop853_reduced_tol_1e-9", |b| b.iter(|| black_box(reduced(1e-9))));
+    g.bench_function("dop853_reduced_tol_1e-9", |b| {
+        b.iter(|| black_box(run_reduced(&wrapped, 1e-9, reference)))
+    });
+    let hand4 = HandGimbalReduced(HandGimbal::new(&p3));
+    let (evals, err) = run_reduced(&hand4, 1e-9, reference);
+    println!(
+        "dop853 hand-written 4-state RHS tol 1e-9: {evals} RHS evaluations, largest relative error {err:.2e}"
+    );
+    g.bench_function("dop853_hand_written_4_states_tol_1e-9", |b| {
+        b.iter(|| black_box(run_reduced(&hand4, 1e-9, reference)))
+    });
     for step in [1e-3, 1e-4] {
         let m = Method::Fixed(&tableau::RK4, step);
         let (evals, err) = run(m, reference);

@@ -12,6 +12,7 @@ pub struct Hoisted {
     /// Each constant and the expression (in the parameters) it stands for, in first-use order.
     pub defs: Vec<(SymbolId, ExprId)>,
     by_def: FxHashMap<ExprId, SymbolId>,
+    index: FxHashMap<SymbolId, usize>,
     memo: FxHashMap<ExprId, ExprId>,
 }
 
@@ -65,13 +66,14 @@ impl Hoisted {
         }
         let s = ar.declare(&format!("__hoisted{}", def.index()), SymbolKind::Constant)?;
         self.by_def.insert(def, s);
+        self.index.insert(s, self.defs.len());
         self.defs.push((s, def));
         Ok(ar.symbol_expr(s))
     }
 
     /// The position of `s` among the constants, if it is one.
     pub fn index_of(&self, s: SymbolId) -> Option<usize> {
-        self.defs.iter().position(|(h, _)| *h == s)
+        self.index.get(&s).copied()
     }
 
     /// A sum (`is_sum`) or product of `parts` with its parameter-only parts as one constant; a
@@ -84,7 +86,7 @@ impl Hoisted {
         is_param: &dyn Fn(SymbolId) -> bool,
     ) -> Result<ExprId, ExprError> {
         let (mut fixed, rest): (Vec<ExprId>, Vec<ExprId>) =
-            parts.iter().partition(|p| param_only(ar, **p, is_param) || ar.as_number(**p).is_some());
+            parts.iter().partition(|p| param_only(ar, **p, is_param));
         let mut out = Vec::with_capacity(parts.len());
         if !is_sum {
             if let Some(pos) = fixed.iter().position(|p| *p == ar.minus_one()) {

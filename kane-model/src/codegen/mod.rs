@@ -142,17 +142,6 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
     for &r in &rhs_roots {
         roots.push(hoisted.rewrite(ar, r, &is_param)?);
     }
-    // A pivot without fill-in is M's diagonal entry itself: a constant one is inverted once.
-    let mut pivot_recips: Vec<Option<ExprId>> = vec![None; n];
-    for j in 0..n {
-        let row_empty = (0..j).all(|k| ar.is_zero(eqs.mass_matrix[k][j]));
-        let mjj = eqs.mass_matrix[j][j];
-        if row_empty && !ar.is_zero(mjj) && ar.free_symbols(&[mjj]).iter().all(|s| is_param(*s)) {
-            let minus_one = ar.minus_one();
-            let recip = ar.pow(mjj, minus_one)?;
-            pivot_recips[j] = Some(hoisted.constant(ar, recip)?);
-        }
-    }
     // The determinant of each 2x2 block of M, collected by state monomial, so that its
     // parameter parts are constants too (the gimbal's is A + B cos^2 q2): appended to the roots.
     let pairs: Vec<(usize, usize)> = solve::blocks(n, |i, j| !ar.is_zero(eqs.mass_matrix[i][j]))
@@ -160,7 +149,7 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
         .filter_map(|b| if let [a, c] = b[..] { Some((a, c)) } else { None })
         .collect();
     let mut det_roots: Vec<((usize, usize), usize)> = Vec::new();
-    for (a, c) in pairs {
+    for &(a, c) in &pairs {
         let mm = &eqs.mass_matrix;
         let diag = ar.mul(&[mm[a][a], mm[c][c]])?;
         let off = ar.powi(mm[a][c], 2)?;
@@ -168,6 +157,18 @@ pub fn emit(loaded: &mut LoadedModel, name: &str) -> Result<Emitted, CodegenErro
         let det = ar.collect_state(det, is_param)?;
         roots.push(hoisted.rewrite(ar, det, &is_param)?);
         det_roots.push(((a, c), roots.len() - 1));
+    }
+    // A pivot without fill-in is M's diagonal entry itself: a constant one is inverted once
+    // (2x2 blocks use their determinant instead).
+    let mut pivot_recips: Vec<Option<ExprId>> = vec![None; n];
+    for j in (0..n).filter(|j| !pairs.iter().any(|(a, c)| a == j || c == j)) {
+        let row_empty = (0..j).all(|k| ar.is_zero(eqs.mass_matrix[k][j]));
+        let mjj = eqs.mass_matrix[j][j];
+        if row_empty && !ar.is_zero(mjj) && ar.free_symbols(&[mjj]).iter().all(|s| is_param(*s)) {
+            let minus_one = ar.minus_one();
+            let recip = ar.pow(mjj, minus_one)?;
+            pivot_recips[j] = Some(hoisted.constant(ar, recip)?);
+        }
     }
     let ident_of = |s: SymbolId| -> Ident { rust_ident(&ar.symbol_info(s).name) };
     let state_idents: Vec<Ident> = states.iter().map(|s| ident_of(*s)).collect();
