@@ -1,0 +1,107 @@
+//! Pinned results: the paper's four cases through the `gyro-sim` command (integrator statistics
+//! and a hash of the CSV's bytes, so every written value's bits) and the integrator test
+//! problems' statistics. A refactor that changes any of them shows up here.
+
+use std::path::Path;
+use std::process::Command;
+
+/// FNV-1a over the bytes: stable across Rust versions (unlike `DefaultHasher`).
+fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, b| (h ^ u64::from(*b)).wrapping_mul(0x100_0000_01b3))
+}
+
+/// Runs a scene with the command; returns its statistics line and the CSV's hash.
+fn run_scene(scene: &str) -> String {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let out = std::env::temp_dir().join(format!("gyro-sim-pinned-{}-{scene}", std::process::id()));
+    let result = Command::new(env!("CARGO_BIN_EXE_gyro-sim"))
+        .arg("run")
+        .arg(root.join(format!("scenes/paper/{scene}.toml")))
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&result.stdout).to_string();
+    assert!(result.status.success(), "{scene}: {stdout}\n{}", String::from_utf8_lossy(&result.stderr));
+    // "...: S steps (R rejected), E RHS evaluations, ...": the first line's statistics.
+    let first = stdout.lines().next().unwrap_or_default();
+    let at = first.rfind(" steps (").expect("statistics in the summary");
+    let start = first[..at].rfind(' ').map_or(0, |i| i + 1);
+    let stats: String = first[start..].split(", ").take(2).collect::<Vec<_>>().join(", ");
+    let csv = std::fs::read(out.join("trajectory.csv")).unwrap();
+    let _ = std::fs::remove_dir_all(&out);
+    format!("{scene}: {stats}; csv {} bytes, fnv1a {:016x}", csv.len(), fnv1a(&csv))
+}
+
+#[test]
+fn paper_cases_are_pinned() {
+    let lines: Vec<String> = ["script", "trial1", "trial2", "trial3"].iter().map(|s| run_scene(s)).collect();
+    insta::assert_snapshot!(lines.join("\n"));
+}
+
+mod problems {
+    use gyro_sim::ode::System;
+
+    /// y1' = y2, y2' = -y1.
+    pub struct Oscillator;
+
+    impl System for Oscillator {
+        fn dim(&self) -> usize {
+            2
+        }
+        fn rhs(&self, _: f64, y: &[f64], dy: &mut [f64]) {
+            dy[0] = y[1];
+            dy[1] = -y[0];
+        }
+    }
+
+    /// y' = -2 t y.
+    pub struct Gaussian;
+
+    impl System for Gaussian {
+        fn dim(&self) -> usize {
+            1
+        }
+        fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+            dy[0] = -2.0 * t * y[0];
+        }
+    }
+}
+
+#[test]
+fn integrator_statistics_are_pinned() {
+    use gyro_sim::ode::{integrate, tableau, Method, System, Tolerances};
+    let times: Vec<f64> = (0..=100).map(|i| f64::from(i) * 0.1).collect();
+    let mut lines = Vec::new();
+    let problems: [(&str, &dyn System, &[f64]); 2] =
+        [("oscillator", &problems::Oscillator, &[0.0, 1.0]), ("gaussian", &problems::Gaussian, &[1.0])];
+    for (name, sys, y0) in problems {
+        for tab in [&tableau::DOPRI5, &tableau::DOP853] {
+            for tol in [1e-6, 1e-9, 1e-12] {
+                let mut bits = Vec::new();
+                let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
+                let s = integrate(sys, 0.0, y0, &times, m, |_, y| {
+                    bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
+                    Ok(())
+                })
+                .unwrap();
+                lines.push(format!(
+                    "{name} {} {tol:e}: {} steps, {} rejected, {} evaluations, fnv1a {:016x}",
+                    tab.name,
+                    s.steps,
+                    s.rejected,
+                    s.rhs_evals,
+                    fnv1a(&bits)
+                ));
+            }
+        }
+        let mut bits = Vec::new();
+        let s = integrate(sys, 0.0, y0, &times, Method::Fixed(&tableau::RK4, 0.03), |_, y| {
+            bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
+            Ok(())
+        })
+        .unwrap();
+        lines.push(format!("{name} rk4 0.03: {} steps, fnv1a {:016x}", s.steps, fnv1a(&bits)));
+    }
+    insta::assert_snapshot!(lines.join("\n"));
+}
