@@ -1,12 +1,20 @@
 //! gyro-sim: integrate models derived with kane-model, from scene files to CSV and plots.
 //!
-//! - [`ode`]: the [`ode::System`] trait, tableaux as data, explicit Runge-Kutta integration.
-//! - [`models`]: the models compiled from model files at build time (`kane_derive::model!`).
-//! - [`scene`]: TOML scenes; [`run`]: running one; [`output`]: CSV and PNG.
+//! The stages, each a module with a narrow interface:
+//! [`scene`] (TOML text -> [`scene::Scene`]) -> [`resolve`] (scene + [`registry`] ->
+//! [`problem::Problem`] in model units) -> [`solve`] (problem -> [`trajectory::Trajectory`],
+//! stepping with [`ode`]) -> [`output`] (trajectory -> CSV and PNG in display units).
+//! [`run`] chains them; [`models`] holds the models compiled into the simulator.
 #![warn(missing_docs)]
 
 pub mod models;
 pub mod ode;
 pub mod output;
+pub mod problem;
+mod refine;
+pub mod registry;
+pub mod resolve;
 pub mod run;
 pub mod scene;
+pub mod solve;
+pub mod trajectory;

@@ -37,32 +37,39 @@ fn main() -> ExitCode {
         }
     };
     match run::run(&scene, Some(&out)) {
-        Ok(s) => {
-            println!(
-                "{}: {} steps ({} rejected), {} RHS evaluations, {:.3} ms; kinetic energy {:.6e} -> {:.6e} (change {:+.6e}); wrote {} rows to {} and {}",
-                scene.title,
-                s.stats.steps,
-                s.stats.rejected,
-                s.stats.rhs_evals,
-                s.wall.as_secs_f64() * 1e3,
-                s.kinetic_energy.0,
-                s.kinetic_energy.1,
-                s.kinetic_energy.1 - s.kinetic_energy.0,
-                s.table.rows.len(),
-                s.csv.as_ref().map_or(String::new(), |p| p.display().to_string()),
-                s.plot.as_ref().map_or(String::new(), |p| p.display().to_string()),
-            );
-            if let Some(a) = s.accuracy {
-                println!(
-                    "accuracy {:e} asked: {} runs; the written one (rtol {:.1e}, atol {:.1e}) differs by {:.2e} from the run before (about that run's error; the written run's is far smaller)",
-                    a.goal, a.runs, a.rtol, a.atol, a.estimate
-                );
-            }
+        Ok(summary) => {
+            print_summary(&scene.title, &summary);
             ExitCode::SUCCESS
         }
         Err(e) => {
             eprintln!("{}: {e}", scene.path.display());
             ExitCode::FAILURE
         }
+    }
+}
+
+/// The run's statistics, energy, files and accuracy.
+fn print_summary(title: &str, summary: &run::RunSummary) {
+    let t = &summary.trajectory;
+    let energy = match t.kinetic_energy {
+        Some((a, b)) => format!("; kinetic energy {a:.6e} -> {b:.6e} (change {:+.6e})", b - a),
+        None => String::new(),
+    };
+    let files = match &summary.written {
+        Some(w) => format!("; wrote {} rows to {} and {}", t.rows.len(), w.csv.display(), w.plot.display()),
+        None => String::new(),
+    };
+    println!(
+        "{title}: {} steps ({} rejected), {} RHS evaluations, {:.3} ms{energy}{files}",
+        t.stats.steps,
+        t.stats.rejected,
+        t.stats.rhs_evals,
+        t.wall.as_secs_f64() * 1e3,
+    );
+    if let Some(a) = t.accuracy {
+        println!(
+            "accuracy {:e} asked: {} runs; the written one (rtol {:.1e}, atol {:.1e}) differs by {:.2e} from the run before (about that run's error; the written run's is far smaller)",
+            a.goal, a.runs, a.rtol, a.atol, a.estimate
+        );
     }
 }

@@ -1,6 +1,7 @@
-//! The models this simulator knows, compiled from their model files at build time.
+//! The models compiled into gyro-sim from their model files at build time
+//! (`kane_derive::model!`). A new model is one module here and one line in [`register`].
 
-use kane_model::runtime::GeneratedModel;
+use crate::registry::Registry;
 
 /// The 3-DOF gimballed gyroscope of the paper.
 pub mod gimbal_gyroscope {
@@ -12,5 +13,13 @@ pub mod heavy_top {
     kane_derive::model!("../kane-model/models/heavy_top.al");
 }
 
-/// The names of the compiled models.
-pub const MODEL_NAMES: &[&str] = &[gimbal_gyroscope::Model::NAME, heavy_top::Model::NAME];
+/// The same top built through kane-model's Rust API (`kane_model::models::HeavyTop`), with
+/// energy, angular-momentum and orientation outputs.
+pub mod heavy_top_rust {
+    kane_derive::builtin_model!("heavy_top_rust");
+}
+
+/// `registry` with the compiled models added.
+pub fn register(registry: Registry) -> Registry {
+    registry.with::<gimbal_gyroscope::Model>().with::<heavy_top::Model>().with::<heavy_top_rust::Model>()
+}

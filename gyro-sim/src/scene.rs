@@ -19,6 +19,8 @@ pub struct Scene {
     pub title: String,
     /// The model's name.
     pub model: String,
+    /// Where the model is named.
+    pub model_span: std::ops::Range<usize>,
     /// Parameters to set: name, value in the model's units, where.
     pub parameters: Vec<(String, Value, std::ops::Range<usize>)>,
     /// Initial values to set.
@@ -95,7 +97,7 @@ struct SceneFile {
     initial: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
 }
 
-#[derive(Deserialize)]
+#[derive(Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct IntegratorFile {
     method: Option<Spanned<String>>,
@@ -112,6 +114,138 @@ fn line_col(src: &str, offset: usize) -> (usize, usize) {
     (line, col)
 }
 
+/// An error at a span of a scene's text.
+fn error_at(file: &str, source: &str, span: Span, message: String, help: &str) -> SceneError {
+    let (line, column) = line_col(source, span.start);
+    SceneError { file: file.to_string(), line, column, message, help: help.to_string() }
+}
+
+type Span = std::ops::Range<usize>;
+
+/// A parsed scene's text, for errors at spans of it.
+struct Text<'a> {
+    file: &'a str,
+    source: &'a str,
+}
+
+impl Text<'_> {
+    fn err(&self, span: Span, message: String, help: &str) -> SceneError {
+        error_at(self.file, self.source, span, message, help)
+    }
+
+    /// `v` if positive and finite, `default` when absent.
+    fn positive(&self, v: &Option<Spanned<f64>>, default: f64, what: &str) -> Result<f64, SceneError> {
+        match v {
+            Some(s) if !(*s.get_ref() > 0.0 && s.get_ref().is_finite()) => Err(self.err(
+                s.span(),
+                format!("{what} must be positive, not {}", s.get_ref()),
+                &format!("give a positive {what}"),
+            )),
+            Some(s) => Ok(*s.get_ref()),
+            None => Ok(default),
+        }
+    }
+
+    /// The integrator table: a known method, positive tolerances, accuracy only if adaptive.
+    fn integrator(&self, integ: Option<IntegratorFile>, output_step: f64) -> Result<Integrator, SceneError> {
+        let integ = integ.unwrap_or_default();
+        let method = integ.method.as_ref().map_or("dopri5".to_string(), |m| m.get_ref().to_ascii_lowercase());
+        let Some(info) = crate::ode::by_name(&method) else {
+            let span = integ.method.as_ref().map_or(0..0, |m| m.span());
+            return Err(self.err(
+                span,
+                format!("unknown integrator `{method}`"),
+                &crate::ode::methods_help(),
+            ));
+        };
+        let accuracy = match &integ.accuracy {
+            Some(a) if !info.adaptive => {
+                return Err(self.err(
+                    a.span(),
+                    format!("accuracy needs an adaptive method: {method} has a fixed step"),
+                    "use method = \"dop853\" or \"dopri5\", or remove accuracy",
+                ))
+            }
+            Some(_) => Some(self.positive(&integ.accuracy, 0.0, "accuracy")?),
+            None => None,
+        };
+        // Without tolerances, an accuracy asked is where the refinement starts.
+        let default_tol = accuracy.unwrap_or(1e-9);
+        Ok(Integrator {
+            method,
+            rtol: self.positive(&integ.rtol, default_tol, "rtol")?,
+            atol: self.positive(&integ.atol, default_tol, "atol")?,
+            step: self.positive(&integ.step, output_step / 10.0, "step")?,
+            accuracy,
+        })
+    }
+
+    /// A table of numbers with optional units (`"30 deg"`).
+    fn values(
+        &self,
+        table: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
+    ) -> Result<Vec<(String, Value, Span)>, SceneError> {
+        let mut out = Vec::new();
+        for (k, v) in table.unwrap_or_default() {
+            let span = v.span();
+            let value = match v.get_ref() {
+                toml::Value::Float(x) => Value { number: *x, unit: None },
+                toml::Value::Integer(i) => Value { number: *i as f64, unit: None },
+                toml::Value::String(s) => self.with_unit(s, span.clone())?,
+                other => {
+                    return Err(self.err(
+                        span,
+                        format!("`{other}` is not a number"),
+                        "write a number, or a string like \"30 deg\"",
+                    ))
+                }
+            };
+            out.push((k.get_ref().clone(), value, span));
+        }
+        Ok(out)
+    }
+
+    fn with_unit(&self, s: &str, span: Span) -> Result<Value, SceneError> {
+        let mut parts = s.split_whitespace();
+        let number: f64 = parts.next().and_then(|n| n.parse().ok()).ok_or_else(|| {
+            self.err(
+                span,
+                format!("`{s}` is not a number with a unit"),
+                "write a number, or a string like \"30 deg\" or \"10 rad/s\"",
+            )
+        })?;
+        let unit: String = parts.collect::<Vec<_>>().join(" ");
+        Ok(Value { number, unit: (!unit.is_empty()).then_some(unit) })
+    }
+
+    /// `t_final` and `output_step`: positive, the step no longer than the span.
+    fn times(
+        &self,
+        t_final: Option<Spanned<f64>>,
+        output_step: Option<Spanned<f64>>,
+    ) -> Result<(f64, f64), SceneError> {
+        let t_final = t_final
+            .ok_or_else(|| self.err(0..0, "missing `t_final`".into(), "add t_final = 5.0 (seconds)"))?;
+        if !(*t_final.get_ref() > 0.0 && t_final.get_ref().is_finite()) {
+            return Err(self.err(
+                t_final.span(),
+                format!("t_final must be positive, not {}", t_final.get_ref()),
+                "the simulation starts at t = 0; give a positive end time",
+            ));
+        }
+        let step = output_step
+            .ok_or_else(|| self.err(0..0, "missing `output_step`".into(), "add output_step = 0.05"))?;
+        if !(*step.get_ref() > 0.0 && *step.get_ref() <= *t_final.get_ref()) {
+            return Err(self.err(
+                step.span(),
+                format!("output_step must be in (0, t_final], not {}", step.get_ref()),
+                "give a positive step no longer than t_final",
+            ));
+        }
+        Ok((t_final.into_inner(), step.into_inner()))
+    }
+}
+
 impl Scene {
     /// Reads and validates a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
@@ -126,141 +260,44 @@ impl Scene {
         Scene::parse(&file, &source)
     }
 
-    /// Parses and validates a scene from its text.
+    /// Parses and validates a scene from its text (the model is looked up when it is resolved).
     pub fn parse(file: &str, source: &str) -> Result<Scene, SceneError> {
-        let err = |span: std::ops::Range<usize>, message: String, help: &str| {
-            let (line, column) = line_col(source, span.start);
-            SceneError { file: file.to_string(), line, column, message, help: help.to_string() }
-        };
+        let text = Text { file, source };
         let raw: SceneFile = toml::from_str(source).map_err(|e| {
-            let span = e.span().unwrap_or(0..0);
-            err(
-                span,
+            text.err(
+                e.span().unwrap_or(0..0),
                 e.message().to_string(),
                 "keys are title, model, t_final, output_step, outputs, [integrator], [parameters], [initial]",
             )
         })?;
         let model = raw.model.ok_or_else(|| {
-            err(
+            text.err(
                 0..0,
                 "missing `model`".into(),
                 "add model = \"gimbal_gyroscope\" (or another compiled model)",
             )
         })?;
-        if !crate::models::MODEL_NAMES.contains(&model.get_ref().as_str()) {
-            return Err(err(
-                model.span(),
-                format!("unknown model `{}`", model.get_ref()),
-                &format!("the compiled models are: {}", crate::models::MODEL_NAMES.join(", ")),
-            ));
-        }
-        let t_final = raw
-            .t_final
-            .ok_or_else(|| err(0..0, "missing `t_final`".into(), "add t_final = 5.0 (seconds)"))?;
-        if !(*t_final.get_ref() > 0.0 && t_final.get_ref().is_finite()) {
-            return Err(err(
-                t_final.span(),
-                format!("t_final must be positive, not {}", t_final.get_ref()),
-                "the simulation starts at t = 0; give a positive end time",
-            ));
-        }
-        let output_step = raw
-            .output_step
-            .ok_or_else(|| err(0..0, "missing `output_step`".into(), "add output_step = 0.05"))?;
-        if !(*output_step.get_ref() > 0.0 && *output_step.get_ref() <= *t_final.get_ref()) {
-            return Err(err(
-                output_step.span(),
-                format!("output_step must be in (0, t_final], not {}", output_step.get_ref()),
-                "give a positive step no longer than t_final",
-            ));
-        }
-        let integ = raw.integrator.unwrap_or(IntegratorFile {
-            method: None,
-            rtol: None,
-            atol: None,
-            step: None,
-            accuracy: None,
-        });
-        let method = integ.method.as_ref().map_or("dopri5".to_string(), |m| m.get_ref().to_ascii_lowercase());
-        if !["dopri5", "dop853", "rk4"].contains(&method.as_str()) {
-            let span = integ.method.as_ref().map_or(0..0, |m| m.span());
-            return Err(err(
-                span,
-                format!("unknown integrator `{method}`"),
-                "methods: dop853, dopri5 (adaptive), rk4 (fixed step)",
-            ));
-        }
-        let positive = |v: &Option<Spanned<f64>>, default: f64, what: &str| -> Result<f64, SceneError> {
-            match v {
-                Some(s) if !(*s.get_ref() > 0.0 && s.get_ref().is_finite()) => Err(err(
-                    s.span(),
-                    format!("{what} must be positive, not {}", s.get_ref()),
-                    &format!("give a positive {what}"),
-                )),
-                Some(s) => Ok(*s.get_ref()),
-                None => Ok(default),
-            }
-        };
-        let accuracy = match &integ.accuracy {
-            Some(a) if method == "rk4" => {
-                return Err(err(
-                    a.span(),
-                    "accuracy needs an adaptive method: rk4 has a fixed step".into(),
-                    "use method = \"dop853\" or \"dopri5\", or remove accuracy",
-                ))
-            }
-            Some(_) => Some(positive(&integ.accuracy, 0.0, "accuracy")?),
-            None => None,
-        };
-        // Without tolerances, an accuracy asked is where the refinement starts.
-        let default_tol = accuracy.unwrap_or(1e-9);
-        let integrator = Integrator {
-            method,
-            rtol: positive(&integ.rtol, default_tol, "rtol")?,
-            atol: positive(&integ.atol, default_tol, "atol")?,
-            step: positive(&integ.step, output_step.get_ref() / 10.0, "step")?,
-            accuracy,
-        };
-        let values = |table: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>| -> Result<Vec<(String, Value, std::ops::Range<usize>)>, SceneError> {
-            let mut out = Vec::new();
-            for (k, v) in table.unwrap_or_default() {
-                let span = v.span();
-                let value = match v.get_ref() {
-                    toml::Value::Float(x) => Value { number: *x, unit: None },
-                    toml::Value::Integer(i) => Value { number: *i as f64, unit: None },
-                    toml::Value::String(s) => {
-                        let mut parts = s.split_whitespace();
-                        let number: f64 = parts.next().and_then(|n| n.parse().ok()).ok_or_else(|| {
-                            err(span.clone(), format!("`{s}` is not a number with a unit"), "write a number, or a string like \"30 deg\" or \"10 rad/s\"")
-                        })?;
-                        let unit: String = parts.collect::<Vec<_>>().join(" ");
-                        Value { number, unit: (!unit.is_empty()).then_some(unit) }
-                    }
-                    other => return Err(err(span, format!("`{other}` is not a number"), "write a number, or a string like \"30 deg\"")),
-                };
-                out.push((k.get_ref().clone(), value, span));
-            }
-            Ok(out)
-        };
+        let (t_final, output_step) = text.times(raw.t_final, raw.output_step)?;
+        let integrator = text.integrator(raw.integrator, output_step)?;
         let outputs =
             raw.outputs.unwrap_or_default().into_iter().map(|o| (o.get_ref().clone(), o.span())).collect();
         Ok(Scene {
             path: PathBuf::from(file),
             source: source.to_string(),
             title: raw.title.unwrap_or_else(|| model.get_ref().clone()),
+            model_span: model.span(),
             model: model.into_inner(),
-            parameters: values(raw.parameters)?,
-            initial: values(raw.initial)?,
-            t_final: t_final.into_inner(),
-            output_step: output_step.into_inner(),
+            parameters: text.values(raw.parameters)?,
+            initial: text.values(raw.initial)?,
+            t_final,
+            output_step,
             outputs,
             integrator,
         })
     }
 
     /// An error at a span of this scene's text.
-    pub fn error_at(&self, span: std::ops::Range<usize>, message: String, help: &str) -> SceneError {
-        let (line, column) = line_col(&self.source, span.start);
-        SceneError { file: self.path.display().to_string(), line, column, message, help: help.to_string() }
+    pub fn error_at(&self, span: Span, message: String, help: &str) -> SceneError {
+        error_at(&self.path.display().to_string(), &self.source, span, message, help)
     }
 }

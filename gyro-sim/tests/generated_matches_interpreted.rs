@@ -22,7 +22,7 @@ fn generated_rhs_equals_the_interpreted_equations() {
     for _ in 0..1000 {
         let mut p = gimbal::Params::default();
         let mut vals: Vec<(String, f64)> = Vec::new();
-        for name in gimbal::Model::PARAM_NAMES {
+        for name in gimbal::INFO.param_names {
             // Physical geometry: the frames' thickness W is below every height, so M is
             // positive definite (random W > H gives negative inertias and a near-singular M).
             let v = if *name == "W" { rng.random_range(0.005..0.09) } else { rng.random_range(0.1..3.0) };
@@ -32,7 +32,7 @@ fn generated_rhs_equals_the_interpreted_equations() {
         let y: Vec<f64> = (0..6)
             .map(|i| if i < 3 { rng.random_range(-3.0..3.0) } else { rng.random_range(-20.0..20.0) })
             .collect();
-        for (name, v) in gimbal::Model::STATE_NAMES.iter().zip(&y) {
+        for (name, v) in gimbal::INFO.state_names.iter().zip(&y) {
             vals.push((name.to_string(), *v));
         }
         let value = |s: SymbolId, extra: &[(String, f64)]| {
@@ -55,7 +55,7 @@ fn generated_rhs_equals_the_interpreted_equations() {
         worst = worst.max(normwise(&dy[..3], &want_q)).max(normwise(&dy[3..], udot.as_slice()));
         let extra: Vec<(String, f64)> =
             ["U1'", "U2'", "U3'"].iter().zip(udot.iter()).map(|(n, v)| (n.to_string(), *v)).collect();
-        let mut out = [0.0; 1];
+        let mut out = [0.0; gimbal::N_OUTPUTS];
         gimbal::outputs(0.0, &y, &p, &mut out);
         let want = at(ap, &extra);
         worst = worst.max((out[0] - want).abs() / want.abs().max(1.0));

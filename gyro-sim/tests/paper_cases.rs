@@ -16,16 +16,16 @@ fn script_case_matches_the_reference_trajectory() {
     let summary = run(&s, None).unwrap();
     let reference = include_str!("data/gimbal_script_case.csv");
     let mut worst: f64 = 0.0;
-    for (row, line) in summary.table.rows.iter().zip(reference.lines().skip(1)) {
+    for (row, line) in summary.trajectory.rows.iter().zip(reference.lines().skip(1)) {
         let want: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
         assert!((row[0] - want[0]).abs() < 1e-12, "times {} vs {}", row[0], want[0]);
         for k in 1..=7 {
-            // Angles are written in degrees; the reference is in radians.
-            let got = if k <= 3 { row[k].to_radians() } else { row[k] };
+            // The trajectory is in radians, as the reference (degrees only in the CSV).
+            let got = row[k];
             worst = worst.max((got - want[k]).abs() / want[k].abs().max(1.0));
         }
     }
-    assert_eq!(summary.table.rows.len(), 101);
+    assert_eq!(summary.trajectory.rows.len(), 101);
     // The scene asks accuracy 1e-9 (refining from rtol = atol = 1e-12); the reference's own
     // methods agree to about 1e-11.
     let asked = s.integrator.accuracy.unwrap();
@@ -42,14 +42,14 @@ fn trial_one_follows_its_closed_form() {
     let (m1, m2, h1, h2, w, l, y, u30) = (2.0, 2.0, 0.6, 0.5, 0.025, 0.3, 10.0, 10.0);
     let i1 = 2.0 / 3.0 * m1 * (h1 * w - w * w);
     let j1 = 2.0 / 3.0 * m2 * (h2 * w - w * w);
-    for row in &summary.table.rows {
+    for row in &summary.trajectory.rows {
         let t = row[0];
         let u1 = -y * t / (i1 + j1);
         let q1 = -y * t * t / (2.0 * (i1 + j1));
         let q3 = u30 * t - q1;
         assert_eq!(row[2], 0.0, "q2 must stay exactly 0 at t = {t}");
-        assert!((row[1].to_radians() - q1).abs() < 1e-7 * q1.abs().max(1.0), "q1 at {t}");
-        assert!((row[3].to_radians() - q3).abs() < 1e-7 * q3.abs().max(1.0), "q3 at {t}");
+        assert!((row[1] - q1).abs() < 1e-7 * q1.abs().max(1.0), "q1 at {t}");
+        assert!((row[3] - q3).abs() < 1e-7 * q3.abs().max(1.0), "q3 at {t}");
         assert!((row[4] - u1).abs() < 1e-8 * u1.abs().max(1.0), "u1 at {t}");
         assert!((row[6] - (u30 - u1)).abs() < 1e-8 * u30, "u3 at {t}");
         assert!((row[7] - l * u30 * u30).abs() < 1e-9 * l * u30 * u30, "|a_P| at {t}");
@@ -62,11 +62,11 @@ fn the_last_row_is_at_t_final_exactly() {
     let text = "model = \"gimbal_gyroscope\"\nt_final = 0.3\noutput_step = 0.1\n";
     let s = Scene::parse("exact.toml", text).unwrap();
     let summary = run(&s, None).unwrap();
-    let times: Vec<f64> = summary.table.rows.iter().map(|r| r[0]).collect();
+    let times: Vec<f64> = summary.trajectory.rows.iter().map(|r| r[0]).collect();
     assert_eq!(times, vec![0.0, 0.1, 0.2, 0.3]);
     let text = "model = \"gimbal_gyroscope\"\nt_final = 0.25\noutput_step = 0.1\n";
     let s = Scene::parse("uneven.toml", text).unwrap();
-    let times: Vec<f64> = run(&s, None).unwrap().table.rows.iter().map(|r| r[0]).collect();
+    let times: Vec<f64> = run(&s, None).unwrap().trajectory.rows.iter().map(|r| r[0]).collect();
     assert_eq!(times, vec![0.0, 0.1, 0.2, 0.25]);
 }
 
@@ -75,10 +75,10 @@ fn a_run_writes_csv_and_plot_and_no_partial_files() {
     let dir = std::env::temp_dir().join(format!("gyro-sim-out-{}", std::process::id()));
     let s = scene("scenes/paper/trial2.toml");
     let summary = run(&s, Some(&dir)).unwrap();
-    let csv = std::fs::read_to_string(summary.csv.unwrap()).unwrap();
+    let csv = std::fs::read_to_string(summary.written.as_ref().unwrap().csv.clone()).unwrap();
     assert!(csv.starts_with("t,q1_deg,q2_deg,q3_deg,u1_rad_per_s,u2_rad_per_s,u3_rad_per_s,ap_m_per_s2\n"));
     assert_eq!(csv.lines().count(), 102);
-    let png = std::fs::read(summary.plot.unwrap()).unwrap();
+    let png = std::fs::read(summary.written.as_ref().unwrap().plot.clone()).unwrap();
     assert_eq!(&png[1..4], b"PNG");
     let names: Vec<String> =
         std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into()).collect();
@@ -89,12 +89,12 @@ fn a_run_writes_csv_and_plot_and_no_partial_files() {
 /// Largest error of a run against a reference CSV (radians), relative to max(1, |value|).
 fn error_of(summary: &gyro_sim::run::RunSummary, reference: &str) -> f64 {
     let mut worst: f64 = 0.0;
-    assert_eq!(summary.table.rows.len(), reference.lines().count() - 1);
-    for (row, line) in summary.table.rows.iter().zip(reference.lines().skip(1)) {
+    assert_eq!(summary.trajectory.rows.len(), reference.lines().count() - 1);
+    for (row, line) in summary.trajectory.rows.iter().zip(reference.lines().skip(1)) {
         let want: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
         assert!((row[0] - want[0]).abs() < 1e-12);
         for k in 1..=7 {
-            let got = if k <= 3 { row[k].to_radians() } else { row[k] };
+            let got = row[k];
             worst = worst.max((got - want[k]).abs() / want[k].abs().max(1.0));
         }
     }
@@ -116,7 +116,7 @@ fn every_trial_matches_its_independent_reference_to_the_accuracy_it_asks() {
         let asked = s.integrator.accuracy.expect("the paper's scenes ask an accuracy");
         let summary = run(&s, None).unwrap();
         let e = error_of(&summary, reference);
-        let reached = summary.accuracy.unwrap();
+        let reached = summary.trajectory.accuracy.unwrap();
         println!(
             "{path}: error {e:.2e}, asked {asked:e}, {} runs, estimate {:.2e}",
             reached.runs, reached.estimate
@@ -134,7 +134,7 @@ fn the_per_step_tolerance_alone_does_not_give_trial_3_its_accuracy() {
     let mut s = scene(path);
     s.integrator.accuracy = None;
     let summary = run(&s, None).unwrap();
-    assert!(summary.accuracy.is_none());
+    assert!(summary.trajectory.accuracy.is_none());
     let e = error_of(&summary, reference);
     assert!(e > 1e-7, "{e:e}");
 }
@@ -147,7 +147,7 @@ fn a_loose_start_is_refined_until_the_accuracy_is_met() {
     s.integrator.atol = 1e-5;
     s.integrator.accuracy = Some(1e-8);
     let summary = run(&s, None).unwrap();
-    let reached = summary.accuracy.unwrap();
+    let reached = summary.trajectory.accuracy.unwrap();
     assert!(reached.runs >= 3, "{reached:?}");
     assert!(reached.rtol <= 1e-9, "{reached:?}");
     assert!(error_of(&summary, reference) <= 1e-8);
@@ -169,16 +169,16 @@ fn cyclic_coordinates_nothing_needs_are_not_integrated() {
     let speeds = format!("{base}outputs = [\"Q2\", \"U1\", \"U2\", \"U3\"]\n[parameters]\nY = 10.0\nZ = 10.0\n[initial]\nU3 = 100.0\n");
     let s = Scene::parse("speeds.toml", &speeds).unwrap();
     let reduced = run(&s, None).unwrap();
-    assert_eq!(reduced.integrated, vec!["Q2", "U1", "U2", "U3"]);
+    assert_eq!(reduced.trajectory.integrated, vec!["Q2", "U1", "U2", "U3"]);
     let with_ap = format!("{base}outputs = [\"Q2\", \"AP\"]\n");
     let s = Scene::parse("ap.toml", &with_ap).unwrap();
-    assert_eq!(run(&s, None).unwrap().integrated, vec!["Q2", "Q3", "U1", "U2", "U3"]);
+    assert_eq!(run(&s, None).unwrap().trajectory.integrated, vec!["Q2", "Q3", "U1", "U2", "U3"]);
     // The reduced run gives the same numbers as the full one.
     let full = run(&scene("scenes/paper/trial2.toml"), None).unwrap();
     let s = Scene::parse("t2.toml", &format!("{base}outputs = [\"Q2\", \"U1\", \"U2\", \"U3\"]\n[integrator]\nrtol = 1e-10\natol = 1e-10\n[parameters]\nY = 10.0\nZ = 10.0\n[initial]\nU3 = 10.0\n")).unwrap();
     let part = run(&s, None).unwrap();
     // Both runs are within 2e-8 of the reference (different state sizes give different steps).
-    for (a, b) in full.table.rows.iter().zip(&part.table.rows) {
+    for (a, b) in full.trajectory.rows.iter().zip(&part.trajectory.rows) {
         // full: t, q1, q2, q3, u1, u2, u3, ap; part: t, q2, u1, u2, u3
         for (x, y) in [(a[2], b[1]), (a[4], b[2]), (a[5], b[3]), (a[6], b[4])] {
             assert!((x - y).abs() < 1e-7 * x.abs().max(1.0), "{x} vs {y}");
@@ -194,7 +194,7 @@ fn trial_one_kinetic_energy_grows_by_the_work_of_the_torque() {
     let (m1, m2, h1, h2, w, y, t) = (2.0, 2.0, 0.6, 0.5, 0.025, 10.0, 5.0);
     let i1 = 2.0 / 3.0 * m1 * (h1 * w - w * w);
     let j1 = 2.0 / 3.0 * m2 * (h2 * w - w * w);
-    let (start, end) = summary.kinetic_energy;
+    let (start, end) = summary.trajectory.kinetic_energy.unwrap();
     let k1 = 50.0 * 0.3f64 * 0.3 / 2.0;
     assert!((start - k1 * 100.0 / 2.0).abs() < 1e-9, "T(0) = K1 U3^2 / 2: {start}");
     let work = y * y * t * t / (2.0 * (i1 + j1));

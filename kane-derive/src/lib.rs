@@ -21,6 +21,17 @@ pub fn model(input: TokenStream) -> TokenStream {
     expand(&path).unwrap_or_else(syn::Error::into_compile_error).into()
 }
 
+/// Expands a canonical system built through kane-model's Rust API (`kane_model::models`), by
+/// name, into the same items as [`model!`].
+#[proc_macro]
+pub fn builtin_model(input: TokenStream) -> TokenStream {
+    let name = parse_macro_input!(input as LitStr);
+    kane_model::build::generate_builtin(&name.value())
+        .map(|e| e.tokens)
+        .unwrap_or_else(|e| syn::Error::new(name.span(), e.to_string()).into_compile_error())
+        .into()
+}
+
 fn expand(lit: &LitStr) -> syn::Result<proc_macro2::TokenStream> {
     let dir = std::env::var("CARGO_MANIFEST_DIR").unwrap_or_else(|_| ".".into());
     let path = std::path::Path::new(&dir).join(lit.value());
@@ -28,11 +39,8 @@ fn expand(lit: &LitStr) -> syn::Result<proc_macro2::TokenStream> {
     let src = std::fs::read_to_string(&path).map_err(|e| {
         syn::Error::new(lit.span(), format!("cannot read model file {}: {e}", path.display()))
     })?;
-    let mut loaded =
-        kane_model::lang::load(&shown, &src).map_err(|r| syn::Error::new(lit.span(), r.to_string()))?;
-    let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
-    let emitted = kane_model::codegen::emit(&mut loaded, &name)
-        .map_err(|e| syn::Error::new(lit.span(), format!("{shown}: {e}")))?;
+    let emitted = kane_model::build::generate_file(std::path::Path::new(&shown), &src)
+        .map_err(|e| syn::Error::new(lit.span(), e.to_string()))?;
     let tokens = emitted.tokens;
     let full = path.display().to_string();
     Ok(quote! {

@@ -3,10 +3,14 @@
 //! - [`expr`]: hash-consed expressions with exact rationals, derivatives, simplification,
 //!   CSE, numeric evaluation generic over `num_traits::Float`, and printers.
 //! - [`mechanics`]: frames, points, bodies, loads and Kane's equations `M u' = f`.
+//! - [`spec`]: what to generate from a model: equations, defaults, units, typed outputs.
+//! - [`codegen`]: a spec lowered to one straight-line program, printed as Rust.
+//! - [`lang`]: the Autolev-compatible model language, building models and specs.
 //! - [`models`]: canonical systems (the paper's gimbal, the heavy top, n-link pendulums).
 //! - [`dual`]: dual numbers implementing `num_traits::Float`, for exact derivatives.
 #![warn(missing_docs)]
 
+pub mod build;
 pub mod codegen;
 pub mod dual;
 pub mod expr;
@@ -14,6 +18,7 @@ pub mod lang;
 pub mod mechanics;
 pub mod models;
 pub mod runtime;
+pub mod spec;
 
 /// Runtime helpers named by generated code; not a stable API.
 #[doc(hidden)]

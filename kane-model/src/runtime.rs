@@ -1,44 +1,142 @@
-//! What generated model modules implement, so a simulator can drive any of them.
+//! What generated model modules implement and describe, so a simulator can drive any of them:
+//! in comes nothing; out go the [`GeneratedModel`] trait and the [`ModelInfo`] metadata printed
+//! beside each model.
+
+/// One output of a generated model.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OutputInfo {
+    /// Its name in the model.
+    pub name: &'static str,
+    /// Its unit (empty when none).
+    pub unit: &'static str,
+    /// What it is: [`crate::spec::OutputKind::label`] (`scalar`, `vector`, `kinetic_energy`, ...).
+    pub kind: &'static str,
+    /// The names of the values it writes (one for a scalar).
+    pub columns: &'static [&'static str],
+    /// The states it reads.
+    pub reads: &'static [usize],
+    /// Whether it reads the speed rates `u'` (evaluate `rhs` first).
+    pub needs_rates: bool,
+}
+
+/// Everything a driver needs to know about a generated model, without its types.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ModelInfo {
+    /// The model's name.
+    pub name: &'static str,
+    /// State names, coordinates then speeds, as declared.
+    pub state_names: &'static [&'static str],
+    /// Each state's unit from UNITS (empty when none); angles are integrated in radians.
+    pub state_units: &'static [&'static str],
+    /// Number of coordinates (the first states).
+    pub n_coordinates: usize,
+    /// Parameter names.
+    pub param_names: &'static [&'static str],
+    /// Each parameter's unit (empty when none).
+    pub param_units: &'static [&'static str],
+    /// The outputs.
+    pub outputs: &'static [OutputInfo],
+    /// Coordinates that no equation reads (cyclic): they can be left out of the integrated
+    /// state when no output needs them.
+    pub cyclic: &'static [usize],
+    /// Arithmetic operations per call of `rhs` and per evaluation of every output.
+    pub op_counts: (usize, usize),
+}
+
+impl ModelInfo {
+    /// The index of a state by name (case-insensitive).
+    pub fn state(&self, name: &str) -> Option<usize> {
+        self.state_names.iter().position(|s| s.eq_ignore_ascii_case(name))
+    }
+
+    /// The index of an output by name (case-insensitive).
+    pub fn output(&self, name: &str) -> Option<usize> {
+        self.outputs.iter().position(|o| o.name.eq_ignore_ascii_case(name))
+    }
+}
 
 /// A model compiled from its equations by [`crate::codegen`].
 pub trait GeneratedModel {
-    /// Parameter values (defaults from the model file's INPUT).
+    /// Parameter values (defaults from the model's INPUT).
     type Params: Clone + Default + std::fmt::Debug;
     /// Quantities of the parameters alone, computed once per parameter set.
     type Derived: Clone + std::fmt::Debug;
-    /// The model's name.
-    const NAME: &'static str;
-    /// State names, coordinates then speeds, as declared.
-    const STATE_NAMES: &'static [&'static str];
-    /// Each state's unit from UNITS (empty when none); angles are integrated in radians.
-    const STATE_UNITS: &'static [&'static str];
-    /// Output names (the model file's OUTPUT scalars that are not states).
-    const OUTPUT_NAMES: &'static [&'static str];
-    /// Each output's unit from UNITS (empty when none).
-    const OUTPUT_UNITS: &'static [&'static str];
-    /// Parameter names.
-    const PARAM_NAMES: &'static [&'static str];
+    /// The model's metadata.
+    const INFO: ModelInfo;
     /// The initial state from INPUT, in radians (NaN where INPUT gives none).
     fn initial_state() -> Vec<f64>;
     /// Sets a parameter by name (case-insensitive); false if there is none.
     fn set_param(p: &mut Self::Params, name: &str, value: f64) -> bool;
     /// A parameter's value by name (case-insensitive).
     fn param(p: &Self::Params, name: &str) -> Option<f64>;
-    /// `dy = f(t, y)`.
-    fn rhs(t: f64, y: &[f64], p: &Self::Params, dy: &mut [f64]);
     /// The parameter-only quantities of `rhs`.
     fn derive(p: &Self::Params) -> Self::Derived;
     /// `dy = f(t, y)` with `d = derive(p)`: the fast path for integration.
     fn rhs_derived(t: f64, y: &[f64], p: &Self::Params, d: &Self::Derived, dy: &mut [f64]);
-    /// The kinetic energy at `(t, y)`.
-    fn kinetic_energy(t: f64, y: &[f64], p: &Self::Params) -> f64;
-    /// The outputs at `(t, y)`.
-    fn outputs(t: f64, y: &[f64], p: &Self::Params, out: &mut [f64]);
-    /// Arithmetic operations per call of `rhs` and of `outputs`.
-    const OP_COUNTS: (usize, usize);
-    /// Coordinates that no equation reads (cyclic): they can be left out of the integrated state
-    /// when no output needs them.
-    const CYCLIC: &'static [usize];
-    /// For each output, the states it reads.
-    const OUTPUT_STATES: &'static [&'static [usize]];
+    /// `dy = f(t, y)`.
+    fn rhs(t: f64, y: &[f64], p: &Self::Params, dy: &mut [f64]) {
+        Self::rhs_derived(t, y, p, &Self::derive(p), dy)
+    }
+    /// Output `k` at `(t, y)` into `out` (its columns); `rates` are `u'` when the output needs
+    /// them (see [`OutputInfo::needs_rates`]), else ignored.
+    fn output(k: usize, t: f64, y: &[f64], rates: &[f64], p: &Self::Params, out: &mut [f64]);
+}
+
+/// A unit quaternion (scalar first, non-negative) from direction cosines `r` (row by row, an
+/// orthonormal matrix), by Shepperd's method: the largest of the four squares is found first,
+/// so no square root of a small difference is taken.
+pub fn quaternion_from_dcm<T: num_traits::Float>(r: &[T; 9]) -> [T; 4] {
+    let one = T::one();
+    let quarter = T::from(0.25).unwrap_or_else(T::nan);
+    let half = T::from(0.5).unwrap_or_else(T::nan);
+    let trace = r[0] + r[4] + r[8];
+    let diag = [trace, r[0], r[4], r[8]];
+    let k = (0..4).fold(0, |best, i| if diag[i] > diag[best] { i } else { best });
+    let s = (one + diag[k] + diag[k] - trace).sqrt() * half; // |q_k|
+    let f = quarter / s;
+    let (a, b, c) = (r[7] - r[5], r[2] - r[6], r[3] - r[1]);
+    let (d, e, g) = (r[1] + r[3], r[2] + r[6], r[5] + r[7]);
+    let q = match k {
+        0 => [s, a * f, b * f, c * f],
+        1 => [a * f, s, d * f, e * f],
+        2 => [b * f, d * f, s, g * f],
+        _ => [c * f, e * f, g * f, s],
+    };
+    if q[0] < T::zero() {
+        q.map(|x| -x)
+    } else {
+        q
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::quaternion_from_dcm;
+
+    #[test]
+    fn quaternion_round_trips_through_its_dcm() {
+        for q in
+            [[0.9f64, 0.1, -0.3, 0.2], [0.05, 0.7, 0.1, -0.6], [0.0, 0.0, 0.0, 1.0], [0.1, -0.2, 0.9, 0.3]]
+        {
+            let n = q.iter().map(|x| x * x).sum::<f64>().sqrt();
+            let [e0, e1, e2, e3] = q.map(|x| x / n);
+            // Body-to-space rotation matrix of the quaternion.
+            let r = [
+                e0 * e0 + e1 * e1 - e2 * e2 - e3 * e3,
+                2.0 * (e1 * e2 - e0 * e3),
+                2.0 * (e1 * e3 + e0 * e2),
+                2.0 * (e1 * e2 + e0 * e3),
+                e0 * e0 - e1 * e1 + e2 * e2 - e3 * e3,
+                2.0 * (e2 * e3 - e0 * e1),
+                2.0 * (e1 * e3 - e0 * e2),
+                2.0 * (e2 * e3 + e0 * e1),
+                e0 * e0 - e1 * e1 - e2 * e2 + e3 * e3,
+            ];
+            let got = quaternion_from_dcm(&r);
+            let sign = if e0 < 0.0 { -1.0 } else { 1.0 };
+            for (g, w) in got.iter().zip([e0, e1, e2, e3]) {
+                assert!((g - sign * w).abs() < 1e-12, "{got:?} vs {q:?}");
+            }
+        }
+    }
 }

@@ -2,8 +2,9 @@
 
 fn gimbal_source() -> String {
     let src = include_str!("../models/gimbal_gyroscope.al");
-    let mut loaded = kane_model::lang::load("gimbal_gyroscope.al", src).unwrap();
-    let emitted = kane_model::codegen::emit(&mut loaded, "gimbal_gyroscope").unwrap();
+    let loaded = kane_model::lang::load("gimbal_gyroscope.al", src).unwrap();
+    let mut spec = loaded.into_spec("gimbal_gyroscope").unwrap();
+    let emitted = kane_model::codegen::generate(&mut spec).unwrap();
     kane_model::codegen::to_source(&emitted).unwrap()
 }
 
@@ -19,15 +20,15 @@ fn generated_gimbal_module_snapshot() {
 
 #[test]
 fn a_model_without_kane_is_refused() {
-    let mut loaded = kane_model::lang::load("m.al", "NEWTONIAN N\nCONSTANTS A\n").unwrap();
-    let err = kane_model::codegen::emit(&mut loaded, "m").unwrap_err();
+    let loaded = kane_model::lang::load("m.al", "NEWTONIAN N\nCONSTANTS A\n").unwrap();
+    let err = loaded.into_spec("m").err().unwrap();
     assert_eq!(err.to_string(), "the model derives no equations: call KANE() in the model file");
 }
 
 #[test]
 fn build_script_form_writes_an_includable_module() {
     let out = std::env::temp_dir().join(format!("kane-build-{}.rs", std::process::id()));
-    kane_model::codegen::build_script("models/gimbal_gyroscope.al", &out).unwrap();
+    kane_model::build::build_script("models/gimbal_gyroscope.al", &out).unwrap();
     let text = std::fs::read_to_string(&out).unwrap();
     assert!(!text.starts_with("//!"), "an include!d file must not open with an inner doc comment");
     assert!(text.contains("pub fn rhs<T: ::kane_model::__private::num_traits::Float>"), "{}", &text[..200]);

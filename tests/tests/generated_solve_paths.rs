@@ -27,13 +27,13 @@ fn worst_difference<M: GeneratedModel>(src: &str, samples: usize) -> f64 {
     for _ in 0..samples {
         let mut p = M::Params::default();
         let mut vals: Vec<(String, f64)> = Vec::new();
-        for name in M::PARAM_NAMES {
+        for name in M::INFO.param_names {
             let v = rng.random_range(0.2..2.0);
             assert!(M::set_param(&mut p, name, v));
             vals.push((name.to_ascii_uppercase(), v));
         }
         let y: Vec<f64> = (0..nq + n).map(|_| rng.random_range(-2.0..2.0)).collect();
-        for (name, v) in M::STATE_NAMES.iter().zip(&y) {
+        for (name, v) in M::INFO.state_names.iter().zip(&y) {
             vals.push((name.to_ascii_uppercase(), *v));
         }
         let at = |e| {

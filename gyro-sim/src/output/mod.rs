@@ -1,10 +1,13 @@
-//! Results: a table of outputs, written as CSV and plotted, never half-written.
+//! Results: in comes a trajectory; out go a CSV and a plot in display units, never
+//! half-written.
 
 mod csv_file;
 mod plot;
+mod write;
 
 pub use csv_file::write_csv;
 pub use plot::write_plot;
+pub use write::{column_name, display_table, write, WriteError, Written};
 
 /// One column of results.
 #[derive(Clone, Debug)]

@@ -241,11 +241,11 @@ fn run(command: Command) -> Result<(), String> {
             Ok(())
         }
         Command::Gen { file, out, stats } => {
-            let mut m = load(&file)?;
-            let name = file.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
-            let emitted =
-                kane_model::codegen::emit(&mut m, &name).map_err(|e| format!("{}: {e}", file.display()))?;
-            let source = kane_model::codegen::to_source(&emitted)?;
+            let emitted = kane_model::build::generate_file(&file, &read(&file)?).map_err(|e| match e {
+                kane_model::build::BuildError::Model(report) => report.render(),
+                other => other.to_string(),
+            })?;
+            let source = kane_model::codegen::to_source(&emitted).map_err(|e| e.to_string())?;
             match out {
                 Some(path) => {
                     // Written to a temporary file, then renamed: never a half-written module.
@@ -256,7 +256,10 @@ fn run(command: Command) -> Result<(), String> {
                 None => print!("{source}"),
             }
             if stats {
-                eprintln!("rhs: {} operations; outputs: {} more", emitted.op_counts.0, emitted.op_counts.1);
+                eprintln!(
+                    "lowered program: rhs {} operations per call; outputs {} operations for all of them",
+                    emitted.op_counts.0, emitted.op_counts.1
+                );
             }
             Ok(())
         }

@@ -29,5 +29,5 @@ pub use equiv::{Equivalence, EquivalenceConfig};
 pub use error::ExprError;
 pub use node::{ExprId, Func, Node, SymbolId, SymbolKind};
 pub use number::{Number, Rational};
-pub use print::{RustStyle, Scalar};
+pub(crate) use print::layout::{layout, Prec, Syntax};
 pub use tape::{Op, Tape};

@@ -17,6 +17,7 @@ mod compare;
 mod diagnostic;
 mod interp;
 mod parser;
+mod to_spec;
 mod token;
 
 pub use ast::{Expr, ExprKind, Stmt, StmtKind};

@@ -12,6 +12,7 @@
 
 use crate::expr::ExprId;
 use crate::mechanics::{BodyId, Model, Orientation, PointId, Result, Shape, Vector};
+use crate::spec::{ModelSpec, OrientationForm};
 
 /// The heavy top with handles on its symbols.
 pub struct HeavyTop {
@@ -59,5 +60,39 @@ impl HeavyTop {
         let gravity = m.scale(&m.unit(n, 3), mg)?;
         m.add_gravity(&gravity)?;
         Ok(HeavyTop { model: m, e, w, rotor, support: o, constants: [mass, g, r, d] })
+    }
+}
+
+impl HeavyTop {
+    /// The name of the spec the Rust-API top generates (the model file's is `heavy_top`).
+    pub const SPEC_NAME: &'static str = "heavy_top_rust";
+
+    /// The spec of the top: the EJS defaults (M = g = R = d = 1, tilted 60 degrees from the
+    /// vertical, spin 10 rad/s), and outputs: kinetic and potential energy, the angular
+    /// momentum about the support in space axes, the rotor's orientation as a quaternion.
+    pub fn spec(self) -> Result<ModelSpec> {
+        let HeavyTop { mut model, support, rotor, constants, .. } = self;
+        let eqs = model.kane()?;
+        let n = model.newtonian();
+        let frame = model.body(rotor).frame;
+        let g = model.ar.neg(constants[1])?;
+        let gravity = model.scale(&model.unit(n, 3), g)?;
+        let mut spec = ModelSpec::new(Self::SPEC_NAME, model, eqs);
+        let half_tilt = 30f64.to_radians();
+        for (name, v) in [("M", 1.0), ("g", 1.0), ("R", 1.0), ("d", 1.0)] {
+            spec.set_default(name, v);
+        }
+        let initial = [half_tilt.cos(), half_tilt.sin(), 0.0, 0.0, 0.0, 0.0, 10.0];
+        for (name, v) in ["e0", "e1", "e2", "e3", "w1", "w2", "w3"].iter().zip(initial) {
+            spec.set_default(name, v);
+        }
+        for w in ["w1", "w2", "w3"] {
+            spec.set_unit(w, "RAD/SEC");
+        }
+        spec.add_kinetic_energy("KE", "")?;
+        spec.add_potential_energy("PE", &gravity, support, "")?;
+        spec.add_angular_momentum("L", support, n, "")?;
+        spec.add_orientation("Q", frame, OrientationForm::Quaternion)?;
+        Ok(spec)
     }
 }

@@ -1,8 +1,5 @@
-//! Printers: plain text, LaTeX and Rust tokens, sharing one layout.
+//! Printers: plain text and LaTeX, sharing one layout with code generation's lowering.
 
 mod latex;
-mod layout;
-mod rust;
+pub(crate) mod layout;
 mod text;
-
-pub use rust::{RustStyle, Scalar};

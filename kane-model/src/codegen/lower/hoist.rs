@@ -12,7 +12,6 @@ pub struct Hoisted {
     /// Each constant and the expression (in the parameters) it stands for, in first-use order.
     pub defs: Vec<(SymbolId, ExprId)>,
     by_def: FxHashMap<ExprId, SymbolId>,
-    index: FxHashMap<SymbolId, usize>,
     memo: FxHashMap<ExprId, ExprId>,
 }
 
@@ -66,14 +65,8 @@ impl Hoisted {
         }
         let s = ar.declare(&format!("__hoisted{}", def.index()), SymbolKind::Constant)?;
         self.by_def.insert(def, s);
-        self.index.insert(s, self.defs.len());
         self.defs.push((s, def));
         Ok(ar.symbol_expr(s))
-    }
-
-    /// The position of `s` among the constants, if it is one.
-    pub fn index_of(&self, s: SymbolId) -> Option<usize> {
-        self.index.get(&s).copied()
     }
 
     /// A sum (`is_sum`) or product of `parts` with its parameter-only parts as one constant; a

@@ -1,0 +1,90 @@
+//! Writing a trajectory: in comes a [`Trajectory`] in model units; out go `trajectory.csv` and
+//! `trajectory.png` in a folder, with each column in its display unit (angles the model gives
+//! in degrees are written in degrees). Units are this module's concern and the plot's only.
+
+use std::path::{Path, PathBuf};
+
+use thiserror::Error;
+
+use super::{write_csv, write_plot, Column, Table};
+use crate::trajectory::Trajectory;
+
+/// Why results could not be written.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum WriteError {
+    /// The folder could not be made.
+    #[error("{path}: {message}")]
+    Folder {
+        /// The folder.
+        path: PathBuf,
+        /// What the system said.
+        message: String,
+    },
+    /// A file could not be written.
+    #[error("{0}")]
+    File(String),
+}
+
+/// The files written.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Written {
+    /// The CSV.
+    pub csv: PathBuf,
+    /// The plot.
+    pub plot: PathBuf,
+}
+
+/// Writes `trajectory` into `dir` (made if missing): the CSV and the plot, each atomically.
+pub fn write(trajectory: &Trajectory, dir: &Path) -> Result<Written, WriteError> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| WriteError::Folder { path: dir.to_path_buf(), message: e.to_string() })?;
+    let table = display_table(trajectory);
+    let csv = dir.join("trajectory.csv");
+    write_csv(&table, &csv).map_err(WriteError::File)?;
+    let plot = dir.join("trajectory.png");
+    write_plot(&table, &plot).map_err(WriteError::File)?;
+    Ok(Written { csv, plot })
+}
+
+/// The trajectory in display units, with CSV headers naming them.
+pub fn display_table(trajectory: &Trajectory) -> Table {
+    let columns: Vec<Column> = trajectory
+        .columns
+        .iter()
+        .map(|c| Column {
+            name: column_name(&c.name, &c.unit),
+            label: c.name.clone(),
+            degrees: c.unit.eq_ignore_ascii_case("DEG"),
+            angle: c.is_angle(),
+            output: c.output,
+        })
+        .collect();
+    let rows = trajectory
+        .rows
+        .iter()
+        .map(|row| {
+            let mut out = Vec::with_capacity(row.len());
+            out.push(row[0]);
+            out.extend(
+                row[1..].iter().zip(&columns).map(|(v, c)| if c.degrees { v.to_degrees() } else { *v }),
+            );
+            out
+        })
+        .collect();
+    Table { title: trajectory.title.clone(), columns, rows }
+}
+
+/// `q1` + `DEG` -> `q1_deg`; `AP` + `M/SEC^2` -> `ap_m_per_s2`.
+pub fn column_name(name: &str, unit: &str) -> String {
+    let slug = unit
+        .to_ascii_lowercase()
+        .replace("sec", "s")
+        .replace('/', "_per_")
+        .replace(['^', ' '], "")
+        .replace('*', "_");
+    if slug.is_empty() {
+        name.to_ascii_lowercase()
+    } else {
+        format!("{}_{slug}", name.to_ascii_lowercase())
+    }
+}

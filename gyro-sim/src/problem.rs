@@ -1,0 +1,50 @@
+//! A problem ready to integrate: what [`crate::resolve`] makes of a scene and
+//! [`crate::solve`] integrates. Every number is in model units (radians for angles); units
+//! return only when results are written.
+
+use kane_model::runtime::ModelInfo;
+
+use crate::ode::Method;
+
+/// What a column of the trajectory holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Pick {
+    /// State `i`.
+    State(usize),
+    /// Output `k` (all its components).
+    Output(usize),
+}
+
+/// One integration to do.
+#[derive(Clone, Debug)]
+pub struct Problem {
+    /// A title for plots.
+    pub title: String,
+    /// The model.
+    pub model: &'static ModelInfo,
+    /// Parameter values, in `model.param_names` order.
+    pub params: Vec<f64>,
+    /// The initial state at `t = 0`.
+    pub initial: Vec<f64>,
+    /// Output times, increasing; the last is the final time.
+    pub times: Vec<f64>,
+    /// The method and its tolerances or step.
+    pub method: Method,
+    /// The largest error asked of the trajectory (tolerances refined until it is met).
+    pub accuracy: Option<f64>,
+    /// The columns to write, in order.
+    pub picks: Vec<Pick>,
+}
+
+/// Output times `i * step` (never by repeated addition) up to `t_final`, which is the last one
+/// exactly.
+pub fn output_times(t_final: f64, step: f64) -> Vec<f64> {
+    let n = (t_final / step * (1.0 + 1e-12)).floor() as usize;
+    let mut times: Vec<f64> = (0..=n).map(|i| i as f64 * step).collect();
+    if (times[n] - t_final).abs() > 1e-12 * t_final {
+        times.push(t_final);
+    } else {
+        times[n] = t_final;
+    }
+    times
+}

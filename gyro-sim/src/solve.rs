@@ -1,0 +1,282 @@
+//! Integration: in comes a [`Problem`]; out goes a [`Trajectory`]. The generic driver
+//! [`solve_model`] is public, so a user's crate can integrate its own generated models; outputs
+//! are computed only at output times and only those asked for.
+
+use std::ops::ControlFlow;
+use std::time::Instant;
+
+use kane_model::runtime::GeneratedModel;
+use thiserror::Error;
+
+use crate::ode::{self, Method, OdeError, Stats, System};
+use crate::problem::{Pick, Problem};
+use crate::refine::refine;
+use crate::registry::Registry;
+use crate::trajectory::{Column, Trajectory};
+
+/// Why an integration failed.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum SolveError {
+    /// The problem names a model the registry does not have.
+    #[error("unknown model `{0}`")]
+    UnknownModel(String),
+    /// A state became NaN or infinite.
+    #[error("integration failed: state {name} is not finite ({value}) at t = {time}")]
+    NonFiniteState {
+        /// The state.
+        name: String,
+        /// When.
+        time: f64,
+        /// Its value.
+        value: f64,
+    },
+    /// An output became NaN or infinite.
+    #[error("integration failed: {name} is not finite ({value}) at t = {time}")]
+    NonFiniteOutput {
+        /// The output column.
+        name: String,
+        /// When.
+        time: f64,
+        /// Its value.
+        value: f64,
+    },
+    /// The integrator stopped.
+    #[error("integration failed: {0}")]
+    Ode(#[from] OdeError),
+    /// Refining the tolerances could not reach the asked accuracy.
+    #[error("integration failed: accuracy {goal:e} not reached: runs at rtol {rtol:e} and below still differ by more; ask a looser accuracy")]
+    AccuracyNotReached {
+        /// Asked.
+        goal: f64,
+        /// The finest relative tolerance tried.
+        rtol: f64,
+    },
+}
+
+/// Integrates `problem` with the model the registry has under its name.
+pub fn solve(problem: &Problem, registry: &Registry) -> Result<Trajectory, SolveError> {
+    let entry = registry
+        .find(problem.model.name)
+        .ok_or_else(|| SolveError::UnknownModel(problem.model.name.into()))?;
+    (entry.solve)(problem)
+}
+
+/// A generated model with parameters, as an ODE system.
+pub struct ModelSystem<M: GeneratedModel> {
+    params: M::Params,
+    derived: M::Derived,
+}
+
+impl<M: GeneratedModel> ModelSystem<M> {
+    /// The system for these parameters.
+    pub fn new(params: M::Params) -> Self {
+        let derived = M::derive(&params);
+        ModelSystem { params, derived }
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &M::Params {
+        &self.params
+    }
+}
+
+impl<M: GeneratedModel> System for ModelSystem<M> {
+    fn dim(&self) -> usize {
+        M::INFO.state_names.len()
+    }
+    #[inline(always)]
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        M::rhs_derived(t, y, &self.params, &self.derived, dy)
+    }
+}
+
+/// A system without some of its states (cyclic coordinates nothing asked for depends on): they
+/// are held at zero, which no equation reads, and never integrated.
+pub struct Reduced<'a, S: System> {
+    inner: &'a S,
+    keep: Vec<usize>,
+    full: std::cell::RefCell<(Vec<f64>, Vec<f64>)>,
+}
+
+impl<'a, S: System> Reduced<'a, S> {
+    /// `inner` restricted to the states `keep`.
+    pub fn new(inner: &'a S, keep: Vec<usize>) -> Self {
+        let n = inner.dim();
+        Reduced { inner, keep, full: std::cell::RefCell::new((vec![0.0; n], vec![0.0; n])) }
+    }
+
+    /// The full state with the dropped coordinates at zero.
+    pub fn expand(&self, y: &[f64], full: &mut [f64]) {
+        full.fill(0.0);
+        for (i, k) in self.keep.iter().enumerate() {
+            full[*k] = y[i];
+        }
+    }
+}
+
+impl<S: System> System for Reduced<'_, S> {
+    fn dim(&self) -> usize {
+        self.keep.len()
+    }
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        let mut full = self.full.borrow_mut();
+        let (fy, fdy) = &mut *full;
+        for (i, k) in self.keep.iter().enumerate() {
+            fy[*k] = y[i];
+        }
+        self.inner.rhs(t, fy, fdy);
+        for (i, k) in self.keep.iter().enumerate() {
+            dy[i] = fdy[*k];
+        }
+    }
+}
+
+/// One integration's cost, rows and full state at the final time.
+pub(crate) struct Integration {
+    pub(crate) stats: Stats,
+    pub(crate) rows: Vec<Vec<f64>>,
+    pub(crate) y_end: Vec<f64>,
+}
+
+/// Integrates `problem` with the generated model `M`.
+pub fn solve_model<M: GeneratedModel>(problem: &Problem) -> Result<Trajectory, SolveError> {
+    let info = &M::INFO;
+    let mut params = M::Params::default();
+    for (name, v) in info.param_names.iter().zip(&problem.params) {
+        M::set_param(&mut params, name, *v);
+    }
+    let keep = integrated_states(problem);
+    let full_sys = ModelSystem::<M>::new(params.clone());
+    let sys = Reduced::new(&full_sys, keep.clone());
+    let columns = columns(problem);
+    let integrate_at = |method: Method| integrate::<M>(problem, &sys, &keep, &columns, method);
+    let start = Instant::now();
+    let (Integration { stats, rows, y_end }, accuracy) = match (problem.accuracy, problem.method) {
+        (Some(goal), Method::Adaptive(tab, tol)) => refine(goal, tab, tol, integrate_at)?,
+        _ => (integrate_at(problem.method)?, None),
+    };
+    let wall = start.elapsed();
+    let t_end = *problem.times.last().unwrap_or(&0.0);
+    let kinetic_energy = kinetic_energy_output::<M>().map(|k| {
+        let at = |t: f64, y: &[f64]| {
+            let mut out = [0.0];
+            M::output(k, t, y, &[], full_sys.params(), &mut out);
+            out[0]
+        };
+        (at(0.0, &problem.initial), at(t_end, &y_end))
+    });
+    Ok(Trajectory {
+        title: problem.title.clone(),
+        columns,
+        rows,
+        stats,
+        wall,
+        integrated: keep.iter().map(|k| info.state_names[*k]).collect(),
+        kinetic_energy,
+        accuracy,
+    })
+}
+
+/// The kinetic-energy output of `M`, if it has one that reads no rates.
+fn kinetic_energy_output<M: GeneratedModel>() -> Option<usize> {
+    M::INFO.outputs.iter().position(|o| o.kind == "kinetic_energy" && !o.needs_rates && o.columns.len() == 1)
+}
+
+/// The states to integrate: all but the cyclic coordinates that no column reads.
+fn integrated_states(problem: &Problem) -> Vec<usize> {
+    let info = problem.model;
+    let mut needed = vec![false; info.state_names.len()];
+    for p in &problem.picks {
+        match p {
+            Pick::State(i) => needed[*i] = true,
+            Pick::Output(k) => info.outputs[*k].reads.iter().for_each(|i| needed[*i] = true),
+        }
+    }
+    (0..needed.len()).filter(|i| needed[*i] || !info.cyclic.contains(i)).collect()
+}
+
+/// The columns the picks write.
+fn columns(problem: &Problem) -> Vec<Column> {
+    let info = problem.model;
+    let mut out = Vec::new();
+    for p in &problem.picks {
+        match *p {
+            Pick::State(i) => out.push(Column {
+                name: info.state_names[i].to_string(),
+                unit: info.state_units[i].to_string(),
+                output: false,
+            }),
+            Pick::Output(k) => {
+                let o = &info.outputs[k];
+                out.extend(o.columns.iter().map(|c| Column {
+                    name: c.to_string(),
+                    unit: o.unit.to_string(),
+                    output: true,
+                }));
+            }
+        }
+    }
+    out
+}
+
+/// One integration at `method`: the rows written and the full state at the final time.
+fn integrate<M: GeneratedModel>(
+    problem: &Problem,
+    sys: &Reduced<'_, ModelSystem<M>>,
+    keep: &[usize],
+    columns: &[Column],
+    method: Method,
+) -> Result<Integration, SolveError> {
+    let info = &M::INFO;
+    let n = info.state_names.len();
+    let mut full_y = vec![0.0; n];
+    let mut y_end = problem.initial.clone();
+    let mut rows: Vec<Vec<f64>> = Vec::with_capacity(problem.times.len());
+    let mut dy = vec![0.0; n];
+    let needs_rates =
+        problem.picks.iter().any(|p| matches!(p, Pick::Output(k) if info.outputs[*k].needs_rates));
+    let mut bad: Option<SolveError> = None;
+    let y_start: Vec<f64> = keep.iter().map(|k| problem.initial[*k]).collect();
+    let params = sys_params(sys);
+    let result = ode::integrate(sys, 0.0, &y_start, &problem.times, method, |t, y_red| {
+        sys.expand(y_red, &mut full_y);
+        y_end.copy_from_slice(&full_y);
+        if needs_rates {
+            M::rhs(t, &full_y, params, &mut dy);
+        }
+        let mut row = Vec::with_capacity(columns.len() + 1);
+        row.push(t);
+        for p in &problem.picks {
+            match *p {
+                Pick::State(i) => row.push(full_y[i]),
+                Pick::Output(k) => {
+                    let width = info.outputs[k].columns.len();
+                    let at = row.len();
+                    row.resize(at + width, 0.0);
+                    M::output(k, t, &full_y, &dy[info.n_coordinates..], params, &mut row[at..]);
+                }
+            }
+        }
+        if let Some(j) = row.iter().position(|v| !v.is_finite()) {
+            let name = columns[j - 1].name.clone();
+            bad = Some(SolveError::NonFiniteOutput { name, time: t, value: row[j] });
+            return ControlFlow::Break(());
+        }
+        rows.push(row);
+        ControlFlow::Continue(())
+    });
+    let stats = result.map_err(|e| match e {
+        OdeError::NonFinite { time, index, value } => {
+            SolveError::NonFiniteState { name: info.state_names[keep[index]].to_string(), time, value }
+        }
+        other => SolveError::Ode(other),
+    })?;
+    match bad {
+        Some(e) => Err(e),
+        None => Ok(Integration { stats, rows, y_end }),
+    }
+}
+
+fn sys_params<'a, M: GeneratedModel>(sys: &'a Reduced<'_, ModelSystem<M>>) -> &'a M::Params {
+    sys.inner.params()
+}

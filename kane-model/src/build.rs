@@ -1,0 +1,89 @@
+//! Model files to generated modules, for build scripts, proc macros and tools: in comes a model
+//! file (or the name of a canonical system); out goes its generated module. File I/O lives here,
+//! not in the stages.
+
+use std::path::Path;
+
+use thiserror::Error;
+
+use crate::codegen::{CodegenError, Emitted};
+
+/// Why a model could not be generated.
+#[derive(Debug, Error)]
+pub enum BuildError {
+    /// The model file could not be read or written.
+    #[error("{path}: {source}")]
+    Io {
+        /// The file.
+        path: String,
+        /// What the system said.
+        source: std::io::Error,
+    },
+    /// The model file has errors (each with its line and column).
+    #[error("{0}")]
+    Model(#[from] crate::lang::Report),
+    /// The model cannot be turned into code.
+    #[error("{model}: {source}")]
+    Codegen {
+        /// The model file or name.
+        model: String,
+        /// Why.
+        source: CodegenError,
+    },
+    /// The generated tokens are not a Rust file (a bug in the printer).
+    #[error("generated code does not parse: {0}")]
+    Format(#[from] syn::Error),
+    /// No canonical system has this name.
+    #[error("no built-in model `{name}` (known: {known})")]
+    UnknownBuiltin {
+        /// The name asked for.
+        name: String,
+        /// The names known.
+        known: String,
+    },
+}
+
+/// The generated code of the model file `path` (its text `source`), named after the file.
+pub fn generate_file(path: &Path, source: &str) -> Result<Emitted, BuildError> {
+    let shown = path.display().to_string();
+    let loaded = crate::lang::load(&shown, source)?;
+    let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
+    let codegen = |source| BuildError::Codegen { model: shown.clone(), source };
+    let mut spec = loaded.into_spec(&name).map_err(codegen)?;
+    crate::codegen::generate(&mut spec).map_err(codegen)
+}
+
+/// The generated code of the canonical system `name` of [`crate::models::builtin_spec`].
+pub fn generate_builtin(name: &str) -> Result<Emitted, BuildError> {
+    let known = crate::models::BUILTIN_SPECS.join(", ");
+    let spec = crate::models::builtin_spec(name)
+        .ok_or_else(|| BuildError::UnknownBuiltin { name: name.to_string(), known })?;
+    let codegen = |source| BuildError::Codegen { model: name.to_string(), source };
+    let mut spec = spec.map_err(|e| codegen(CodegenError::Mechanics(e)))?;
+    crate::codegen::generate(&mut spec).map_err(codegen)
+}
+
+/// For `build.rs`: reads `model` (a model file), writes its generated module to `out` (for
+/// `include!`), and asks cargo to rerun when the model file changes.
+///
+/// ```text
+/// // build.rs
+/// fn main() {
+///     let out = std::path::Path::new(&std::env::var("OUT_DIR").unwrap()).join("gimbal.rs");
+///     kane_model::build::build_script("models/gimbal_gyroscope.al", &out).unwrap();
+/// }
+/// // src/lib.rs: pub mod gimbal { include!(concat!(env!("OUT_DIR"), "/gimbal.rs")); }
+/// ```
+pub fn build_script(model: &str, out: &Path) -> Result<(), BuildError> {
+    println!("cargo:rerun-if-changed={model}");
+    let io = |path: &Path| {
+        let path = path.display().to_string();
+        move |source| BuildError::Io { path, source }
+    };
+    let src = std::fs::read_to_string(model).map_err(io(Path::new(model)))?;
+    let emitted = generate_file(Path::new(model), &src)?;
+    let text = crate::codegen::to_items(&emitted)?;
+    let tmp = out.with_extension("rs.partial");
+    std::fs::write(&tmp, text).map_err(io(&tmp))?;
+    std::fs::rename(&tmp, out).map_err(io(out))
+}

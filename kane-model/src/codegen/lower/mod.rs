@@ -1,0 +1,70 @@
+//! Lowering: in comes a [`ModelSpec`]; out goes a [`Program`] (straight-line sections for
+//! `derive`, `rhs` and each output) with the parameters it reads. Nothing here knows Rust.
+
+mod exprs;
+mod hoist;
+mod ldlt;
+mod outputs;
+mod rhs;
+mod solve;
+
+use crate::expr::{ExprId, SymbolId, SymbolKind};
+use crate::spec::ModelSpec;
+
+use super::ir::Program;
+use super::CodegenError;
+
+/// A lowered program and the symbols it reads.
+#[derive(Clone, Debug)]
+pub struct Lowered {
+    /// The program.
+    pub program: Program,
+    /// The parameters, in the order `Input::Param` indexes them.
+    pub params: Vec<SymbolId>,
+    /// The states, coordinates then speeds.
+    pub states: Vec<SymbolId>,
+}
+
+/// Lowers `spec`: the equations simplified (collected by state monomial), parameter-only parts
+/// hoisted into `derive`, the solve of `M u' = f` and every output lowered.
+pub fn lower(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
+    let mut eqs = spec.equations.clone();
+    // Generated code runs many times: the collected form is worth its derivation cost.
+    spec.model.simplify_equations(&mut eqs)?;
+    let states = spec.states();
+    let mut all: Vec<ExprId> = eqs.mass_matrix.iter().flatten().copied().collect();
+    all.extend(&eqs.forcing);
+    all.extend(&eqs.kinematics);
+    let rhs_free = spec.model.ar.free_symbols(&all);
+    for o in &spec.outputs {
+        all.extend(&o.components);
+    }
+    let params = parameters(spec, &all, &states, &eqs.speed_derivatives)?;
+    let (derive, rhs) = rhs::lower(&mut spec.model.ar, &eqs, &params)?;
+    let outputs = outputs::lower(spec, &params)?;
+    let nq = eqs.coordinates.len();
+    let cyclic = (0..nq).filter(|i| !rhs_free.contains(&states[*i])).collect();
+    let program = Program { derive, rhs, outputs, cyclic, n_coordinates: nq };
+    Ok(Lowered { program, params, states })
+}
+
+/// The constants `roots` read, in order of first appearance; an error for a time-dependent
+/// symbol that is neither a state nor a speed rate.
+fn parameters(
+    spec: &ModelSpec,
+    roots: &[ExprId],
+    states: &[SymbolId],
+    rates: &[SymbolId],
+) -> Result<Vec<SymbolId>, CodegenError> {
+    let ar = &spec.model.ar;
+    let mut params = Vec::new();
+    for s in ar.free_symbols(roots) {
+        match ar.symbol_info(s).kind {
+            SymbolKind::Constant => params.push(s),
+            SymbolKind::Time => {}
+            _ if states.contains(&s) || rates.contains(&s) => {}
+            _ => return Err(CodegenError::UnsupportedSymbol(ar.symbol_info(s).name.clone())),
+        }
+    }
+    Ok(params)
+}

@@ -1,0 +1,10 @@
+//! Printing: in come a spec and its lowered program; out go Rust tokens (via `quote`), formatted
+//! source with `prettyplease`. The generated runtime path lives here and nowhere else.
+
+mod metadata;
+mod module;
+mod outputs;
+mod section;
+
+pub use module::module;
+pub use section::{print as print_section, Scalar, SectionStyle};

@@ -1,0 +1,202 @@
+//! The model module printed: in come a spec and its lowered program; out go the items of a Rust
+//! module (`Params`, `derive`, `rhs_derived`, `rhs`, `output`, `jacobian`, `INFO` and a
+//! `Model` implementing [`crate::runtime::GeneratedModel`]).
+
+use proc_macro2::{Ident, TokenStream};
+use quote::{format_ident, quote};
+
+use crate::spec::{ModelSpec, OrientationForm, OutputKind};
+
+use super::super::ir::{Input, Program};
+use super::super::lower::Lowered;
+use super::super::names::{const_ident, rust_ident};
+use super::metadata;
+use super::section::{self, Scalar, SectionStyle};
+
+/// The module's items.
+pub fn module(spec: &ModelSpec, lowered: &Lowered) -> TokenStream {
+    let program = &lowered.program;
+    let param_idents: Vec<Ident> =
+        lowered.params.iter().map(|s| rust_ident(&spec.model.ar.symbol_info(*s).name)).collect();
+    let state_names: Vec<String> = lowered.states.iter().map(|s| spec.symbol_name(*s).to_string()).collect();
+    let state_consts: Vec<Ident> = state_names.iter().map(|s| const_ident(s)).collect();
+    let state_idx: Vec<usize> = (0..state_names.len()).collect();
+    let (ns, no) = (state_names.len(), spec.outputs.len());
+    let n_derived = program.derive.results.len();
+    let params_items = params_items(spec, lowered, &param_idents);
+    let quaternion: Vec<bool> = spec.outputs.iter().map(|o| is_quaternion(&o.kind)).collect();
+    let compute = functions(program, &param_idents, &quaternion);
+    let info = metadata::info(spec, lowered);
+    let model_impl = model_impl(spec, lowered, &param_idents);
+    quote! {
+        /// Number of states: coordinates, then speeds.
+        pub const N_STATES: usize = #ns;
+        /// Number of outputs.
+        pub const N_OUTPUTS: usize = #no;
+        #(
+            /// Index of a state in `y`.
+            pub const #state_consts: usize = #state_idx;
+        )*
+        #params_items
+        /// Quantities of the parameters alone, computed once per parameter set by [`derive`].
+        #[derive(Clone, Debug, PartialEq)]
+        pub struct Derived {
+            /// The values, in the order `rhs_derived` reads them.
+            pub v: [f64; #n_derived],
+        }
+        #compute
+        /// The model's metadata: names, units, outputs.
+        pub const INFO: ::kane_model::runtime::ModelInfo = #info;
+        #model_impl
+    }
+}
+
+/// `Params` with its defaults.
+fn params_items(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident]) -> TokenStream {
+    let defaults = lowered.params.iter().map(|s| nan_or(spec.default_of(spec.symbol_name(*s))));
+    quote! {
+        /// The model's parameters (defaults from the model's INPUT; NaN where none).
+        #[derive(Clone, Debug, PartialEq)]
+        pub struct Params {
+            #(
+                /// A constant of the model.
+                pub #idents: f64,
+            )*
+        }
+        impl Default for Params {
+            fn default() -> Self {
+                Params { #( #idents: #defaults, )* }
+            }
+        }
+    }
+}
+
+/// How each input is read in generated functions.
+fn input_tokens(params: &[Ident], generic: bool) -> impl Fn(Input) -> TokenStream + '_ {
+    move |input| match input {
+        Input::Time => quote!(t),
+        Input::State(i) => quote!(y[#i]),
+        Input::Param(i) if generic => {
+            let p = &params[i];
+            quote!(::kane_model::__private::cast::<T>(p.#p))
+        }
+        Input::Param(i) => {
+            let p = &params[i];
+            quote!(p.#p)
+        }
+        Input::Derived(i) => quote!(::kane_model::__private::cast::<T>(__derived.v[#i])),
+        Input::Rate(i) => quote!(rates[#i]),
+    }
+}
+
+/// `derive`, `rhs_derived`, `rhs`, `output`, `outputs` and `jacobian`.
+fn functions(program: &Program, params: &[Ident], quaternion: &[bool]) -> TokenStream {
+    let t = format_ident!("T");
+    let (generic_in, f64_in) = (input_tokens(params, true), input_tokens(params, false));
+    let generic = SectionStyle { scalar: Scalar::Generic(t.clone()), input: &generic_in, prefix: "__v" };
+    let plain = SectionStyle { scalar: Scalar::F64, input: &f64_in, prefix: "__v" };
+    let (derive_body, derive_values) = section::print(&program.derive, &plain);
+    let (rhs_body, rhs_values) = section::print(&program.rhs, &generic);
+    let rhs_idx: Vec<usize> = (0..rhs_values.len()).collect();
+    let outputs = super::outputs::output_fns(program, quaternion, &generic);
+    let ns = rhs_values.len();
+    quote! {
+        /// The parameter-only subexpressions of `rhs`.
+        #[allow(unused_variables, clippy::all)]
+        pub fn derive(p: &Params) -> Derived {
+            #derive_body
+            Derived { v: [#(#derive_values),*] }
+        }
+
+        /// `dy = f(t, y)` with the parameter-only quantities `d = derive(p)` precomputed.
+        #[allow(unused_variables, clippy::all)]
+        #[inline]
+        pub fn rhs_derived<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, __derived: &Derived, dy: &mut [T]) {
+            #rhs_body
+            #( dy[#rhs_idx] = #rhs_values; )*
+        }
+
+        /// `dy = f(t, y)`: the kinematic equations and `M u' = f` solved for `u'`.
+        pub fn rhs<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, dy: &mut [T]) {
+            rhs_derived(t, y, p, &derive(p), dy)
+        }
+
+        #outputs
+
+        /// The Jacobian `d(y')/dy` at `(t, y)`, row-major, exact to round-off: one pass of `rhs`
+        /// in dual numbers per column.
+        pub fn jacobian(t: f64, y: &[f64], p: &Params, jac: &mut [f64]) {
+            use ::kane_model::dual::Dual;
+            let mut yd = [Dual::new(0.0, 0.0); #ns];
+            let mut dyd = [Dual::new(0.0, 0.0); #ns];
+            for col in 0..#ns {
+                for (k, v) in yd.iter_mut().enumerate() {
+                    *v = Dual::new(y[k], if k == col { 1.0 } else { 0.0 });
+                }
+                rhs(Dual::new(t, 0.0), &yd, p, &mut dyd);
+                for row in 0..#ns {
+                    jac[row * #ns + col] = dyd[row].eps;
+                }
+            }
+        }
+    }
+}
+
+/// The `Model` type and its `GeneratedModel` implementation.
+fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident]) -> TokenStream {
+    let initial = lowered.states.iter().map(|s| nan_or(spec.default_of(spec.symbol_name(*s))));
+    let names: Vec<String> =
+        lowered.params.iter().map(|s| spec.symbol_name(*s).to_ascii_uppercase()).collect();
+    quote! {
+        /// The model as a [`::kane_model::runtime::GeneratedModel`].
+        #[derive(Clone, Copy, Debug, Default)]
+        pub struct Model;
+
+        impl ::kane_model::runtime::GeneratedModel for Model {
+            type Params = Params;
+            type Derived = Derived;
+            const INFO: ::kane_model::runtime::ModelInfo = INFO;
+            fn initial_state() -> Vec<f64> {
+                vec![#(#initial),*]
+            }
+            fn set_param(p: &mut Params, name: &str, value: f64) -> bool {
+                match name.to_ascii_uppercase().as_str() {
+                    #( #names => { p.#idents = value; true } )*
+                    _ => false,
+                }
+            }
+            fn param(p: &Params, name: &str) -> Option<f64> {
+                match name.to_ascii_uppercase().as_str() {
+                    #( #names => Some(p.#idents), )*
+                    _ => None,
+                }
+            }
+            fn derive(p: &Params) -> Derived {
+                derive(p)
+            }
+            #[inline]
+            fn rhs_derived(t: f64, y: &[f64], p: &Params, d: &Derived, dy: &mut [f64]) {
+                rhs_derived(t, y, p, d, dy)
+            }
+            fn output(k: usize, t: f64, y: &[f64], rates: &[f64], p: &Params, out: &mut [f64]) {
+                output(k, t, y, rates, p, out)
+            }
+        }
+    }
+}
+
+/// Whether an output is a quaternion computed from direction cosines.
+pub fn is_quaternion(kind: &OutputKind) -> bool {
+    matches!(kind, OutputKind::Orientation { form: OrientationForm::Quaternion, .. })
+}
+
+/// `f64::NAN` as tokens for a missing value, else the literal.
+fn nan_or(v: Option<f64>) -> TokenStream {
+    match v {
+        Some(v) if v.is_finite() => {
+            let lit = proc_macro2::Literal::f64_suffixed(v);
+            quote!(#lit)
+        }
+        _ => quote!(f64::NAN),
+    }
+}

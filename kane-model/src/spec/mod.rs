@@ -1,0 +1,91 @@
+//! What to generate, built from mechanics: in come a [`Model`] and its [`KaneEquations`]; out
+//! goes a [`ModelSpec`] (equations, parameter and state defaults with units, a typed output list)
+//! that [`crate::codegen`] lowers and prints. The model language builds one from a model file
+//! ([`crate::lang::LoadedModel::spec`]); a Rust-API model builds one by hand.
+
+mod outputs;
+
+use rustc_hash::FxHashMap;
+
+use crate::expr::{ExprId, SymbolId};
+use crate::mechanics::{KaneEquations, Model};
+
+pub use outputs::{OrientationForm, OutputKind, OutputSpec};
+
+/// Everything code generation needs: the equations, defaults, units and outputs of one model.
+pub struct ModelSpec {
+    /// The model's name (the generated module's `NAME`).
+    pub name: String,
+    /// The mechanics model that owns every expression.
+    pub model: Model,
+    /// `q' = kinematics`, `M u' = f`.
+    pub equations: KaneEquations,
+    /// Default values by upper-case name (parameters and initial states), in model units
+    /// (radians for angles).
+    pub defaults: FxHashMap<String, f64>,
+    /// Units by upper-case name (`DEG`, `RAD/SEC`, `KG`, ...).
+    pub units: FxHashMap<String, String>,
+    /// The outputs, in order.
+    pub outputs: Vec<OutputSpec>,
+}
+
+impl ModelSpec {
+    /// A spec with no defaults, units or outputs yet.
+    pub fn new(name: &str, model: Model, equations: KaneEquations) -> ModelSpec {
+        ModelSpec {
+            name: name.to_string(),
+            model,
+            equations,
+            defaults: FxHashMap::default(),
+            units: FxHashMap::default(),
+            outputs: Vec::new(),
+        }
+    }
+
+    /// Sets the default value of a parameter or state (model units).
+    pub fn set_default(&mut self, name: &str, value: f64) {
+        self.defaults.insert(name.to_ascii_uppercase(), value);
+    }
+
+    /// Sets the unit of a parameter, state or output.
+    pub fn set_unit(&mut self, name: &str, unit: &str) {
+        self.units.insert(name.to_ascii_uppercase(), unit.to_string());
+    }
+
+    /// The unit of `name` (empty when none).
+    pub fn unit(&self, name: &str) -> &str {
+        self.units.get(&name.to_ascii_uppercase()).map_or("", String::as_str)
+    }
+
+    /// The default of `name`, if any.
+    pub fn default_of(&self, name: &str) -> Option<f64> {
+        self.defaults.get(&name.to_ascii_uppercase()).copied()
+    }
+
+    /// The states: coordinates, then speeds.
+    pub fn states(&self) -> Vec<SymbolId> {
+        self.equations.coordinates.iter().chain(&self.equations.speeds).copied().collect()
+    }
+
+    /// The name of a symbol.
+    pub fn symbol_name(&self, s: SymbolId) -> &str {
+        &self.model.ar.symbol_info(s).name
+    }
+
+    /// `e` with `q'` and dependent speeds replaced by the states (kinematics and constraints).
+    pub fn in_states(&mut self, e: ExprId) -> crate::mechanics::Result<ExprId> {
+        let eqs = &self.equations;
+        let ar = &mut self.model.ar;
+        let mut map = FxHashMap::default();
+        for (q, rhs) in eqs.coordinates.iter().zip(&eqs.kinematics) {
+            let name = format!("{}'", ar.symbol_info(*q).name);
+            if let Some(d) = ar.lookup(&name) {
+                map.insert(ar.symbol_expr(d), *rhs);
+            }
+        }
+        for (u, e) in &eqs.dependent_speeds {
+            map.insert(ar.symbol_expr(*u), *e);
+        }
+        Ok(ar.subs(e, &map)?)
+    }
+}
