@@ -35,11 +35,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
 fn method(scene: &Scene) -> Method {
     let i = &scene.integrator;
     let info = crate::ode::by_name(&i.method).unwrap_or(crate::ode::default_method());
-    if info.adaptive {
-        Method::Adaptive(info.tableau, Tolerances { rtol: i.rtol, atol: i.atol })
-    } else {
-        Method::Fixed(info.tableau, i.step)
-    }
+    info.method(Tolerances { rtol: i.rtol, atol: i.atol }, i.step)
 }
 
 /// The model's defaults with the scene's values; an error for an unknown or missing one.

@@ -15,16 +15,8 @@ fn script_case_matches_the_reference_trajectory() {
     let s = scene("scenes/paper/script.toml");
     let summary = run(&s, None).unwrap();
     let reference = include_str!("data/gimbal_script_case.csv");
-    let mut worst: f64 = 0.0;
-    for (row, line) in summary.trajectory.rows.iter().zip(reference.lines().skip(1)) {
-        let want: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
-        assert!((row[0] - want[0]).abs() < 1e-12, "times {} vs {}", row[0], want[0]);
-        for k in 1..=7 {
-            // The trajectory is in radians, as the reference (degrees only in the CSV).
-            let got = row[k];
-            worst = worst.max((got - want[k]).abs() / want[k].abs().max(1.0));
-        }
-    }
+    // The trajectory is in radians, as the reference (degrees only in the CSV).
+    let worst = error_of(&summary, reference);
     assert_eq!(summary.trajectory.rows.len(), 101);
     // The scene asks accuracy 1e-9 (refining from rtol = atol = 1e-12); the reference's own
     // methods agree to about 1e-11.
@@ -88,17 +80,7 @@ fn a_run_writes_csv_and_plot_and_no_partial_files() {
 
 /// Largest error of a run against a reference CSV (radians), relative to max(1, |value|).
 fn error_of(summary: &gyro_sim::run::RunSummary, reference: &str) -> f64 {
-    let mut worst: f64 = 0.0;
-    assert_eq!(summary.trajectory.rows.len(), reference.lines().count() - 1);
-    for (row, line) in summary.trajectory.rows.iter().zip(reference.lines().skip(1)) {
-        let want: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
-        assert!((row[0] - want[0]).abs() < 1e-12);
-        for k in 1..=7 {
-            let got = row[k];
-            worst = worst.max((got - want[k]).abs() / want[k].abs().max(1.0));
-        }
-    }
-    worst
+    kane_tests::reference_error(&summary.trajectory.rows, reference)
 }
 
 const TRIALS: [(&str, &str); 3] = [

@@ -4,8 +4,8 @@
 //! states and parameters.
 
 use kane_model::runtime::GeneratedModel;
-use nalgebra::{DMatrix, DVector};
-use rand::{Rng, SeedableRng};
+use kane_tests::{worst_generated_difference, Sampling};
+use rand::Rng;
 
 mod triple_pendulum {
     kane_derive::model!("models/triple_pendulum.al");
@@ -20,42 +20,13 @@ mod heavy_top {
 fn worst_difference<M: GeneratedModel>(src: &str, samples: usize) -> f64 {
     let loaded = kane_model::lang::load("model.al", src).unwrap();
     let eqs = loaded.equations.clone().unwrap();
-    let ar = &loaded.model.ar;
-    let (nq, n) = (eqs.coordinates.len(), eqs.speeds.len());
-    let mut rng = rand::rngs::StdRng::seed_from_u64(7);
-    let mut worst: f64 = 0.0;
-    for _ in 0..samples {
-        let mut p = M::Params::default();
-        let mut vals: Vec<(String, f64)> = Vec::new();
-        for name in M::INFO.param_names {
-            let v = rng.random_range(0.2..2.0);
-            assert!(M::set_param(&mut p, name, v));
-            vals.push((name.to_ascii_uppercase(), v));
-        }
-        let y: Vec<f64> = (0..nq + n).map(|_| rng.random_range(-2.0..2.0)).collect();
-        for (name, v) in M::INFO.state_names.iter().zip(&y) {
-            vals.push((name.to_ascii_uppercase(), *v));
-        }
-        let at = |e| {
-            ar.eval(&[e], |s| {
-                let name = ar.symbol_info(s).name.to_ascii_uppercase();
-                vals.iter().find(|(k, _)| *k == name).map(|(_, v)| *v)
-            })
-            .unwrap()[0]
-        };
-        let m = DMatrix::from_fn(n, n, |i, j| at(eqs.mass_matrix[i][j]));
-        let f = DVector::from_fn(n, |i, _| at(eqs.forcing[i]));
-        let mut want: Vec<f64> = eqs.kinematics.iter().map(|e| at(*e)).collect();
-        want.extend(m.lu().solve(&f).unwrap().iter());
-        let mut got = vec![0.0; nq + n];
-        M::rhs(0.0, &y, &p, &mut got);
-        let normwise = |a: &[f64], b: &[f64]| {
-            let diff = a.iter().zip(b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
-            diff / b.iter().map(|v| v.abs()).fold(1.0, f64::max)
-        };
-        worst = worst.max(normwise(&got[..nq], &want[..nq])).max(normwise(&got[nq..], &want[nq..]));
-    }
-    worst
+    let sampling = Sampling {
+        seed: 7,
+        samples,
+        param: &|_, rng| rng.random_range(0.2..2.0),
+        state: &|_, rng| rng.random_range(-2.0..2.0),
+    };
+    worst_generated_difference::<M>(&loaded.model.ar, &eqs, &sampling)
 }
 
 #[test]
