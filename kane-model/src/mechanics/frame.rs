@@ -3,7 +3,8 @@
 use crate::expr::ExprId;
 
 use super::error::{MechanicsError, Result};
-use super::model::{FrameId, Mat3, Model, Orientation};
+use super::ids::{FrameId, Mat3};
+use super::model::{Model, Orientation};
 use super::vector::Vector;
 
 impl Model {

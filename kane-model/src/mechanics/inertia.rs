@@ -6,7 +6,8 @@
 use crate::expr::ExprId;
 
 use super::error::Result;
-use super::model::{FrameId, Mat3, Model, Orientation};
+use super::ids::{FrameId, Mat3};
+use super::model::{Model, Orientation};
 use super::vector::{Dyadic, Vector};
 
 /// A body shape with uniform density; axis 3 is the symmetry axis where there is one.

@@ -8,7 +8,8 @@ use rustc_hash::FxHashMap;
 use crate::expr::{ExprId, Node, SymbolId, SymbolKind};
 
 use super::error::{MechanicsError, Result};
-use super::model::{FrameId, Load, Model, PointId};
+use super::ids::{FrameId, PointId};
+use super::model::{Load, Model};
 use super::vector::{Dyadic, Vector};
 
 /// Kane's equations of a model: `q' = kinematics`, `mass_matrix * u' = forcing`.
@@ -65,20 +66,21 @@ impl Model {
     fn mass_motions(&mut self) -> Result<Vec<MassMotion>> {
         let n = self.newtonian;
         let mut out = Vec::new();
-        for b in self.bodies.clone() {
-            let mass = b.mass.ok_or_else(|| MechanicsError::MissingMass(b.name.clone()))?;
-            let (velocity, acceleration) = self.point_motion(b.mass_center)?;
-            let w = self.angular_velocity(b.frame, n)?;
-            let w = self.eliminate_dependent_vector(&w)?;
-            let alpha = self.dt_in(&w, n)?;
-            let alpha = self.eliminate_dependent_vector(&alpha)?;
-            let inertia = self.rebase_inertia(&b.inertia.clone().unwrap_or_default());
-            out.push(MassMotion { mass, velocity, acceleration, rotation: Some((w, alpha, inertia)) });
-        }
-        for p in self.particles.clone() {
-            let mass = p.mass.ok_or_else(|| MechanicsError::MissingMass(p.name.clone()))?;
-            let (velocity, acceleration) = self.point_motion(p.point)?;
-            out.push(MassMotion { mass, velocity, acceleration, rotation: None });
+        for view in self.masses().collect::<Vec<_>>() {
+            let mass = view.mass()?;
+            let (velocity, acceleration) = self.point_motion(view.point)?;
+            let rotation = match view.frame {
+                Some(frame) => {
+                    let w = self.angular_velocity(frame, n)?;
+                    let w = self.eliminate_dependent_vector(&w)?;
+                    let alpha = self.dt_in(&w, n)?;
+                    let alpha = self.eliminate_dependent_vector(&alpha)?;
+                    let inertia = self.rebase_inertia(&view.inertia.unwrap_or_default());
+                    Some((w, alpha, inertia))
+                }
+                None => None,
+            };
+            out.push(MassMotion { mass, velocity, acceleration, rotation });
         }
         Ok(out)
     }

@@ -4,13 +4,22 @@
 //! Frames form a tree of orientations; points form a tree of positions; velocities follow from
 //! positions by differentiation in a frame. [`Model::kane`] derives `M u' = f` from
 //! `Fr + Fr* = 0`.
+//!
+//! Dependencies run one way: `ids` <- `vector` <- `vector_ops` (algebra over a frame tree) <-
+//! the model and the files that add its methods (`algebra`, `frame`, `point`, `derivative`,
+//! `loads`, `masses`, `outputs`, `kane`, ...).
 
+mod algebra;
 mod constraints;
+mod derivative;
 mod error;
 mod frame;
+mod ids;
 mod inertia;
 mod kane;
 mod linearize;
+mod loads;
+mod masses;
 mod model;
 mod outputs;
 mod point;
@@ -19,7 +28,9 @@ mod vector;
 mod vector_ops;
 
 pub use error::{MechanicsError, Result};
+pub use ids::{BodyId, FrameId, Mat3, ParticleId, PointId};
 pub use inertia::Shape;
 pub use kane::KaneEquations;
-pub use model::{Body, BodyId, FrameId, Load, Mat3, Model, Orientation, Particle, ParticleId, PointId};
+pub use masses::{MassId, MassView};
+pub use model::{Body, Load, Model, Orientation, Particle};
 pub use vector::{Dyadic, Vector};

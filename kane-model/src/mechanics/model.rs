@@ -1,47 +1,18 @@
 //! The model: frames, points, bodies, particles, loads and generalized coordinates and speeds,
 //! all typed indices into one [`Model`] that owns the expression arena.
+//!
+//! In: names, masses and inertias, coordinates, speeds and kinematic equations. Out: the
+//! registry of entities and the time derivative under the kinematic equations. It builds on the
+//! ids and vector types only; frames, points, loads, masses and the equations add their methods
+//! from their own files.
 
 use rustc_hash::FxHashMap;
 
 use crate::expr::{Arena, ExprId, SymbolId, SymbolKind, TimeDerivative};
 
 use super::error::{MechanicsError, Result};
+use super::ids::{BodyId, FrameId, Mat3, ParticleId, PointId};
 use super::vector::{Dyadic, Vector};
-
-macro_rules! id_type {
-    ($(#[$doc:meta])* $name:ident) => {
-        $(#[$doc])*
-        #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
-        pub struct $name(pub(crate) u32);
-
-        impl $name {
-            /// Position in the model's list.
-            pub fn index(self) -> usize {
-                self.0 as usize
-            }
-        }
-    };
-}
-
-id_type!(
-    /// A reference frame.
-    FrameId
-);
-id_type!(
-    /// A point.
-    PointId
-);
-id_type!(
-    /// A rigid body.
-    BodyId
-);
-id_type!(
-    /// A particle.
-    ParticleId
-);
-
-/// A 3x3 matrix of expressions.
-pub type Mat3 = [[ExprId; 3]; 3];
 
 /// How a frame is oriented relative to its parent.
 #[derive(Clone, Debug, PartialEq)]
@@ -225,11 +196,6 @@ impl Model {
         Ok(())
     }
 
-    /// Removes every applied load.
-    pub fn clear_loads(&mut self) {
-        self.loads.clear();
-    }
-
     /// A new frame, not yet oriented.
     pub fn add_frame(&mut self, name: &str) -> Result<FrameId> {
         if self.frame_names.contains_key(name) {
@@ -322,86 +288,6 @@ impl Model {
     /// Sets a body's inertia dyadic about its mass centre.
     pub fn set_inertia(&mut self, b: BodyId, inertia: Dyadic) {
         self.bodies[b.index()].inertia = Some(inertia);
-    }
-
-    /// Applies a force at a point.
-    pub fn add_force(&mut self, point: PointId, force: Vector) {
-        self.loads.push(Load::Force { point, force });
-    }
-
-    /// Applies a torque to the body fixed in `frame`.
-    pub fn add_torque(&mut self, frame: FrameId, torque: Vector) {
-        self.loads.push(Load::Torque { frame, torque });
-    }
-
-    /// Applies equal and opposite torques: `torque` on `on`, `-torque` on `from`.
-    pub fn add_torque_pair(&mut self, on: FrameId, from: FrameId, torque: Vector) -> Result<()> {
-        let minus = self.scale(&torque, self.ar.minus_one())?;
-        self.add_torque(on, torque);
-        self.add_torque(from, minus);
-        Ok(())
-    }
-
-    /// Applies equal and opposite forces: `force` at `on`, `-force` at `from`.
-    pub fn add_force_pair(&mut self, on: PointId, from: PointId, force: Vector) -> Result<()> {
-        let minus = self.scale(&force, self.ar.minus_one())?;
-        self.add_force(on, force);
-        self.add_force(from, minus);
-        Ok(())
-    }
-
-    /// A linear spring of stiffness `k` and natural length `length` between two points: the force
-    /// `-k (|r| - length) r/|r|` on `a` and its opposite on `b`, with `r` from `b` to `a`.
-    pub fn add_spring(&mut self, a: PointId, b: PointId, k: ExprId, length: ExprId) -> Result<()> {
-        let r = self.position(a, b)?;
-        let len = self.magnitude(&r)?;
-        let stretch = self.ar.sub(len, length)?;
-        let per_length = self.ar.div(stretch, len)?;
-        let coeff = self.ar.mul(&[self.ar.minus_one(), k, per_length])?;
-        let f = self.scale(&r, coeff)?;
-        self.add_force_pair(a, b, f)
-    }
-
-    /// A linear damper of coefficient `c` between two points: the force `-c (d|r|/dt) r/|r|` on
-    /// `a` and its opposite on `b`, with `r` from `b` to `a`.
-    pub fn add_damper(&mut self, a: PointId, b: PointId, c: ExprId) -> Result<()> {
-        let r = self.position(a, b)?;
-        let n = self.newtonian;
-        let va = self.velocity(a, n)?;
-        let vb = self.velocity(b, n)?;
-        let v = self.sub_vectors(&va, &vb)?;
-        let rv = self.dot(&r, &v)?;
-        let rr = self.dot(&r, &r)?;
-        let rate = self.ar.div(rv, rr)?;
-        let coeff = self.ar.mul(&[self.ar.minus_one(), c, rate])?;
-        let f = self.scale(&r, coeff)?;
-        self.add_force_pair(a, b, f)
-    }
-
-    /// Uniform gravity: the force `mass * g` at every mass centre and particle.
-    pub fn add_gravity(&mut self, g: &Vector) -> Result<()> {
-        for (m, point) in self.masses()? {
-            let f = self.scale(g, m)?;
-            self.add_force(point, f);
-        }
-        Ok(())
-    }
-
-    /// Every body's mass and mass centre, then every particle's mass and point.
-    pub fn masses(&self) -> Result<Vec<(ExprId, PointId)>> {
-        let bodies = self.bodies.iter().map(|b| (&b.name, b.mass, b.mass_center));
-        let particles = self.particles.iter().map(|p| (&p.name, p.mass, p.point));
-        bodies
-            .chain(particles)
-            .map(|(name, mass, point)| {
-                Ok((mass.ok_or_else(|| MechanicsError::MissingMass(name.clone()))?, point))
-            })
-            .collect()
-    }
-
-    /// The applied loads.
-    pub fn loads(&self) -> &[Load] {
-        &self.loads
     }
 
     /// Declares generalized coordinates (time-dependent variables).

@@ -1,9 +1,13 @@
 //! Output quantities: kinetic and potential energy, angular momentum.
+//!
+//! In: a model's masses (through [`Model::masses`]), its kinematics, and for the potential a
+//! gravity vector and a datum point. Out: scalar expressions and vectors.
 
 use crate::expr::ExprId;
 
-use super::error::{MechanicsError, Result};
-use super::model::{FrameId, Model, PointId};
+use super::error::Result;
+use super::ids::{FrameId, PointId};
+use super::model::Model;
 use super::vector::Vector;
 
 impl Model {
@@ -11,22 +15,16 @@ impl Model {
     pub fn kinetic_energy(&mut self) -> Result<ExprId> {
         let n = self.newtonian;
         let mut terms = Vec::new();
-        for b in self.bodies.clone() {
-            let m = b.mass.ok_or_else(|| MechanicsError::MissingMass(b.name.clone()))?;
-            let v = self.velocity(b.mass_center, n)?;
+        for view in self.masses().collect::<Vec<_>>() {
+            let m = view.mass()?;
+            let v = self.velocity(view.point, n)?;
             let vv = self.dot(&v, &v)?;
             terms.push(self.ar.mul(&[m, vv])?);
-            if let Some(inertia) = &b.inertia {
-                let w = self.angular_velocity(b.frame, n)?;
+            if let (Some(frame), Some(inertia)) = (view.frame, &view.inertia) {
+                let w = self.angular_velocity(frame, n)?;
                 let iw = self.dyadic_dot(inertia, &w)?;
                 terms.push(self.dot(&w, &iw)?);
             }
-        }
-        for p in self.particles.clone() {
-            let m = p.mass.ok_or_else(|| MechanicsError::MissingMass(p.name.clone()))?;
-            let v = self.velocity(p.point, n)?;
-            let vv = self.dot(&v, &v)?;
-            terms.push(self.ar.mul(&[m, vv])?);
         }
         let sum = self.ar.add(&terms)?;
         let half = self.ar.rational(1, 2)?;
@@ -35,8 +33,9 @@ impl Model {
 
     /// Potential energy of uniform gravity `g`, zero at `origin`: `-sum(m g . r)`.
     pub fn gravity_potential(&mut self, g: &Vector, origin: PointId) -> Result<ExprId> {
+        let weighed = self.masses().map(|view| Ok((view.mass()?, view.point))).collect::<Result<Vec<_>>>()?;
         let mut terms = Vec::new();
-        for (m, point) in self.masses()? {
+        for (m, point) in weighed {
             let r = self.position(point, origin)?;
             let gr = self.dot(g, &r)?;
             terms.push(self.ar.mul(&[m, gr])?);
@@ -48,26 +47,18 @@ impl Model {
     /// Angular momentum about `about` in `frame`: `sum(r x m v + I . w)`.
     pub fn angular_momentum(&mut self, about: PointId, frame: FrameId) -> Result<Vector> {
         let mut h = Vector::zero();
-        for b in self.bodies.clone() {
-            let m = b.mass.ok_or_else(|| MechanicsError::MissingMass(b.name.clone()))?;
-            let r = self.position(b.mass_center, about)?;
-            let v = self.velocity(b.mass_center, frame)?;
+        for view in self.masses().collect::<Vec<_>>() {
+            let m = view.mass()?;
+            let r = self.position(view.point, about)?;
+            let v = self.velocity(view.point, frame)?;
             let mv = self.scale(&v, m)?;
             let rmv = self.cross(&r, &mv)?;
             h = self.add_vectors(&h, &rmv)?;
-            if let Some(inertia) = &b.inertia {
-                let w = self.angular_velocity(b.frame, frame)?;
+            if let (Some(body_frame), Some(inertia)) = (view.frame, &view.inertia) {
+                let w = self.angular_velocity(body_frame, frame)?;
                 let iw = self.dyadic_dot(inertia, &w)?;
                 h = self.add_vectors(&h, &iw)?;
             }
-        }
-        for p in self.particles.clone() {
-            let m = p.mass.ok_or_else(|| MechanicsError::MissingMass(p.name.clone()))?;
-            let r = self.position(p.point, about)?;
-            let v = self.velocity(p.point, frame)?;
-            let mv = self.scale(&v, m)?;
-            let rmv = self.cross(&r, &mv)?;
-            h = self.add_vectors(&h, &rmv)?;
         }
         Ok(h)
     }

@@ -5,7 +5,8 @@
 //! two-points-fixed-on-a-body theorem (V2PTS); for one moving on a body, V1PT.
 
 use super::error::{MechanicsError, Result};
-use super::model::{FrameId, Model, PointId};
+use super::ids::{FrameId, PointId};
+use super::model::Model;
 use super::vector::Vector;
 
 impl Model {

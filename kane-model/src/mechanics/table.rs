@@ -1,7 +1,8 @@
 //! Printing vectors and the partial velocity table (the paper's Table 1).
 
 use super::error::Result;
-use super::model::{FrameId, Model, PointId};
+use super::ids::{FrameId, PointId};
+use super::model::Model;
 use super::vector::Vector;
 
 impl Model {

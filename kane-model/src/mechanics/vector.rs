@@ -2,7 +2,7 @@
 
 use crate::expr::ExprId;
 
-use super::model::FrameId;
+use super::ids::FrameId;
 
 /// A vector: a sum of terms, each three measure numbers along one frame's unit vectors.
 ///

@@ -1,6 +1,11 @@
-//! Evaluating expressions to values.
+//! Evaluating expressions to values: literals, names, calls, array entries, matrices and
+//! operators.
+//!
+//! In: a parsed expression. Out: its [`Value`] (scalar, vector, dyadic or matrix), or a
+//! diagnostic saying what was found where something else was needed.
 
 use crate::expr::SymbolKind;
+use crate::mechanics::{Dyadic, Vector};
 
 use super::super::ast::{BinOp, Expr, ExprKind};
 use super::super::diagnostic::Diagnostic;
@@ -13,104 +18,116 @@ impl Interpreter {
     pub(crate) fn eval(&mut self, e: &Expr) -> IResult<Value> {
         let fail: &Span = &e.span;
         match &e.kind {
-            ExprKind::Number { value, suffix } => match (suffix, *value) {
-                (0, v) => Ok(Value::Scalar(self.number_expr(v).at(fail)?)),
-                (1, 0.0) => Ok(Value::Vector(crate::mechanics::Vector::zero())),
-                (2, 0.0) => Ok(Value::Dyadic(crate::mechanics::Dyadic::zero())),
-                (2, 1.0) => {
-                    let n = self.model.newtonian();
-                    let (o, z) = (self.model.ar.one(), self.model.ar.zero());
-                    Ok(Value::Dyadic(crate::mechanics::Dyadic::in_frame(
-                        n,
-                        [[o, z, z], [z, o, z], [z, z, o]],
-                    )))
-                }
-                _ => Err(Diagnostic::error(
-                    e.span.clone(),
-                    "only 0> (zero vector), 0>> and 1>> (unit dyadic) are numbers with >",
-                )),
-            },
+            ExprKind::Number { value, suffix } => self.literal(*value, *suffix, e),
             ExprKind::Name { name, primes, suffix } => self.name_value(name, *primes, *suffix, e),
             ExprKind::Call { name, args } => self.call(name, args, e),
-            ExprKind::Index { name, args } => {
-                let key = name.to_ascii_uppercase();
-                let idx = args.iter().map(|a| self.index_value(a)).collect::<IResult<Vec<_>>>()?;
-                if let Some(entries) = self.arrays.get(&key) {
-                    if let Some((_, v)) = entries.iter().find(|(i, _)| *i == idx) {
-                        return Ok(v.clone());
-                    }
-                }
-                if let Some(Value::Matrix { rows, cols, data }) = self.lookup_value(&key) {
-                    if let Some(k) = value::matrix_position(&idx, rows, cols) {
-                        return Ok(Value::Scalar(data[k]));
-                    }
-                }
-                Err(Diagnostic::error(e.span.clone(), format!("`{name}{idx:?}` is not defined"))
-                    .with_help("assign the entry first, e.g. EQN[1] = ..."))
-            }
-            ExprKind::Matrix(rows) => {
-                let mut data = Vec::new();
-                let cols = rows.first().map_or(0, Vec::len);
-                for r in rows {
-                    if r.len() != cols {
-                        return Err(Diagnostic::error(e.span.clone(), "matrix rows have different lengths"));
-                    }
-                    for x in r {
-                        data.push(self.scalar(x)?);
-                    }
-                }
-                Ok(Value::Matrix { rows: rows.len(), cols, data })
-            }
+            ExprKind::Index { name, args } => self.array_entry(name, args, e),
+            ExprKind::Matrix(rows) => self.matrix_literal(rows, e),
             ExprKind::Neg(x) => {
                 let v = self.eval(x)?;
                 let m1 = self.model.ar.minus_one();
                 value::scale(&mut self.model, &v, m1).at(fail)
             }
-            ExprKind::Binary(op, a, b) => {
-                let (va, vb) = (self.eval(a)?, self.eval(b)?);
-                let r = match op {
-                    BinOp::Add => value::add(&mut self.model, &va, &vb, false).at(fail)?,
-                    BinOp::Sub => value::add(&mut self.model, &va, &vb, true).at(fail)?,
-                    BinOp::Mul => value::mul(&mut self.model, &va, &vb).at(fail)?,
-                    BinOp::Div => match vb {
-                        Value::Scalar(d) => {
-                            let one = self.model.ar.one();
-                            let inv = self.model.ar.div(one, d).at(fail)?;
-                            Some(value::scale(&mut self.model, &va, inv).at(fail)?)
-                        }
-                        _ => None,
-                    },
-                    BinOp::Pow => match (&va, &vb) {
-                        (Value::Scalar(x), Value::Scalar(y)) => {
-                            Some(Value::Scalar(self.model.ar.pow(*x, *y).at(fail)?))
-                        }
-                        _ => None,
-                    },
-                };
-                r.ok_or_else(|| {
-                    let sym = match op {
-                        BinOp::Add => "+",
-                        BinOp::Sub => "-",
-                        BinOp::Mul => "*",
-                        BinOp::Div => "/",
-                        BinOp::Pow => "^",
-                    };
-                    Diagnostic::error(
-                        e.span.clone(),
-                        format!("cannot apply `{sym}` to {} and {}", va.kind(), vb.kind()),
-                    )
-                    .with_help(match op {
-                        BinOp::Div | BinOp::Pow => "divide by and raise to scalars only",
-                        BinOp::Mul => "use DOT(a>, b>) or CROSS(a>, b>) for vector products",
-                        _ => "add or subtract values of the same kind: scalars, vectors (>) or dyadics (>>)",
-                    })
-                })
-            }
+            ExprKind::Binary(op, a, b) => self.binary(*op, a, b, e),
             ExprKind::Range(..) | ExprKind::NamedArg(..) => Err(Diagnostic::error(
                 e.span.clone(),
                 "a range or `name = value` is only allowed as a function argument",
             )),
         }
+    }
+
+    /// A number, or one of the special vectors and dyadics `0>`, `0>>`, `1>>`.
+    fn literal(&mut self, value: f64, suffix: u8, e: &Expr) -> IResult<Value> {
+        match (suffix, value) {
+            (0, v) => Ok(Value::Scalar(self.number_expr(v).at(&e.span)?)),
+            (1, 0.0) => Ok(Value::Vector(Vector::zero())),
+            (2, 0.0) => Ok(Value::Dyadic(Dyadic::zero())),
+            (2, 1.0) => {
+                let n = self.model.newtonian();
+                let (o, z) = (self.model.ar.one(), self.model.ar.zero());
+                Ok(Value::Dyadic(Dyadic::in_frame(n, [[o, z, z], [z, o, z], [z, z, o]])))
+            }
+            _ => Err(Diagnostic::error(
+                e.span.clone(),
+                "only 0> (zero vector), 0>> and 1>> (unit dyadic) are numbers with >",
+            )),
+        }
+    }
+
+    /// `NAME[i, ...]`: an assigned array entry, or an entry of a matrix.
+    fn array_entry(&mut self, name: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
+        let key = name.to_ascii_uppercase();
+        let idx = args.iter().map(|a| self.index_value(a)).collect::<IResult<Vec<_>>>()?;
+        if let Some(entries) = self.arrays.get(&key) {
+            if let Some((_, v)) = entries.iter().find(|(i, _)| *i == idx) {
+                return Ok(v.clone());
+            }
+        }
+        if let Some(Value::Matrix { rows, cols, data }) = self.lookup_value(&key) {
+            if let Some(k) = value::matrix_position(&idx, rows, cols) {
+                return Ok(Value::Scalar(data[k]));
+            }
+        }
+        Err(Diagnostic::error(e.span.clone(), format!("`{name}{idx:?}` is not defined"))
+            .with_help("assign the entry first, e.g. EQN[1] = ..."))
+    }
+
+    /// `[a, b; c, d]`: a matrix of scalars.
+    fn matrix_literal(&mut self, rows: &[Vec<Expr>], e: &Expr) -> IResult<Value> {
+        let mut data = Vec::new();
+        let cols = rows.first().map_or(0, Vec::len);
+        for r in rows {
+            if r.len() != cols {
+                return Err(Diagnostic::error(e.span.clone(), "matrix rows have different lengths"));
+            }
+            for x in r {
+                data.push(self.scalar(x)?);
+            }
+        }
+        Ok(Value::Matrix { rows: rows.len(), cols, data })
+    }
+
+    /// `a op b` for values of kinds the operator takes.
+    fn binary(&mut self, op: BinOp, a: &Expr, b: &Expr, e: &Expr) -> IResult<Value> {
+        let fail: &Span = &e.span;
+        let (va, vb) = (self.eval(a)?, self.eval(b)?);
+        let r = match op {
+            BinOp::Add => value::add(&mut self.model, &va, &vb, false).at(fail)?,
+            BinOp::Sub => value::add(&mut self.model, &va, &vb, true).at(fail)?,
+            BinOp::Mul => value::mul(&mut self.model, &va, &vb).at(fail)?,
+            BinOp::Div => match vb {
+                Value::Scalar(d) => {
+                    let one = self.model.ar.one();
+                    let inv = self.model.ar.div(one, d).at(fail)?;
+                    Some(value::scale(&mut self.model, &va, inv).at(fail)?)
+                }
+                _ => None,
+            },
+            BinOp::Pow => match (&va, &vb) {
+                (Value::Scalar(x), Value::Scalar(y)) => {
+                    Some(Value::Scalar(self.model.ar.pow(*x, *y).at(fail)?))
+                }
+                _ => None,
+            },
+        };
+        r.ok_or_else(|| {
+            let sym = match op {
+                BinOp::Add => "+",
+                BinOp::Sub => "-",
+                BinOp::Mul => "*",
+                BinOp::Div => "/",
+                BinOp::Pow => "^",
+            };
+            Diagnostic::error(
+                e.span.clone(),
+                format!("cannot apply `{sym}` to {} and {}", va.kind(), vb.kind()),
+            )
+            .with_help(match op {
+                BinOp::Div | BinOp::Pow => "divide by and raise to scalars only",
+                BinOp::Mul => "use DOT(a>, b>) or CROSS(a>, b>) for vector products",
+                _ => "add or subtract values of the same kind: scalars, vectors (>) or dyadics (>>)",
+            })
+        })
     }
 
     /// A scalar value, or an error saying what was found instead.
@@ -125,10 +142,10 @@ impl Interpreter {
     }
 
     /// A vector value, or an error saying what was found instead.
-    pub(crate) fn vector(&mut self, e: &Expr) -> IResult<crate::mechanics::Vector> {
+    pub(crate) fn vector(&mut self, e: &Expr) -> IResult<Vector> {
         match self.eval(e)? {
             Value::Vector(v) => Ok(v),
-            Value::Scalar(x) if self.model.ar.is_zero(x) => Ok(crate::mechanics::Vector::zero()),
+            Value::Scalar(x) if self.model.ar.is_zero(x) => Ok(Vector::zero()),
             other => {
                 Err(Diagnostic::error(e.span.clone(), format!("expected a vector, found {}", other.kind()))
                     .with_help("vectors end in > (A1>, P_O_P>); write 0> for the zero vector"))
@@ -162,79 +179,14 @@ impl Interpreter {
         self.model.ar.float(v)
     }
 
+    /// The value of a name: `X`, `X'` (a derivative), `V>` or `D>>`.
     fn name_value(&mut self, name: &str, primes: u8, suffix: u8, e: &Expr) -> IResult<Value> {
         let key = name.to_ascii_uppercase();
-        let fail: &Span = &e.span;
+        if suffix == 0 && primes == 0 {
+            return self.plain_name(name, &key, e);
+        }
         if suffix == 0 {
-            if primes == 0 {
-                match key.as_str() {
-                    "T" if !self.bindings.contains_key("T") => {
-                        return Ok(Value::Scalar(self.model.ar.time()))
-                    }
-                    "PI" if !self.bindings.contains_key("PI") => {
-                        return Ok(Value::Scalar(self.model.ar.float(std::f64::consts::PI).at(fail)?))
-                    }
-                    _ => {}
-                }
-                if let Some(x) = self.solved.get(&key) {
-                    return Ok(Value::Scalar(*x));
-                }
-                if !self.bindings.contains_key(&key) {
-                    if let Some((a, b)) = self.dcm_frames(&key) {
-                        let m = self.model.dcm(a, b).at(fail)?;
-                        return Ok(Value::Matrix {
-                            rows: 3,
-                            cols: 3,
-                            data: m.iter().flatten().copied().collect(),
-                        });
-                    }
-                }
-                return match self.bindings.get(&key).or_else(|| self.bindings.get(&super::entity_key(&key))) {
-                    Some(Binding::Symbol(x, _)) => Ok(Value::Scalar(*x)),
-                    Some(Binding::Value(v)) => Ok(v.clone()),
-                    Some(Binding::Frame(_) | Binding::Body(_)) => {
-                        Err(Diagnostic::error(e.span.clone(), format!("`{name}` is a frame, not a value"))
-                            .with_help(format!("use its unit vectors {name}1>, {name}2>, {name}3>")))
-                    }
-                    Some(Binding::Point(_) | Binding::Particle(_)) => {
-                        Err(Diagnostic::error(e.span.clone(), format!("`{name}` is a point, not a value"))
-                            .with_help(format!(
-                        "use its position, velocity or acceleration: P_O_{name}>, V_{name}_N>, A_{name}_N>"
-                    )))
-                    }
-                    None => Err(self.unknown(name, 0, &e.span)),
-                };
-            }
-            let primed = format!("{key}{}", "'".repeat(primes as usize));
-            if let Some(x) = self.solved.get(&primed) {
-                return Ok(Value::Scalar(*x));
-            }
-            if let Some(Binding::Value(v)) = self.bindings.get(&primed) {
-                return Ok(v.clone());
-            }
-            return match self.bindings.get(&key).cloned() {
-                Some(Binding::Symbol(x, _)) => {
-                    let s = self.model.ar.as_symbol(x).ok_or_else(|| self.unknown(name, 0, &e.span))?;
-                    if !self.model.ar.symbol_info(s).kind.depends_on_time()
-                        || self.model.ar.symbol_info(s).kind == SymbolKind::Time
-                    {
-                        return Ok(Value::Scalar(self.model.ar.zero()));
-                    }
-                    let mut d = s;
-                    for _ in 0..primes {
-                        d = self.model.ar.derivative_symbol(d).at(fail)?;
-                    }
-                    Ok(Value::Scalar(self.model.ar.symbol_expr(d)))
-                }
-                Some(Binding::Value(Value::Scalar(x))) => {
-                    let mut v = x;
-                    for _ in 0..primes {
-                        v = self.model.dt(v).at(fail)?;
-                    }
-                    Ok(Value::Scalar(v))
-                }
-                _ => Err(self.unknown(name, 0, &e.span)),
-            };
+            return self.primed_name(name, &key, primes, e);
         }
         if suffix == 1 {
             if let Some(v) = self.unit_vector(&key) {
@@ -249,5 +201,79 @@ impl Interpreter {
             return self.builtin_value(b, &e.span);
         }
         Err(self.unknown(name, suffix, &e.span))
+    }
+
+    /// A scalar name: T, PI, a solved unknown, a direction-cosine matrix `A_B`, a symbol or an
+    /// assigned value.
+    fn plain_name(&mut self, name: &str, key: &str, e: &Expr) -> IResult<Value> {
+        let fail: &Span = &e.span;
+        match key {
+            "T" if !self.bindings.contains_key("T") => return Ok(Value::Scalar(self.model.ar.time())),
+            "PI" if !self.bindings.contains_key("PI") => {
+                return Ok(Value::Scalar(self.model.ar.float(std::f64::consts::PI).at(fail)?))
+            }
+            _ => {}
+        }
+        if let Some(x) = self.solved.get(key) {
+            return Ok(Value::Scalar(*x));
+        }
+        if !self.bindings.contains_key(key) {
+            if let Some((a, b)) = self.dcm_frames(key) {
+                let m = self.model.dcm(a, b).at(fail)?;
+                return Ok(Value::Matrix { rows: 3, cols: 3, data: m.iter().flatten().copied().collect() });
+            }
+        }
+        match self.bindings.get(key).or_else(|| self.bindings.get(&super::entity_key(key))) {
+            Some(Binding::Symbol(x, _)) => Ok(Value::Scalar(*x)),
+            Some(Binding::Value(v)) => Ok(v.clone()),
+            Some(Binding::Frame(_) | Binding::Body(_)) => {
+                Err(Diagnostic::error(e.span.clone(), format!("`{name}` is a frame, not a value"))
+                    .with_help(format!("use its unit vectors {name}1>, {name}2>, {name}3>")))
+            }
+            Some(Binding::Point(_) | Binding::Particle(_)) => {
+                Err(Diagnostic::error(e.span.clone(), format!("`{name}` is a point, not a value")).with_help(
+                    format!(
+                        "use its position, velocity or acceleration: P_O_{name}>, V_{name}_N>, A_{name}_N>"
+                    ),
+                ))
+            }
+            None => Err(self.unknown(name, 0, &e.span)),
+        }
+    }
+
+    /// `X'`, `X''`: a solved or assigned derivative, a variable's derivative symbol, or the
+    /// time derivative of an assigned scalar.
+    fn primed_name(&mut self, name: &str, key: &str, primes: u8, e: &Expr) -> IResult<Value> {
+        let fail: &Span = &e.span;
+        let primed = format!("{key}{}", "'".repeat(primes as usize));
+        if let Some(x) = self.solved.get(&primed) {
+            return Ok(Value::Scalar(*x));
+        }
+        if let Some(Binding::Value(v)) = self.bindings.get(&primed) {
+            return Ok(v.clone());
+        }
+        match self.bindings.get(key).cloned() {
+            Some(Binding::Symbol(x, _)) => {
+                let s = self.model.ar.as_symbol(x).ok_or_else(|| self.unknown(name, 0, &e.span))?;
+                if !self.model.ar.symbol_info(s).kind.depends_on_time()
+                    || self.model.ar.symbol_info(s).kind == SymbolKind::Time
+                {
+                    return Ok(Value::Scalar(self.model.ar.zero()));
+                }
+                let mut d = s;
+                for _ in 0..primes {
+                    d = self.model.ar.derivative_symbol(d).at(fail)?;
+                }
+                Ok(Value::Scalar(self.model.ar.symbol_expr(d)))
+            }
+            Some(Binding::Value(Value::Scalar(x))) => {
+                let mut v = x;
+                for _ in 0..primes {
+                    v = self.model.dt(v).at(fail)?;
+                }
+                Ok(Value::Scalar(v))
+            }
+            _ => Err(self.unknown(name, 0, &e.span)),
+        }
     }
 }

@@ -1,10 +1,13 @@
 //! Names: Autolev's built-in kinematic quantities (`P_O_P>`, `V_P_A>`, `W_B_A>`, `A_P_A>`,
 //! `ALF_B_A>`, `I_B_BO>>`, `FORCE_P>`, `TORQUE_B>`), frame unit vectors (`A1>`), and
 //! suggestions for unknown names.
+//!
+//! In: upper-cased names as written. Out: the entity or built-in quantity a name stands for,
+//! its value (or its assignment to the model), or a diagnostic suggesting the nearest name.
 
 use crate::mechanics::{FrameId, PointId, Vector};
 
-use super::super::ast::{Expr, ExprKind};
+use super::super::ast::Expr;
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
 use super::value::Value;
@@ -157,16 +160,8 @@ impl Interpreter {
             // An angular acceleration set by name is a definition, kept as a value.
             (Builtin::AngularAcceleration(..), Value::Vector(_)) => return Ok(false),
             // Assigning a load again adds to it, as SymPy's reading of Autolev does.
-            (Builtin::Force(p), Value::Vector(f)) => {
-                let prev = self.force_names.get(&p).map(|i| self.forces[*i].1.clone()).unwrap_or_default();
-                let sum = self.model.add_vectors(&prev, f).at(fail)?;
-                self.set_force(p, sum);
-            }
-            (Builtin::Torque(fr), Value::Vector(t)) => {
-                let prev = self.torque_names.get(&fr).map(|i| self.torques[*i].1.clone()).unwrap_or_default();
-                let sum = self.model.add_vectors(&prev, t).at(fail)?;
-                self.set_torque(fr, sum);
-            }
+            (Builtin::Force(p), Value::Vector(f)) => self.add_to_force(p, f, false, span)?,
+            (Builtin::Torque(fr), Value::Vector(t)) => self.add_to_torque(fr, t, false, span)?,
             (_, other) => {
                 return Err(Diagnostic::error(
                     span.clone(),
@@ -250,55 +245,6 @@ impl Interpreter {
     }
 }
 
-impl Interpreter {
-    /// Extension (Autolev has no inertia by shape): `INERTIA B, SOLID_ELLIPSOID(a, b, c)` and
-    /// likewise SOLID_SPHERE(r), SOLID_CYLINDER(r, l), THIN_ROD(l), CUBOID(a, b, c),
-    /// THIN_DISK(r): the central inertia of that uniform shape with the body's MASS, its axes
-    /// along the body's 1, 2, 3 (axis 3 the symmetry axis).
-    fn inertia_by_shape(
-        &mut self,
-        b: crate::mechanics::BodyId,
-        name: &str,
-        dims: &[Expr],
-        span: &Span,
-    ) -> IResult<()> {
-        use crate::mechanics::Shape;
-        let upper = name.to_ascii_uppercase();
-        let want = match upper.as_str() {
-            "SOLID_ELLIPSOID" | "CUBOID" => 3,
-            "SOLID_CYLINDER" => 2,
-            "SOLID_SPHERE" | "THIN_ROD" | "THIN_DISK" => 1,
-            _ => {
-                return Err(Diagnostic::error(span.clone(), format!("unknown shape `{name}`"))
-                    .with_help("shapes: SOLID_ELLIPSOID(a,b,c), SOLID_SPHERE(r), SOLID_CYLINDER(r,l), THIN_ROD(l), CUBOID(a,b,c), THIN_DISK(r)"))
-            }
-        };
-        if dims.len() != want {
-            return Err(Diagnostic::error(
-                span.clone(),
-                format!("{upper} takes {want} dimension(s), got {}", dims.len()),
-            ));
-        }
-        let d = dims.iter().map(|x| self.scalar(x)).collect::<IResult<Vec<_>>>()?;
-        let shape = match upper.as_str() {
-            "SOLID_ELLIPSOID" => Shape::SolidEllipsoid { a: d[0], b: d[1], c: d[2] },
-            "CUBOID" => Shape::Cuboid { a: d[0], b: d[1], c: d[2] },
-            "SOLID_CYLINDER" => Shape::SolidCylinder { r: d[0], l: d[1] },
-            "SOLID_SPHERE" => Shape::SolidSphere { r: d[0] },
-            "THIN_ROD" => Shape::ThinRod { l: d[0] },
-            _ => Shape::ThinDisk { r: d[0] },
-        };
-        let body = self.model.body(b).clone();
-        let m = body.mass.ok_or_else(|| {
-            Diagnostic::error(span.clone(), format!("{} has no mass yet", body.name))
-                .with_help("give MASS before INERTIA by shape")
-        })?;
-        let dy = self.model.shape_inertia(shape, m, body.frame).at(span)?;
-        self.model.set_inertia(b, dy);
-        Ok(())
-    }
-}
-
 /// Levenshtein distance, for "did you mean" hints.
 fn edit_distance(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();
@@ -311,36 +257,4 @@ fn edit_distance(a: &str, b: &str) -> usize {
         prev = cur;
     }
     prev[b.len()]
-}
-
-impl Interpreter {
-    /// `INERTIA B, I11, I22, I33 [, I12, I23, I31]`: central inertia in B's frame.
-    pub(crate) fn inertia(&mut self, body: &str, span: &Span, args: &[Expr]) -> IResult<()> {
-        let key = body.to_ascii_uppercase();
-        let Some(Binding::Body(b)) = self.bindings.get(&entity_key(&key)).cloned() else {
-            return Err(Diagnostic::error(span.clone(), format!("`{body}` is not a body"))
-                .with_help("declare it with BODIES"));
-        };
-        if let [Expr { kind: ExprKind::Call { name, args: dims }, span: shape_span }] = args {
-            return self.inertia_by_shape(b, name, dims, shape_span);
-        }
-        if args.len() != 3 && args.len() != 6 {
-            return Err(Diagnostic::error(
-                span.clone(),
-                format!("INERTIA takes 3 or 6 moments, got {}", args.len()),
-            )
-            .with_help("INERTIA B, I11, I22, I33 or INERTIA B, I11, I22, I33, I12, I23, I31"));
-        }
-        for a in args {
-            self.implicit_constants(a)?;
-        }
-        let v = args.iter().map(|a| self.scalar(a)).collect::<IResult<Vec<_>>>()?;
-        let z = self.model.ar.zero();
-        let (p12, p23, p31) = if v.len() == 6 { (v[3], v[4], v[5]) } else { (z, z, z) };
-        let frame = self.model.body(b).frame;
-        let d =
-            crate::mechanics::Dyadic::in_frame(frame, [[v[0], p12, p31], [p12, v[1], p23], [p31, p23, v[2]]]);
-        self.model.set_inertia(b, d);
-        Ok(())
-    }
 }

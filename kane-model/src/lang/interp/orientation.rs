@@ -1,5 +1,8 @@
 //! DIRCOS and KINDIFFS: orientations by angle sequences or Euler parameters, and the kinematic
 //! equations that go with a frame's angular velocity.
+//!
+//! In: `DIRCOS(A, B, kind, angles...)` or `KINDIFFS(A, B, kind, angles...)`. Out: B oriented in
+//! A, or the kinematic differential equations of the angles set on the model.
 
 use crate::expr::{ExprId, SymbolId};
 use crate::mechanics::{FrameId, Orientation};

@@ -1,4 +1,7 @@
 //! Values of Autolev expressions: scalars, vectors, dyadics and matrices of scalars.
+//!
+//! In: values and the model whose arena they live in. Out: sums, scalings and products of
+//! values of matching kinds (`None` where the kinds do not combine).
 
 use crate::expr::ExprId;
 use crate::mechanics::{Dyadic, Model, Result, Vector};

@@ -1,0 +1,165 @@
+//! Scalar functions: elementary functions (SIN, SQRT, LOG10, ...), substitution (EVALUATE,
+//! REPLACE), rewriting (EXPAND; EXPLICIT, FACTOR, ARRANGE as identities), coefficients (COEF)
+//! and solved unknowns (RHS).
+//!
+//! In: the upper-cased function name and its argument expressions. Out: a [`Value`] (scalars,
+//! or the same kind as the argument where the function maps over its scalars).
+
+use rustc_hash::FxHashMap;
+
+use crate::expr::{ExprId, Func};
+
+use super::super::ast::{Expr, ExprKind};
+use super::super::diagnostic::Diagnostic;
+use super::super::token::Span;
+use super::value::Value;
+use super::{At, IResult, Interpreter};
+
+/// An elementary function of one scalar.
+pub(super) enum Elementary {
+    Func(Func),
+    Sqrt,
+    Square,
+    Log10,
+}
+
+/// The elementary function named `name` (upper-cased), if it is one.
+pub(super) fn elementary(name: &str) -> Option<Elementary> {
+    Some(match name {
+        "LOG" | "LN" => Elementary::Func(Func::Ln),
+        "SQRT" => Elementary::Sqrt,
+        "SQR" => Elementary::Square,
+        "LOG10" => Elementary::Log10,
+        _ => Elementary::Func(Func::from_name(name).filter(|f| *f != Func::Ln)?),
+    })
+}
+
+impl Interpreter {
+    /// `SIN(x)`, `SQRT(x)`, `SQR(x)`, `LOG10(x)`, ...
+    pub(super) fn elementary_function(
+        &mut self,
+        f: Elementary,
+        upper: &str,
+        args: &[Expr],
+        e: &Expr,
+    ) -> IResult<Value> {
+        let fail: &Span = &e.span;
+        super::arity(upper, args, 1, &e.span)?;
+        let x = self.scalar(&args[0])?;
+        let ar = &mut self.model.ar;
+        Ok(Value::Scalar(match f {
+            Elementary::Func(f) => ar.func(f, x).at(fail)?,
+            Elementary::Sqrt => ar.sqrt(x).at(fail)?,
+            Elementary::Square => ar.powi(x, 2).at(fail)?,
+            Elementary::Log10 => {
+                let ln = ar.func(Func::Ln, x).at(fail)?;
+                let ln10 = ar.float(std::f64::consts::LN_10).at(fail)?;
+                ar.div(ln, ln10).at(fail)?
+            }
+        }))
+    }
+
+    /// EVALUATE, REPLACE, EXPLICIT, FACTOR, ARRANGE, EXPAND, COEF, RHS.
+    pub(super) fn scalar_function(&mut self, upper: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
+        match upper {
+            "EVALUATE" | "REPLACE" => self.substitute(upper, args, e),
+            "EXPLICIT" | "FACTOR" | "ARRANGE" => {
+                let v = self.eval(args.first().ok_or_else(|| {
+                    Diagnostic::error(e.span.clone(), format!("{upper} needs an argument"))
+                })?)?;
+                Ok(v)
+            }
+            "EXPAND" => {
+                let v = self.eval(
+                    args.first()
+                        .ok_or_else(|| Diagnostic::error(e.span.clone(), "EXPAND needs an argument"))?,
+                )?;
+                self.map_scalars(&v, &e.span, |m, x| Ok(m.ar.expand(x)?))
+            }
+            "COEF" => self.coefficients(args, e),
+            _ => self.solved_value(args, e),
+        }
+    }
+
+    /// `EVALUATE(x, NAME = value, ...)` and `REPLACE(...)`: substitution in every scalar.
+    fn substitute(&mut self, upper: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
+        let v = self
+            .eval(args.first().ok_or_else(|| {
+                Diagnostic::error(e.span.clone(), format!("{upper} needs an expression"))
+            })?)?;
+        let mut map = FxHashMap::default();
+        for a in &args[1..] {
+            let ExprKind::NamedArg(n, value) = &a.kind else {
+                return Err(Diagnostic::error(
+                    a.span.clone(),
+                    format!("{upper} takes substitutions NAME = value"),
+                ));
+            };
+            let key = self.scalar(&Expr {
+                kind: ExprKind::Name { name: n.clone(), primes: 0, suffix: 0 },
+                span: a.span.clone(),
+            })?;
+            let val = self.scalar(value)?;
+            map.insert(key, val);
+        }
+        self.map_scalars(&v, &e.span, |m, x| Ok(m.ar.subs(x, &map)?))
+    }
+
+    /// `COEF(x, y)`: the coefficients of the symbols `y` in the scalars `x` (linear in them).
+    fn coefficients(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
+        super::arity("COEF", args, 2, &e.span)?;
+        let v = self.eval(&args[0])?;
+        let wrt = match self.eval(&args[1])? {
+            Value::Scalar(x) => vec![x],
+            Value::Matrix { data, .. } => data,
+            other => {
+                return Err(Diagnostic::error(
+                    args[1].span.clone(),
+                    format!("COEF takes symbols, not {}", other.kind()),
+                ))
+            }
+        };
+        let syms = wrt
+            .iter()
+            .map(|x| {
+                self.model
+                    .ar
+                    .as_symbol(*x)
+                    .ok_or_else(|| Diagnostic::error(args[1].span.clone(), "COEF takes symbols"))
+            })
+            .collect::<IResult<Vec<_>>>()?;
+        let exprs = match v {
+            Value::Scalar(x) => vec![x],
+            Value::Matrix { data, .. } => data,
+            other => {
+                return Err(Diagnostic::error(
+                    args[0].span.clone(),
+                    format!("COEF takes scalars, not {}", other.kind()),
+                ))
+            }
+        };
+        let mut out: Vec<ExprId> = Vec::new();
+        for x in &exprs {
+            let (c, _) = self.model.ar.linear_coefficients(*x, &syms).at(&e.span)?;
+            out.extend(c);
+        }
+        Ok(if out.len() == 1 {
+            Value::Scalar(out[0])
+        } else {
+            Value::Matrix { rows: exprs.len(), cols: syms.len(), data: out }
+        })
+    }
+
+    /// `RHS(X)`: the solution SOLVE found for the unknown `X`.
+    fn solved_value(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
+        super::arity("RHS", args, 1, &e.span)?;
+        let ExprKind::Name { name, primes, .. } = &args[0].kind else {
+            return Err(Diagnostic::error(args[0].span.clone(), "RHS takes the name of a solved unknown"));
+        };
+        let key = format!("{}{}", name.to_ascii_uppercase(), "'".repeat(*primes as usize));
+        self.solved.get(&key).map(|x| Value::Scalar(*x)).ok_or_else(|| {
+            Diagnostic::error(args[0].span.clone(), format!("`{name}` has not been solved for"))
+                .with_help("call SOLVE(EQN, ...) first")
+        })
+    }
+}

@@ -1,0 +1,182 @@
+//! Statements: declarations, MASS, INERTIA, settings, UNITS, INPUT, OUTPUT, CODE, and the
+//! dispatch of assignments and commands.
+//!
+//! In: one parsed statement. Out: the interpreter's bindings and the model changed accordingly
+//! (frames, points, bodies, particles and symbols declared; masses given; requests recorded).
+
+use super::super::ast::{DeclItem, DeclKind, Expr, InputItem, Stmt, StmtKind};
+use super::super::diagnostic::Diagnostic;
+use super::super::token::Span;
+use super::{entity_key, is_degrees, At, Binding, CodeRequest, IResult, InputValue, Interpreter};
+
+impl Interpreter {
+    /// Runs one statement.
+    pub(super) fn statement(&mut self, s: &Stmt) -> IResult<()> {
+        match &s.kind {
+            StmtKind::Declare { kind, items } => {
+                for item in items {
+                    self.declare(*kind, item)?;
+                }
+                Ok(())
+            }
+            StmtKind::Mass(items) => self.mass_statement(items),
+            StmtKind::Inertia { body, body_span, args } => self.inertia(body, body_span, args),
+            StmtKind::Setting { name, on } => self.setting(name, *on, &s.span),
+            StmtKind::Units(items) => {
+                for (name, _, e) in items {
+                    self.units.insert(name.to_ascii_uppercase(), unit_text(e));
+                }
+                Ok(())
+            }
+            StmtKind::Input(items) => self.input(items),
+            StmtKind::Output(items) => {
+                for (n, _, u) in items {
+                    self.outputs.push((n.clone(), u.clone()));
+                }
+                Ok(())
+            }
+            StmtKind::Code { kind, args: _, file } => {
+                // CODE DYNAMICS() takes no arguments; ALGEBRAIC/NONLINEAR name equations.
+                if kind == "DYNAMICS" && self.equations.is_none() {
+                    return Err(Diagnostic::error(s.span.clone(), "CODE DYNAMICS() needs Kane's equations")
+                        .with_help("call KANE() (after ZERO = FR() + FRSTAR()) before CODE DYNAMICS()"));
+                }
+                self.code.push(CodeRequest { kind: kind.clone(), file: file.clone() });
+                Ok(())
+            }
+            StmtKind::Assign { target, op, value } => self.assign(target, *op, value),
+            StmtKind::Expr(e) => self.command(e),
+        }
+    }
+
+    /// `MASS B = M, P = m, ...`.
+    fn mass_statement(&mut self, items: &[(String, Span, Expr)]) -> IResult<()> {
+        for (name, span, e) in items {
+            self.implicit_constants(e)?;
+            let m = self.scalar(e)?;
+            match self.bindings.get(&entity_key(&name.to_ascii_uppercase())) {
+                Some(Binding::Body(b)) => self.model.set_mass(*b, m),
+                Some(Binding::Particle(p)) => self.model.set_particle_mass(*p, m),
+                _ => {
+                    return Err(Diagnostic::error(
+                        span.clone(),
+                        format!("`{name}` is not a body or particle"),
+                    )
+                    .with_help("declare it with BODIES or PARTICLES before giving it a mass"))
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// `DEGREES ON`, and settings that change only how Autolev prints.
+    fn setting(&mut self, name: &str, on: bool, span: &Span) -> IResult<()> {
+        match name {
+            "DEGREES" => {
+                self.degrees = on;
+                Ok(())
+            }
+            "COMPLEX" | "AUTOZ" | "AUTOEPS" | "AUTORHS" | "ZEE_NOT" | "BEEP" | "OVERWRITE" | "PRINT" => {
+                Ok(())
+            }
+            _ => Err(Diagnostic::error(span.clone(), format!("unknown setting `{name}`"))
+                .with_help("known settings: DEGREES, COMPLEX, AUTOZ")),
+        }
+    }
+
+    /// `INPUT a = value [unit], ...`: values kept in internal units (degrees become radians).
+    fn input(&mut self, items: &[InputItem]) -> IResult<()> {
+        for item in items {
+            let v = self.number(&item.value)?;
+            let name = format!("{}{}", item.name, "'".repeat(item.primes as usize));
+            let in_degrees = item.unit.as_deref() == Some("DEG")
+                || (item.unit.is_none()
+                    && self.units.get(&name.to_ascii_uppercase()).is_some_and(|u| is_degrees(u)));
+            let value = if in_degrees { v.to_radians() } else { v };
+            self.inputs.push(InputValue { name, value, unit: item.unit.clone() });
+        }
+        Ok(())
+    }
+
+    /// A declaration: NEWTONIAN, FRAMES, BODIES, PARTICLES, POINTS, CONSTANTS, VARIABLES, ...
+    fn declare(&mut self, kind: DeclKind, item: &DeclItem) -> IResult<()> {
+        let names = expand_ranges(&item.name, &item.ranges);
+        for name in names {
+            let key = name.to_ascii_uppercase();
+            let span = &item.span;
+            let fail: &Span = span;
+            match kind {
+                DeclKind::Newtonian => {
+                    self.model.rename_newtonian(&key).at(fail)?;
+                    self.bindings.insert(entity_key(&key), Binding::Frame(self.model.newtonian()));
+                }
+                DeclKind::Frames => {
+                    let f = self.model.add_frame(&key).at(fail)?;
+                    self.bindings.insert(entity_key(&key), Binding::Frame(f));
+                }
+                DeclKind::Bodies => {
+                    let b = self.model.add_body(&key).at(fail)?;
+                    let cm = self.model.body(b).mass_center;
+                    self.bindings.insert(entity_key(&format!("{key}O")), Binding::Point(cm));
+                    self.bindings.insert(entity_key(&key), Binding::Body(b));
+                }
+                DeclKind::Particles => {
+                    let p = self.model.add_particle(&key).at(fail)?;
+                    self.bindings.insert(entity_key(&key), Binding::Particle(p));
+                }
+                DeclKind::Points => {
+                    let p = self.model.add_point(&key).at(fail)?;
+                    self.bindings.insert(entity_key(&key), Binding::Point(p));
+                }
+                DeclKind::Constants | DeclKind::Imaginary => {
+                    let e = self.model.ar.constant(&name).at(fail)?;
+                    self.bindings.insert(key, Binding::Symbol(e, 0));
+                }
+                DeclKind::Variables | DeclKind::MotionVariables | DeclKind::Specified => {
+                    let e = if kind == DeclKind::Specified {
+                        self.model.ar.specified(&name)
+                    } else {
+                        self.model.ar.variable(&name)
+                    }
+                    .at(fail)?;
+                    self.bindings.insert(key.clone(), Binding::Symbol(e, item.primes));
+                }
+            }
+        }
+        if let Some(v) = &item.value {
+            // CONSTANTS F = 3 and SPECIFIED F1 = expr: a value is a definition for that name.
+            let val = self.eval(v)?;
+            self.bindings.insert(item.name.to_ascii_uppercase(), Binding::Value(val));
+        }
+        Ok(())
+    }
+}
+
+/// `Q` with ranges `[(1,3)]` -> `Q1, Q2, Q3`; `P` with `[(1,2),(1,3)]` -> `P11, P12, ..., P23`.
+fn expand_ranges(name: &str, ranges: &[(i64, i64)]) -> Vec<String> {
+    let mut out = vec![name.to_string()];
+    for &(lo, hi) in ranges {
+        out = out.iter().flat_map(|p| (lo..=hi).map(move |i| format!("{p}{i}"))).collect();
+    }
+    out
+}
+
+/// The text of a unit expression (`N*m`, `RAD/SEC`), upper-cased.
+fn unit_text(e: &Expr) -> String {
+    use super::super::ast::{BinOp, ExprKind};
+    match &e.kind {
+        ExprKind::Name { name, .. } => name.to_ascii_uppercase(),
+        ExprKind::Number { value, .. } => format!("{value}"),
+        ExprKind::Binary(op, a, b) => {
+            let o = match op {
+                BinOp::Mul => "*",
+                BinOp::Div => "/",
+                BinOp::Pow => "^",
+                BinOp::Add => "+",
+                BinOp::Sub => "-",
+            };
+            format!("{}{o}{}", unit_text(a), unit_text(b))
+        }
+        _ => String::new(),
+    }
+}
