@@ -4,11 +4,12 @@
 //! the independent reference for each case. Figures are in BENCHMARKS.md.
 
 use std::hint::black_box;
+use std::ops::ControlFlow;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use gyro_sim::models::gimbal_gyroscope as gimbal;
 use gyro_sim::ode::{integrate, tableau, Method, Tolerances};
-use gyro_sim::run::{ModelSystem, Reduced};
+use gyro_sim::solve::{ModelSystem, Reduced};
 use kane_model::runtime::GeneratedModel;
 
 fn trial3() -> (ModelSystem<gimbal::Model>, Vec<f64>, Vec<f64>) {
@@ -39,7 +40,7 @@ fn run(method: Method, reference: &[Vec<f64>]) -> (usize, f64) {
             worst = worst.max((y[i] - want).abs() / want.abs().max(1.0));
         }
         k += 1;
-        Ok(())
+        ControlFlow::Continue(())
     })
     .unwrap();
     (stats.rhs_evals, worst)
@@ -131,7 +132,7 @@ fn run_reduced<S: gyro_sim::ode::System>(sys: &S, tol: f64, reference: &[Vec<f64
             worst = worst.max((y[i] - want).abs() / want.abs().max(1.0));
         }
         row += 1;
-        Ok(())
+        ControlFlow::Continue(())
     })
     .unwrap();
     (stats.rhs_evals, worst)

@@ -39,12 +39,12 @@ fn check(name: &str, src: &str, samples: usize) -> f64 {
         let m = DMatrix::from_fn(n, n, |i, j| at(eqs.mass_matrix[i][j]));
         let f = DVector::from_fn(n, |i, _| at(eqs.forcing[i]));
         let udot = m.lu().solve(&f).unwrap();
-        for i in 0..nq {
-            worst = worst.max((dy[i] - at(eqs.kinematics[i])).abs());
+        for (got, e) in dy.iter().zip(&eqs.kinematics) {
+            worst = worst.max((got - at(*e)).abs());
         }
         let scale = udot.iter().fold(1.0f64, |a, v| a.max(v.abs()));
-        for i in 0..n {
-            worst = worst.max((dy[nq + i] - udot[i]).abs() / scale);
+        for (got, want) in dy[nq..].iter().zip(udot.iter()) {
+            worst = worst.max((got - want).abs() / scale);
         }
     }
     worst

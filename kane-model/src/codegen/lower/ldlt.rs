@@ -1,6 +1,8 @@
 //! A symmetric positive-definite block of `M x = f` lowered as `M = L D L^T`: in come the
 //! block's indices and the values of `M` and `f`; out go the values of `x`. The structural zeros
 //! of `M` (and of the fill-in) are known at generation time, so their terms are never emitted.
+// Symmetric-matrix code reads clearest with two indices (M[i][j] and M[j][i]).
+#![allow(clippy::needless_range_loop)]
 
 use super::super::ir::SectionBuilder;
 use super::solve::System;

@@ -1,6 +1,8 @@
 //! The right-hand side lowered: in come Kane's equations (simplified) and the parameters; out go
 //! two sections, `derive` (parameter-only quantities, once per parameter set) and `rhs`
 //! (`q'` then `u'`, the entries of `M` and `f` with `M u' = f` solved in the same program).
+// Symmetric-matrix code reads clearest with two indices (M[i][j] and M[j][i]).
+#![allow(clippy::needless_range_loop)]
 
 use rustc_hash::FxHashMap;
 

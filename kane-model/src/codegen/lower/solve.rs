@@ -2,6 +2,8 @@
 //! of `f`; out go the values of `u'`. `M` is split into the independent blocks of its nonzeros;
 //! a 1x1 block is one multiplication by its reciprocal, a 2x2 block is solved with its adjugate
 //! (one reciprocal of the determinant instead of two chained pivots), a larger block by `LDL^T`.
+// Symmetric-matrix code reads clearest with two indices (M[i][j] and M[j][i]).
+#![allow(clippy::needless_range_loop)]
 
 use super::super::ir::SectionBuilder;
 use super::ldlt;
