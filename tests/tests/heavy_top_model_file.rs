@@ -46,6 +46,7 @@ fn model_file_top_equals_the_rust_api_top() {
             ("G", g),
             ("RR", r),
             ("D", d),
+            ("AXIAL", 0.4),
         ];
         let api_vals = [
             ("e1", v1),

@@ -29,8 +29,8 @@ pub enum CodegenError {
     /// A symbol the equations need is neither a state, a parameter nor time.
     #[error("`{0}` is a time-dependent quantity that is not a state; specified functions are not supported in generated code")]
     UnsupportedSymbol(String),
-    /// An OUTPUT name that is not a scalar the model defines.
-    #[error("OUTPUT `{0}` is not a state or a scalar defined in the model")]
+    /// An OUTPUT name that is not a scalar or vector the model defines.
+    #[error("OUTPUT `{0}` is not a state, nor a scalar or vector defined in the model")]
     UnknownOutput(String),
     /// An expression operation failed.
     #[error(transparent)]

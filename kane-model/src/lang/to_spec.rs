@@ -2,7 +2,6 @@
 //! file's equations, INPUT defaults, UNITS, its OUTPUT scalars and the kinetic energy.
 
 use crate::codegen::CodegenError;
-use crate::expr::ExprId;
 use crate::spec::ModelSpec;
 
 use super::{LoadedModel, Value};
@@ -11,7 +10,7 @@ impl LoadedModel {
     /// The spec of this model file, named `name` (the model moves into it).
     pub fn into_spec(self, name: &str) -> Result<ModelSpec, CodegenError> {
         let eqs = self.equations.clone().ok_or(CodegenError::NoEquations)?;
-        let scalars = self.output_scalars(&eqs)?;
+        let outputs = self.output_values(&eqs)?;
         let mut spec = ModelSpec::new(name, self.model, eqs);
         for input in &self.inputs {
             spec.set_default(&input.name, input.value);
@@ -19,9 +18,15 @@ impl LoadedModel {
         for (name, unit) in &self.units {
             spec.set_unit(name, unit);
         }
-        for (oname, e) in scalars {
+        let n = spec.model.newtonian();
+        for (oname, value) in outputs {
             let unit = spec.unit(&oname).to_string();
-            spec.add_scalar(&oname, e, &unit);
+            let oname = oname.as_str();
+            match value {
+                Value::Vector(v) => spec.add_vector(oname, &v, n, &unit)?,
+                Value::Scalar(e) => spec.add_scalar(oname, e, &unit),
+                _ => return Err(CodegenError::UnknownOutput(oname.to_string())),
+            }
         }
         if !spec.outputs.iter().any(|o| o.name.eq_ignore_ascii_case("KE")) {
             let unit = spec.unit("KE").to_string();
@@ -30,11 +35,12 @@ impl LoadedModel {
         Ok(spec)
     }
 
-    /// The OUTPUT names other than `T` and the states, each a scalar of the model.
-    fn output_scalars(
+    /// The OUTPUT names other than `T` and the states, each a scalar or a vector (`L>`, written
+    /// in the Newtonian frame) of the model; names without the `>`.
+    fn output_values(
         &self,
         eqs: &crate::mechanics::KaneEquations,
-    ) -> Result<Vec<(String, ExprId)>, CodegenError> {
+    ) -> Result<Vec<(String, Value)>, CodegenError> {
         let mut out = Vec::new();
         for (oname, _) in &self.outputs {
             let is_state = eqs
@@ -45,8 +51,9 @@ impl LoadedModel {
             if oname.eq_ignore_ascii_case("T") || is_state {
                 continue;
             }
-            match self.value(oname) {
-                Some(Value::Scalar(e)) => out.push((oname.clone(), e)),
+            let bare = oname.trim_end_matches('>');
+            match self.value(oname).or_else(|| self.value(&format!("{bare}>"))) {
+                Some(v @ (Value::Scalar(_) | Value::Vector(_))) => out.push((bare.to_string(), v)),
                 _ => return Err(CodegenError::UnknownOutput(oname.clone())),
             }
         }

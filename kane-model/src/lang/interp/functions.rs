@@ -44,6 +44,7 @@ impl Interpreter {
             "DOT" | "CROSS" | "MAG" | "UNITVEC" | "EXPRESS" | "DT" | "D" | "PARTIALS" => {
                 self.vector_function(&upper, args, e)
             }
+            "ATAN2" => self.atan2_function(args, e),
             "EVALUATE" | "REPLACE" | "EXPLICIT" | "FACTOR" | "ARRANGE" | "EXPAND" | "COEF" | "RHS" => {
                 self.scalar_function(&upper, args, e)
             }

@@ -59,6 +59,14 @@ impl Interpreter {
         }))
     }
 
+    /// `ATAN2(y, x)`: the angle of the point `(x, y)`, in (-pi, pi]; defined (zero) at the origin.
+    pub(super) fn atan2_function(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
+        super::arity("ATAN2", args, 2, &e.span)?;
+        let y = self.scalar(&args[0])?;
+        let x = self.scalar(&args[1])?;
+        Ok(Value::Scalar(self.model.ar.atan2(y, x).at(&e.span)?))
+    }
+
     /// EVALUATE, REPLACE, EXPLICIT, FACTOR, ARRANGE, EXPAND, COEF, RHS.
     pub(super) fn scalar_function(&mut self, upper: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
         match upper {
