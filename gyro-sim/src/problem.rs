@@ -28,6 +28,9 @@ pub struct Problem {
     pub initial: Vec<f64>,
     /// Output times, increasing; the last is the final time.
     pub times: Vec<f64>,
+    /// Further times, between output times, evaluated only for the figures (drawn from the
+    /// dense output; empty when the method has none, since extra stops would change its steps).
+    pub plot_times: Vec<f64>,
     /// The method and its tolerances or step.
     pub method: Method,
     /// The largest error asked of the trajectory (tolerances refined until it is met).
@@ -47,4 +50,15 @@ pub fn output_times(t_final: f64, step: f64) -> Vec<f64> {
         times[n] = t_final;
     }
     times
+}
+
+/// Plot points between the output times: `per_interval - 1` evenly inside each interval, at most
+/// `max_points` in all.
+pub fn plot_times(times: &[f64], per_interval: usize, max_points: usize) -> Vec<f64> {
+    let per = per_interval.min(max_points / times.len().max(1)).max(1);
+    let mut out = Vec::with_capacity(times.len() * per);
+    for w in times.windows(2) {
+        out.extend((1..per).map(|k| w[0] + (w[1] - w[0]) * k as f64 / per as f64));
+    }
+    out
 }

@@ -5,7 +5,7 @@
 use kane_model::runtime::ModelInfo;
 
 use crate::ode::{Method, Tolerances};
-use crate::problem::{output_times, Pick, Problem};
+use crate::problem::{output_times, plot_times, Pick, Problem};
 use crate::registry::{ModelEntry, Registry};
 use crate::scene::{Scene, SceneError, Value};
 
@@ -19,16 +19,34 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
         )
     })?;
     let info = entry.info;
+    let times = output_times(scene.t_final, scene.output_step);
+    let method = method(scene);
     Ok(Problem {
         title: scene.title.clone(),
         model: info,
         params: parameters(scene, entry)?,
         initial: initial_state(scene, entry)?,
-        times: output_times(scene.t_final, scene.output_step),
-        method: method(scene),
+        times: times.clone(),
+        plot_times: if has_dense_output(method) {
+            plot_times(&times, PLOT_POINTS_PER_STEP, MAX_PLOT_POINTS)
+        } else {
+            Vec::new()
+        },
+        method,
         accuracy: scene.integrator.accuracy,
         picks: picks(scene, info)?,
     })
+}
+
+/// Figures are drawn from this many points per output interval when the method has dense
+/// output (1: the output rows alone)...
+const PLOT_POINTS_PER_STEP: usize = 1;
+/// ... and at most this many in all.
+const MAX_PLOT_POINTS: usize = 20_000;
+
+/// Whether `method` interpolates inside its steps (then plot points cost no extra steps).
+fn has_dense_output(method: Method) -> bool {
+    matches!(method, Method::Adaptive(tab, _) if tab.dense.is_some())
 }
 
 /// The method a scene names (checked when the scene was parsed).

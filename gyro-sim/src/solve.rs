@@ -1,6 +1,6 @@
 //! Integration: in comes a [`Problem`]; out goes a [`Trajectory`]. The generic driver
 //! [`solve_model`] is public, so a user's crate can integrate its own generated models; outputs
-//! are computed only at output times and only those asked for.
+//! are computed only at output times (and the figures' plot times) and only those asked for.
 
 use std::ops::ControlFlow;
 use std::time::Instant;
@@ -135,6 +135,7 @@ impl<S: System> System for Reduced<'_, S> {
 pub(crate) struct Integration {
     pub(crate) stats: Stats,
     pub(crate) rows: Vec<Vec<f64>>,
+    pub(crate) plot_rows: Vec<Vec<f64>>,
     pub(crate) y_end: Vec<f64>,
 }
 
@@ -151,7 +152,7 @@ pub fn solve_model<M: GeneratedModel>(problem: &Problem) -> Result<Trajectory, S
     let columns = columns(problem);
     let integrate_at = |method: Method| integrate::<M>(problem, &sys, &keep, &columns, method);
     let start = Instant::now();
-    let (Integration { stats, rows, y_end }, accuracy) = match (problem.accuracy, problem.method) {
+    let (Integration { stats, rows, plot_rows, y_end }, accuracy) = match (problem.accuracy, problem.method) {
         (Some(goal), Method::Adaptive(tab, tol)) => refine(goal, tab, tol, integrate_at)?,
         _ => (integrate_at(problem.method)?, None),
     };
@@ -169,6 +170,7 @@ pub fn solve_model<M: GeneratedModel>(problem: &Problem) -> Result<Trajectory, S
         title: problem.title.clone(),
         columns,
         rows,
+        plot_rows,
         stats,
         wall,
         integrated: keep.iter().map(|k| info.state_names[*k]).collect(),
@@ -238,7 +240,10 @@ fn integrate<M: GeneratedModel>(
     let mut bad: Option<SolveError> = None;
     let y_start: Vec<f64> = keep.iter().map(|k| problem.initial[*k]).collect();
     let params = sys_params(sys);
-    let result = ode::integrate(sys, 0.0, &y_start, &problem.times, method, |t, y_red| {
+    let all_times = merged(&problem.times, &problem.plot_times);
+    let mut plot_rows: Vec<Vec<f64>> = Vec::new();
+    let mut next_output = 0;
+    let result = ode::integrate(sys, 0.0, &y_start, &all_times, method, |t, y_red| {
         sys.expand(y_red, &mut full_y);
         y_end.copy_from_slice(&full_y);
         if needs_rates {
@@ -262,7 +267,13 @@ fn integrate<M: GeneratedModel>(
             bad = Some(SolveError::NonFiniteOutput { name, time: t, value: row[j] });
             return ControlFlow::Break(());
         }
-        rows.push(row);
+        if !problem.plot_times.is_empty() {
+            plot_rows.push(row.clone());
+        }
+        if problem.times.get(next_output) == Some(&t) {
+            next_output += 1;
+            rows.push(row);
+        }
         ControlFlow::Continue(())
     });
     let stats = result.map_err(|e| match e {
@@ -273,8 +284,16 @@ fn integrate<M: GeneratedModel>(
     })?;
     match bad {
         Some(e) => Err(e),
-        None => Ok(Integration { stats, rows, y_end }),
+        None => Ok(Integration { stats, rows, plot_rows, y_end }),
     }
+}
+
+/// The increasing union of two increasing time lists.
+fn merged(a: &[f64], b: &[f64]) -> Vec<f64> {
+    let mut out: Vec<f64> = a.iter().chain(b).copied().collect();
+    out.sort_by(f64::total_cmp);
+    out.dedup();
+    out
 }
 
 fn sys_params<'a, M: GeneratedModel>(sys: &'a Reduced<'_, ModelSystem<M>>) -> &'a M::Params {

@@ -48,6 +48,9 @@ pub struct Trajectory {
     pub columns: Vec<Column>,
     /// Each row: `t`, then one value per column.
     pub rows: Vec<Vec<f64>>,
+    /// Rows at the output times and the plot times between them, for figures (empty: use
+    /// `rows`).
+    pub plot_rows: Vec<Vec<f64>>,
     /// Integrator statistics (summed over refinement runs).
     pub stats: Stats,
     /// Wall time of the integration (outputs included, files excluded).

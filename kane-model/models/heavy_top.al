@@ -26,8 +26,9 @@ KANE()
 INPUT M = 1, G = 1, RR = 1, D = 1, AXIAL = 0.4
 INPUT E1 = 0.5, E2 = 0, E3 = 0, E4 = 0.8660254037844386, W1 = 0, W2 = 0, W3 = 10
 OUTPUT E1, E2, E3, E4, W1, W2, W3
-% In space axes (N): the angular momentum about the support, the angular velocity, and the
-% gravity torque about the support.
+% In space axes (N): the axle's direction, the angular momentum about the support, the angular
+% velocity, and the gravity torque about the support.
+AXLE> = R3>
 L> = MOMENTUM(ANGULAR, O)
 OMEGA> = W_R_N>
 TORQUE> = CROSS(P_O_RO>, -M*G*N3>)
@@ -39,4 +40,4 @@ ENERGY = KE() + M*G*D*DOT(R3>, N3>)
 LZ = DOT(L>, N3>)
 L3 = DOT(L>, R3>)
 UNITS ELEVATION = DEG, L_ELEVATION = DEG
-OUTPUT L>, OMEGA>, TORQUE>, ELEVATION, L_ELEVATION, ENERGY, LZ, L3
+OUTPUT AXLE>, L>, OMEGA>, TORQUE>, ELEVATION, L_ELEVATION, ENERGY, LZ, L3

@@ -6,7 +6,7 @@ mod plot;
 mod write;
 
 pub use csv_file::write_csv;
-pub use plot::write_plot;
+pub use plot::{write_elevation, write_plot, write_trace};
 pub use write::{column_name, display_table, write, WriteError, Written};
 
 /// One column of results.
@@ -16,6 +16,8 @@ pub struct Column {
     pub name: String,
     /// The quantity's name in the model.
     pub label: String,
+    /// The unit the values are written in (`DEG` for angles written in degrees).
+    pub unit: String,
     /// Values are written in degrees.
     pub degrees: bool,
     /// The quantity is an angle.
@@ -33,6 +35,19 @@ pub struct Table {
     pub columns: Vec<Column>,
     /// Each row: `t`, then one value per column.
     pub rows: Vec<Vec<f64>>,
+    /// Denser rows for figures (empty: draw `rows`).
+    pub plot_rows: Vec<Vec<f64>>,
+}
+
+impl Table {
+    /// The rows figures are drawn from: the dense ones when there are.
+    pub fn figure_rows(&self) -> &[Vec<f64>] {
+        if self.plot_rows.is_empty() {
+            &self.rows
+        } else {
+            &self.plot_rows
+        }
+    }
 }
 
 /// Writes `bytes` to `path` through a temporary file in the same folder and a rename.

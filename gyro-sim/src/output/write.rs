@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
-use super::{write_csv, write_plot, Column, Table};
+use super::{write_csv, write_elevation, write_plot, write_trace, Column, Table};
 use crate::trajectory::Trajectory;
 
 /// Why results could not be written.
@@ -30,8 +30,10 @@ pub enum WriteError {
 pub struct Written {
     /// The CSV.
     pub csv: PathBuf,
-    /// The plot.
+    /// The time-series plot.
     pub plot: PathBuf,
+    /// Further figures the trajectory had data for (elevation window, axle-tip trace).
+    pub figures: Vec<PathBuf>,
 }
 
 /// Writes `trajectory` into `dir` (made if missing): the CSV and the plot, each atomically.
@@ -43,7 +45,16 @@ pub fn write(trajectory: &Trajectory, dir: &Path) -> Result<Written, WriteError>
     write_csv(&table, &csv).map_err(WriteError::File)?;
     let plot = dir.join("trajectory.png");
     write_plot(&table, &plot).map_err(WriteError::File)?;
-    Ok(Written { csv, plot })
+    let mut figures = Vec::new();
+    let elevation = dir.join("elevation.png");
+    if write_elevation(&table, &elevation).map_err(WriteError::File)? {
+        figures.push(elevation);
+    }
+    let trace = dir.join("axle_trace.png");
+    if write_trace(&table, &trace).map_err(WriteError::File)? {
+        figures.push(trace);
+    }
+    Ok(Written { csv, plot, figures })
 }
 
 /// The trajectory in display units, with CSV headers naming them.
@@ -54,24 +65,25 @@ pub fn display_table(trajectory: &Trajectory) -> Table {
         .map(|c| Column {
             name: column_name(&c.name, &c.unit),
             label: c.name.clone(),
+            unit: c.unit.clone(),
             degrees: c.unit.eq_ignore_ascii_case("DEG"),
             angle: c.is_angle(),
             output: c.output,
         })
         .collect();
-    let rows = trajectory
-        .rows
-        .iter()
-        .map(|row| {
-            let mut out = Vec::with_capacity(row.len());
-            out.push(row[0]);
-            out.extend(
-                row[1..].iter().zip(&columns).map(|(v, c)| if c.degrees { v.to_degrees() } else { *v }),
-            );
-            out
-        })
-        .collect();
-    Table { title: trajectory.title.clone(), columns, rows }
+    let display = |rows: &[Vec<f64>]| -> Vec<Vec<f64>> {
+        rows.iter()
+            .map(|row| {
+                let mut out = Vec::with_capacity(row.len());
+                out.push(row[0]);
+                let values = row[1..].iter().zip(&columns);
+                out.extend(values.map(|(v, c)| if c.degrees { v.to_degrees() } else { *v }));
+                out
+            })
+            .collect()
+    };
+    let (rows, plot_rows) = (display(&trajectory.rows), display(&trajectory.plot_rows));
+    Table { title: trajectory.title.clone(), columns, rows, plot_rows }
 }
 
 /// `q1` + `DEG` -> `q1_deg`; `AP` + `M/SEC^2` -> `ap_m_per_s2`.

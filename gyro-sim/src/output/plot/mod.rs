@@ -1,0 +1,44 @@
+//! Plots of a run, PNG: in comes a [`Table`] in display units; out go the figures it has data
+//! for: the time series like the paper's Figures 3-5 (`series`), the EJS elevation window
+//! (`elevation`) and the axle tip's trace seen from above (`trace`). Each is written atomically.
+
+mod elevation;
+mod panel;
+mod series;
+mod trace;
+
+use std::sync::Once;
+
+use plotters::prelude::RGBColor;
+use plotters::style::FontStyle;
+
+pub use elevation::write_elevation;
+pub use series::write_plot;
+pub use trace::write_trace;
+
+static FONT: Once = Once::new();
+
+/// DejaVu Sans, embedded (licence in gyro-sim/assets/DejaVuSans-LICENSE.txt).
+fn register_font() {
+    FONT.call_once(|| {
+        let _ = plotters::style::register_font(
+            "sans-serif",
+            FontStyle::Normal,
+            include_bytes!("../../../assets/DejaVuSans.ttf"),
+        );
+    });
+}
+
+const COLORS: [RGBColor; 6] = [
+    RGBColor(31, 119, 180),
+    RGBColor(255, 127, 14),
+    RGBColor(44, 160, 44),
+    RGBColor(214, 39, 40),
+    RGBColor(148, 103, 189),
+    RGBColor(140, 86, 75),
+];
+
+/// A unit as a reader writes it: `M/SEC^2` -> `m/s²`, `DEG` -> `deg`, `RAD/SEC` -> `rad/s`.
+fn pretty_unit(unit: &str) -> String {
+    unit.to_ascii_lowercase().replace("sec", "s").replace("^2", "²").replace("^3", "³").replace('*', "·")
+}

@@ -1,0 +1,79 @@
+//! One panel: in come rows, the series to draw (column, colour) and axis titles; out goes a
+//! chart on a drawing area with its legend in a strip to the right of the data, never over it.
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
+
+use super::COLORS;
+
+/// What one panel shows.
+pub(super) struct Panel<'a> {
+    /// Rows: `t` (or x) first.
+    pub rows: &'a [Vec<f64>],
+    /// Each series: its legend label and the index in a row.
+    pub series: Vec<(String, usize)>,
+    /// The x-axis title.
+    pub x_title: String,
+    /// The y-axis title.
+    pub y_title: String,
+}
+
+/// The range of the series, widened when (nearly) constant and padded by 5 %.
+fn y_range(panel: &Panel<'_>) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for r in panel.rows {
+        for (_, c) in &panel.series {
+            lo = lo.min(r[*c]);
+            hi = hi.max(r[*c]);
+        }
+    }
+    // A (nearly) constant series gets a visible range instead of magnified round-off.
+    let scale = lo.abs().max(hi.abs()).max(1e-300);
+    if hi - lo <= 1e-9 * scale || (hi - lo).is_nan() {
+        let mid = if lo.is_finite() { 0.5 * (lo + hi) } else { 0.0 };
+        let half = if mid == 0.0 { 1.0 } else { 0.05 * mid.abs() };
+        (lo, hi) = (mid - half, mid + half);
+    }
+    let pad = 0.05 * (hi - lo);
+    (lo - pad, hi + pad)
+}
+
+/// Draws `panel` on `area`: the chart on the left, the legend in a strip on the right.
+pub(super) fn draw(area: &DrawingArea<BitMapBackend<'_>, Shift>, panel: &Panel<'_>) -> Result<(), String> {
+    let legend_width = 30 + 9 * panel.series.iter().map(|s| s.0.chars().count()).max().unwrap_or(0) as u32;
+    let (w, _) = area.dim_in_pixel();
+    let (chart_area, legend_area) = area.split_horizontally(w.saturating_sub(legend_width));
+    let x0 = panel.rows.first().map_or(0.0, |r| r[0]);
+    let x1 = panel.rows.last().map_or(1.0, |r| r[0]).max(x0 + 1e-12);
+    let (lo, hi) = y_range(panel);
+    let mut chart = ChartBuilder::on(&chart_area)
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(80)
+        .build_cartesian_2d(x0..x1, lo..hi)
+        .map_err(|e| e.to_string())?;
+    chart
+        .configure_mesh()
+        .x_desc(panel.x_title.as_str())
+        .y_desc(panel.y_title.as_str())
+        .axis_desc_style(("sans-serif", 16))
+        .draw()
+        .map_err(|e| e.to_string())?;
+    for (k, (_, c)) in panel.series.iter().enumerate() {
+        let color = COLORS[k % COLORS.len()];
+        chart
+            .draw_series(LineSeries::new(panel.rows.iter().map(|r| (r[0], r[*c])), color.stroke_width(2)))
+            .map_err(|e| e.to_string())?;
+    }
+    for (k, (label, _)) in panel.series.iter().enumerate() {
+        let color = COLORS[k % COLORS.len()];
+        let y = 30 + 22 * k as i32;
+        legend_area
+            .draw(&PathElement::new(vec![(4, y), (24, y)], color.stroke_width(3)))
+            .map_err(|e| e.to_string())?;
+        legend_area
+            .draw(&Text::new(label.clone(), (28, y - 8), ("sans-serif", 15)))
+            .map_err(|e| e.to_string())?;
+    }
+    Ok(())
+}
