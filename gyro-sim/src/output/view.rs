@@ -1,0 +1,103 @@
+//! A 3-D view of a run: in come a [`Trajectory`] (model units, radians) and a [`ViewSpec`]
+//! naming the columns it reads; out goes one self-contained HTML file (three.js, the data and
+//! the script inline, nothing fetched) that plays the run with a time slider.
+//!
+//! The data embedded are `t` and only the columns the view reads. The page takes parameters
+//! after `?` or `#`: `t=<time>` (shown, paused), `arrows=<label,label>` (the arrows shown),
+//! `play=0|1`, `speed=<factor>`, `cam=<azimuth deg>,<elevation deg>,<distance>` and
+//! `target=<x>,<y>,<z>` (the camera looks at the target from that direction, z up) and
+//! `fov=<deg>` (the vertical field of view, 45 unless given); `ui=0` hides the panels.
+
+mod spec;
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+pub use spec::{ArrowView, BodyView, Orientation, Shape, TraceView, ViewError, ViewSpec};
+
+use super::{write_atomically, WriteError};
+use crate::trajectory::Trajectory;
+
+/// three.js 0.170.0, `build/three.module.min.js` (see `gyro-sim/assets/three/README.md`).
+const THREE_JS: &str = include_str!("../../assets/three/three.module.min.js");
+/// The page with `{{TITLE}}`, `{{THREE}}`, `{{DATA}}` and `{{SCRIPT}}` to fill.
+const PAGE_HTML: &str = include_str!("view/page.html");
+/// The page's script.
+const PAGE_JS: &str = include_str!("view/page.js");
+
+/// The page camera's vertical field of view unless the URL gives one, degrees.
+const FIELD_OF_VIEW_DEG: f64 = 45.0;
+
+/// Writes the view of `trajectory` as one HTML file at `path`, atomically.
+pub fn write_view(trajectory: &Trajectory, view: &ViewSpec, path: &Path) -> Result<(), WriteError> {
+    let html =
+        view_html(trajectory, view).map_err(|e| WriteError::File(format!("{}: {e}", path.display())))?;
+    write_atomically(path, |tmp| std::fs::write(tmp, &html).map_err(|e| format!("{}: {e}", tmp.display())))
+        .map_err(WriteError::File)
+}
+
+/// The page's text.
+fn view_html(trajectory: &Trajectory, view: &ViewSpec) -> Result<String, ViewError> {
+    let data = view_data(trajectory, view)?;
+    // Inside a script element only `</script` (and `<!--`) could end or confuse it; in JSON a
+    // `<` can only stand in a string, where `\u003c` means the same.
+    let data = data.to_string().replace('<', "\\u003c");
+    let title = escape_html(&trajectory.title);
+    Ok(fill(PAGE_HTML, &[("TITLE", &title), ("THREE", THREE_JS), ("DATA", &data), ("SCRIPT", PAGE_JS)]))
+}
+
+/// `{"title", "fov", "t": [..], "columns": {name: [..]}, "view": ViewSpec}`, each column once.
+fn view_data(trajectory: &Trajectory, view: &ViewSpec) -> Result<serde_json::Value, ViewError> {
+    view.check()?;
+    if trajectory.rows.is_empty() {
+        return Err(ViewError::Empty);
+    }
+    let mut columns: BTreeMap<&str, Vec<f64>> = BTreeMap::new();
+    for (user, name) in view.columns() {
+        if columns.contains_key(name) {
+            continue;
+        }
+        let Some(index) = trajectory.columns.iter().position(|c| c.name == name) else {
+            let known: Vec<&str> = trajectory.columns.iter().map(|c| c.name.as_str()).collect();
+            return Err(ViewError::MissingColumn { user, column: name.to_string(), known: known.join(", ") });
+        };
+        columns.insert(name, trajectory.rows.iter().map(|r| r[index + 1]).collect());
+    }
+    let t: Vec<f64> = trajectory.rows.iter().map(|r| r[0]).collect();
+    Ok(
+        serde_json::json!({ "title": trajectory.title, "fov": FIELD_OF_VIEW_DEG, "t": t, "columns": columns, "view": view }),
+    )
+}
+
+/// `template` with each `{{NAME}}` replaced by its value, in one pass (values are not searched).
+fn fill(template: &str, values: &[(&str, &str)]) -> String {
+    let mut out = String::with_capacity(template.len() + values.iter().map(|(_, v)| v.len()).sum::<usize>());
+    let mut rest = template;
+    while let Some(start) = rest.find("{{") {
+        out.push_str(&rest[..start]);
+        let after = &rest[start + 2..];
+        let value = after
+            .find("}}")
+            .and_then(|end| values.iter().find(|(name, _)| *name == &after[..end]).map(|(_, v)| (end, *v)));
+        match value {
+            Some((end, v)) => {
+                out.push_str(v);
+                rest = &after[end + 2..];
+            }
+            None => {
+                out.push_str("{{");
+                rest = after;
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+/// Text safe between HTML tags.
+fn escape_html(text: &str) -> String {
+    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,421 @@
+// The view page's script: in come three.js (inline, as text) and the run (inline JSON: t, the
+// columns the view reads, the view itself); out comes the scene, played in time.
+// Space axes N1, N2, N3 are three's x, y, z, with z up.
+
+const data = JSON.parse(document.getElementById('view-data').textContent);
+const params = readParams();
+const FOV = numbers('fov', 1)?.[0] ?? data.fov; // vertical field of view, degrees
+const DEFAULT_AZIMUTH = 40; // degrees from N1 toward N2
+const DEFAULT_ELEVATION = 20; // degrees above the N1-N2 plane
+
+/** The parameters after `?` and after `#`, the latter winning. */
+function readParams() {
+  const merged = new URLSearchParams(location.search.slice(1));
+  for (const [k, v] of new URLSearchParams(location.hash.slice(1))) merged.set(k, v);
+  return merged;
+}
+
+/** Numbers in a comma list, or null when absent or malformed. */
+function numbers(name, count) {
+  if (!params.has(name)) return null;
+  const v = params.get(name).split(',').map(Number);
+  return v.length === count && v.every(Number.isFinite) ? v : null;
+}
+
+/** Where `t` falls among the rows: the row before it and the fraction toward the next. */
+function rowAt(t) {
+  const ts = data.t;
+  if (t <= ts[0] || ts.length === 1) return { i: 0, f: 0 };
+  if (t >= ts[ts.length - 1]) return { i: ts.length - 1, f: 0 };
+  let lo = 0;
+  let hi = ts.length - 1;
+  while (hi - lo > 1) {
+    const mid = (lo + hi) >> 1;
+    if (ts[mid] <= t) lo = mid;
+    else hi = mid;
+  }
+  return { i: lo, f: (t - ts[lo]) / (ts[hi] - ts[lo]) };
+}
+
+/** A column's value at a row position, interpolated linearly. */
+function valueAt(name, at) {
+  const c = data.columns[name];
+  const a = c[at.i] ?? 0;
+  return at.f === 0 ? a : a + ((c[at.i + 1] ?? a) - a) * at.f;
+}
+
+/** A body's orientation (body to space) at row `i`. */
+function quaternionAtRow(orientation, i) {
+  const q = new THREE.Quaternion();
+  if (orientation.quaternion) {
+    const [e0, e1, e2, e3] = orientation.quaternion.map((n) => data.columns[n][i] ?? 0);
+    q.set(e1, e2, e3, e0);
+  } else if (orientation.dcm) {
+    const c = orientation.dcm.map((n) => data.columns[n][i] ?? 0);
+    const m = new THREE.Matrix4().set(c[0], c[1], c[2], 0, c[3], c[4], c[5], 0, c[6], c[7], c[8], 0, 0, 0, 0, 1);
+    q.setFromRotationMatrix(m);
+  }
+  return q.lengthSq() > 0 ? q.normalize() : q.identity();
+}
+
+/** A body's orientation at a row position: the rows' orientations slerped. */
+function quaternionAt(orientation, at) {
+  const q = quaternionAtRow(orientation, at.i);
+  if (at.f > 0) q.slerp(quaternionAtRow(orientation, at.i + 1), at.f);
+  return q;
+}
+
+/** An arrow's vector (space axes, scaled) at a row position. */
+function arrowAt(arrow, at) {
+  return new THREE.Vector3(...arrow.columns.map((n) => valueAt(n, at))).multiplyScalar(arrow.scale);
+}
+
+/** The geometry of a shape, in body axes about its centre; cylinders and rods along z. */
+function shapeGeometry(shape) {
+  switch (shape.kind) {
+    case 'ellipsoid':
+      return new THREE.SphereGeometry(1, 48, 24).scale(shape.a, shape.b, shape.c);
+    case 'cylinder':
+      return new THREE.CylinderGeometry(shape.radius, shape.radius, shape.length, 48).rotateX(Math.PI / 2);
+    case 'box':
+      return new THREE.BoxGeometry(shape.x, shape.y, shape.z);
+    default: {
+      const r = shape.length * 0.015;
+      return new THREE.CylinderGeometry(r, r, shape.length, 12).rotateX(Math.PI / 2);
+    }
+  }
+}
+
+/** The farthest a shape reaches from its centre. */
+function shapeReach(shape) {
+  switch (shape.kind) {
+    case 'ellipsoid':
+      return Math.max(shape.a, shape.b, shape.c);
+    case 'cylinder':
+      return Math.hypot(shape.radius, shape.length / 2);
+    case 'box':
+      return Math.hypot(shape.x, shape.y, shape.z) / 2;
+    default:
+      return shape.length / 2;
+  }
+}
+
+/** A small mark on a round shape's rim along body x, so that spin shows. */
+function spinMark(shape, colour, opacity) {
+  let rim = 0;
+  let size = 0;
+  if (shape.kind === 'ellipsoid') [rim, size] = [shape.a, Math.min(0.1 * shape.a, 0.6 * shape.c)];
+  if (shape.kind === 'cylinder') [rim, size] = [shape.radius, Math.min(0.1 * shape.radius, 0.3 * shape.length)];
+  if (rim === 0) return null;
+  const mark = new THREE.Mesh(
+    new THREE.SphereGeometry(size, 16, 8),
+    new THREE.MeshStandardMaterial({
+      color: new THREE.Color(colour).multiplyScalar(0.35),
+      roughness: 0.5,
+      transparent: opacity < 1,
+      opacity,
+    }),
+  );
+  mark.position.set(rim, 0, 0);
+  return mark;
+}
+
+/** Every row's index, or about 2000 of them spread evenly for long runs. */
+function sampleRows() {
+  const step = Math.max(1, Math.floor(data.t.length / 2000));
+  const rows = [];
+  for (let i = 0; i < data.t.length; i += step) rows.push(i);
+  if (rows[rows.length - 1] !== data.t.length - 1) rows.push(data.t.length - 1);
+  return rows;
+}
+
+/** The box holding the origin, every body, trace and arrow over the run. */
+function sceneBox() {
+  const box = new THREE.Box3(new THREE.Vector3(), new THREE.Vector3());
+  for (const i of sampleRows()) {
+    const at = { i, f: 0 };
+    for (const b of data.view.bodies) {
+      const centre = new THREE.Vector3(...b.offset).applyQuaternion(quaternionAtRow(b.orientation, i));
+      box.expandByPoint(centre.clone().addScalar(shapeReach(b.shape)));
+      box.expandByPoint(centre.addScalar(-shapeReach(b.shape)));
+    }
+    for (const t of data.view.traces) box.expandByPoint(tracePoint(t, i));
+    for (const a of data.view.arrows) box.expandByPoint(arrowAt(a, at));
+  }
+  return box;
+}
+
+/** A trace's point in space axes at row `i`. */
+function tracePoint(trace, i) {
+  const body = data.view.bodies.find((b) => b.name === trace.body);
+  return new THREE.Vector3(...trace.point).applyQuaternion(quaternionAtRow(body.orientation, i));
+}
+
+/** A text label that always faces the camera, `height` tall. */
+function label(text, colour, height) {
+  const canvas = document.createElement('canvas');
+  const ctx = canvas.getContext('2d');
+  ctx.font = 'bold 48px sans-serif';
+  canvas.width = Math.ceil(ctx.measureText(text).width) + 16;
+  canvas.height = 64;
+  ctx.font = 'bold 48px sans-serif';
+  ctx.fillStyle = colour;
+  ctx.textBaseline = 'middle';
+  ctx.fillText(text, 8, 34);
+  const texture = new THREE.CanvasTexture(canvas);
+  texture.colorSpace = THREE.SRGBColorSpace;
+  const sprite = new THREE.Sprite(new THREE.SpriteMaterial({ map: texture, depthTest: false }));
+  sprite.scale.set((height * canvas.width) / canvas.height, height, 1);
+  sprite.renderOrder = 1;
+  return sprite;
+}
+
+/** The fixed furniture: lights, support, ground grid, labelled axes. */
+function addFurniture(scene, box, size) {
+  scene.add(new THREE.HemisphereLight(0xffffff, 0x888888, 1.6));
+  const sun = new THREE.DirectionalLight(0xffffff, 1.8);
+  sun.position.set(2, 1, 4).multiplyScalar(size);
+  scene.add(sun);
+  const support = new THREE.Mesh(
+    new THREE.SphereGeometry(size * 0.03, 24, 12),
+    new THREE.MeshStandardMaterial({ color: 0x444444 }),
+  );
+  scene.add(support);
+  const grid = new THREE.GridHelper(size * 4, 16, 0x999999, 0xcccccc);
+  grid.rotateX(Math.PI / 2);
+  grid.position.z = Math.min(0, box.min.z) - size * 0.01;
+  scene.add(grid);
+  const axes = [
+    ['N1', 0xb04040, new THREE.Vector3(1, 0, 0)],
+    ['N2', 0x40a040, new THREE.Vector3(0, 1, 0)],
+    ['N3', 0x4040b0, new THREE.Vector3(0, 0, 1)],
+  ];
+  for (const [name, colour, dir] of axes) {
+    const end = dir.clone().multiplyScalar(size * 0.6);
+    const line = new THREE.Line(
+      new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(), end]),
+      new THREE.LineBasicMaterial({ color: colour }),
+    );
+    scene.add(line);
+    const tag = label(name, '#' + new THREE.Color(colour).getHexString(), size * 0.07);
+    tag.position.copy(end.multiplyScalar(1.08));
+    scene.add(tag);
+  }
+}
+
+/** The bodies: a group per body turning about the origin, its shape at the offset. */
+function addBodies(scene) {
+  return data.view.bodies.map((b) => {
+    const group = new THREE.Group();
+    const mesh = new THREE.Mesh(
+      shapeGeometry(b.shape),
+      new THREE.MeshStandardMaterial({
+        color: b.colour,
+        roughness: 0.55,
+        metalness: 0.05,
+        transparent: b.opacity < 1,
+        opacity: b.opacity,
+        depthWrite: b.opacity >= 1,
+      }),
+    );
+    const mark = spinMark(b.shape, b.colour, b.opacity);
+    if (mark) mesh.add(mark);
+    mesh.position.set(...b.offset);
+    group.add(mesh);
+    scene.add(group);
+    return { spec: b, group };
+  });
+}
+
+/** The arrows, each with its tip label and a checkbox showing or hiding both. */
+function addArrows(scene, size) {
+  const shown = params.has('arrows') ? new Set(params.get('arrows').split(',').filter((s) => s)) : null;
+  const panel = document.getElementById('arrows');
+  return data.view.arrows.map((a) => {
+    const helper = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1, a.colour);
+    const tag = label(a.label, a.colour, size * 0.07);
+    const arrow = { spec: a, helper, tag, on: shown === null || shown.has(a.label) };
+    scene.add(helper, tag);
+    const row = document.createElement('label');
+    const box = document.createElement('input');
+    box.type = 'checkbox';
+    box.checked = arrow.on;
+    box.addEventListener('change', () => {
+      arrow.on = box.checked;
+      update();
+    });
+    const swatch = document.createElement('span');
+    swatch.className = 'swatch';
+    swatch.style.background = a.colour;
+    row.append(box, swatch, a.label);
+    panel.append(row);
+    return arrow;
+  });
+}
+
+/** The traces: each point's whole path, drawn up to the current row. */
+function addTraces(scene) {
+  return data.view.traces.map((t) => {
+    const points = data.t.map((_, i) => tracePoint(t, i));
+    const line = new THREE.Line(
+      new THREE.BufferGeometry().setFromPoints(points),
+      new THREE.LineBasicMaterial({ color: t.colour }),
+    );
+    line.frustumCulled = false;
+    scene.add(line);
+    return line;
+  });
+}
+
+/** Sets every moving thing to time `state.t` and renders. */
+function update() {
+  const at = rowAt(state.t);
+  for (const b of bodies) b.group.quaternion.copy(quaternionAt(b.spec.orientation, at));
+  for (const a of arrows) {
+    const v = arrowAt(a.spec, at);
+    const length = v.length();
+    const visible = a.on && length > size * 1e-6;
+    a.helper.visible = visible;
+    a.tag.visible = visible;
+    if (!visible) continue;
+    const head = Math.min(0.25 * length, 0.12 * size);
+    a.helper.setDirection(v.clone().divideScalar(length));
+    a.helper.setLength(length, head, 0.5 * head);
+    a.tag.position.copy(v.multiplyScalar(1 + (0.06 * size) / length));
+  }
+  for (const line of traces) line.geometry.setDrawRange(0, at.i + 1);
+  slider.value = String(state.t);
+  timeText.textContent = 't = ' + state.t.toFixed(3) + ' / ' + data.t[data.t.length - 1].toFixed(3);
+  playButton.textContent = state.playing ? 'Pause' : 'Play';
+  placeCamera();
+  renderer.render(scene, camera);
+}
+
+/** The camera on its sphere about the target, z up. */
+function placeCamera() {
+  const az = THREE.MathUtils.degToRad(orbit.azimuth);
+  const el = THREE.MathUtils.degToRad(orbit.elevation);
+  const dir = new THREE.Vector3(Math.cos(el) * Math.cos(az), Math.cos(el) * Math.sin(az), Math.sin(el));
+  camera.position.copy(orbit.target).addScaledVector(dir, orbit.distance);
+  camera.lookAt(orbit.target);
+}
+
+/** Mouse: drag turns the camera about the target, the wheel zooms, a double click resets. */
+function addMouse(canvas, home) {
+  let drag = null;
+  canvas.addEventListener('pointerdown', (e) => {
+    drag = { x: e.clientX, y: e.clientY };
+    canvas.setPointerCapture(e.pointerId);
+  });
+  canvas.addEventListener('pointerup', () => (drag = null));
+  canvas.addEventListener('pointermove', (e) => {
+    if (!drag) return;
+    orbit.azimuth -= (e.clientX - drag.x) * 0.4;
+    orbit.elevation = Math.max(-89, Math.min(89, orbit.elevation + (e.clientY - drag.y) * 0.4));
+    drag = { x: e.clientX, y: e.clientY };
+    update();
+  });
+  canvas.addEventListener('wheel', (e) => {
+    e.preventDefault();
+    orbit.distance *= Math.exp(e.deltaY * 0.001);
+    update();
+  });
+  canvas.addEventListener('dblclick', () => {
+    Object.assign(orbit, home());
+    update();
+  });
+}
+
+/** Play, pause, the slider and the speed. */
+function addControls() {
+  slider.min = String(data.t[0]);
+  slider.max = String(data.t[data.t.length - 1]);
+  slider.addEventListener('input', () => {
+    state.t = Number(slider.value);
+    update();
+  });
+  playButton.addEventListener('click', () => {
+    state.playing = !state.playing;
+    if (state.playing && state.t >= data.t[data.t.length - 1]) state.t = data.t[0];
+    update();
+  });
+  speedSelect.addEventListener('change', () => (state.speed = Number(speedSelect.value)));
+  const speed = params.get('speed');
+  if (speed && [...speedSelect.options].some((o) => o.value === speed)) speedSelect.value = speed;
+  state.speed = Number(speedSelect.value);
+}
+
+/** Advances the time while playing, looping at the end. */
+function tick(now) {
+  if (state.playing && state.last !== null) {
+    state.t += ((now - state.last) / 1000) * state.speed;
+    if (state.t > data.t[data.t.length - 1]) state.t = data.t[0];
+    update();
+  }
+  state.last = now;
+  requestAnimationFrame(tick);
+}
+
+let scene, camera, renderer, bodies, arrows, traces, size, orbit, state;
+const slider = document.getElementById('slider');
+const timeText = document.getElementById('time');
+const playButton = document.getElementById('play');
+const speedSelect = document.getElementById('speed');
+
+/** Builds the scene from the data and the URL parameters, then starts the clock. */
+function main() {
+  const box = sceneBox();
+  size = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-6);
+  scene = new THREE.Scene();
+  scene.background = new THREE.Color(0xf2f2ee);
+  addFurniture(scene, box, size);
+  bodies = addBodies(scene);
+  arrows = addArrows(scene, size);
+  traces = addTraces(scene);
+  const home = () => ({
+    azimuth: DEFAULT_AZIMUTH,
+    elevation: DEFAULT_ELEVATION,
+    distance: (0.9 * size) / Math.sin(THREE.MathUtils.degToRad(FOV / 2)),
+    target: box.getCenter(new THREE.Vector3()),
+  });
+  orbit = home();
+  const cam = numbers('cam', 3);
+  if (cam) [orbit.azimuth, orbit.elevation, orbit.distance] = cam;
+  const target = numbers('target', 3);
+  if (target) orbit.target.set(...target);
+  camera = new THREE.PerspectiveCamera(FOV, innerWidth / innerHeight, size * 0.01, size * 100);
+  camera.up.set(0, 0, 1);
+  renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  renderer.setPixelRatio(devicePixelRatio);
+  renderer.setSize(innerWidth, innerHeight);
+  document.getElementById('scene').append(renderer.domElement);
+  addMouse(renderer.domElement, home);
+  addEventListener('resize', () => {
+    camera.aspect = innerWidth / innerHeight;
+    camera.updateProjectionMatrix();
+    renderer.setSize(innerWidth, innerHeight);
+    update();
+  });
+  const t = Number(params.get('t'));
+  const fixed = params.has('t') && Number.isFinite(t);
+  if (params.get('ui') === '0') {
+    for (const id of ['title', 'arrows', 'controls']) document.getElementById(id).style.display = 'none';
+  }
+  const playing = params.has('play') ? params.get('play') !== '0' : !fixed;
+  state = { t: fixed ? t : data.t[0], playing, speed: 1, last: null };
+  addControls();
+  update();
+  requestAnimationFrame(tick);
+}
+
+let THREE;
+try {
+  const source = document.getElementById('three-js').textContent;
+  THREE = await import(URL.createObjectURL(new Blob([source], { type: 'text/javascript' })));
+  main();
+} catch (e) {
+  const box = document.getElementById('error');
+  box.textContent = 'The view could not start: ' + e;
+  box.style.display = 'block';
+  throw e;
+}

@@ -1,0 +1,254 @@
+//! What a 3-D view shows: in comes plain data (built in Rust or read from a scene's `[view]`
+//! TOML table); out go the checks against a trajectory's column names. Lengths are in model
+//! units; every body hangs from the origin (the support) and turns about it.
+
+use serde::{Deserialize, Serialize};
+
+/// What the page draws: bodies, arrows and traces, all about the support at the origin.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ViewSpec {
+    /// The rigid bodies drawn.
+    #[serde(default)]
+    pub bodies: Vec<BodyView>,
+    /// Vectors drawn from the origin, each with a checkbox.
+    #[serde(default)]
+    pub arrows: Vec<ArrowView>,
+    /// Points fixed in a body whose paths are drawn.
+    #[serde(default)]
+    pub traces: Vec<TraceView>,
+}
+
+/// One rigid body: a shape turning with the body's orientation about the origin.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodyView {
+    /// Its name (a trace names its body with it).
+    pub name: String,
+    /// Its shape, in body axes.
+    pub shape: Shape,
+    /// Its colour, `#rrggbb`.
+    pub colour: String,
+    /// How its axes turn in space (fixed when not given).
+    #[serde(default)]
+    pub orientation: Orientation,
+    /// Where the shape's centre is along the body's axes from the origin: `[0, 0, d]` for a
+    /// rotor at distance `d` along the body's z axis.
+    #[serde(default)]
+    pub offset: [f64; 3],
+    /// 1 opaque (the default) down to 0 unseen: below 1, arrows inside the body show through.
+    #[serde(default = "one")]
+    pub opacity: f64,
+}
+
+/// A body's shape in its own axes; cylinders and rods lie along the body's z axis.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
+pub enum Shape {
+    /// An ellipsoid with semi-axes `a`, `b`, `c` along body x, y, z.
+    Ellipsoid {
+        /// Semi-axis along x.
+        a: f64,
+        /// Semi-axis along y.
+        b: f64,
+        /// Semi-axis along z.
+        c: f64,
+    },
+    /// A cylinder about the body's z axis.
+    Cylinder {
+        /// Its radius.
+        radius: f64,
+        /// Its whole length along z.
+        length: f64,
+    },
+    /// A box with whole edge lengths along body x, y, z.
+    Box {
+        /// Edge along x.
+        x: f64,
+        /// Edge along y.
+        y: f64,
+        /// Edge along z.
+        z: f64,
+    },
+    /// A thin rod along the body's z axis, centred on the offset.
+    Rod {
+        /// Its length.
+        length: f64,
+    },
+}
+
+/// Which columns give a body's orientation, body axes to space axes.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Orientation {
+    /// The body does not turn: its axes are the space axes.
+    #[default]
+    Fixed,
+    /// A unit quaternion, scalar first, body to space (`Q_E0, Q_E1, Q_E2, Q_E3`).
+    Quaternion([String; 4]),
+    /// The nine direction cosines `N_i . B_j`, row by row (`C_11, C_12, .., C_33`).
+    Dcm([String; 9]),
+}
+
+impl Orientation {
+    /// The column names it reads (none when fixed).
+    pub fn columns(&self) -> &[String] {
+        match self {
+            Orientation::Fixed => &[],
+            Orientation::Quaternion(c) => c,
+            Orientation::Dcm(c) => c,
+        }
+    }
+}
+
+/// A vector in space axes drawn as an arrow from the origin.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ArrowView {
+    /// Its label, beside its checkbox and at its tip (`L`).
+    pub label: String,
+    /// Its colour, `#rrggbb`.
+    pub colour: String,
+    /// Its three components in space axes (`L_N1, L_N2, L_N3`).
+    pub columns: [String; 3],
+    /// Length drawn per unit of the vector.
+    #[serde(default = "one")]
+    pub scale: f64,
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+/// A point fixed in a body whose path in space is drawn up to the current time.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TraceView {
+    /// The body's name.
+    pub body: String,
+    /// The point in body axes from the origin (the axle tip: `[0, 0, length]`).
+    pub point: [f64; 3],
+    /// Its colour, `#rrggbb`.
+    pub colour: String,
+}
+
+/// Why a view cannot be drawn from a trajectory.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ViewError {
+    /// A column the view reads is not in the trajectory.
+    #[error("view: {user} reads column `{column}`, which the run does not have (it has: {known})")]
+    MissingColumn {
+        /// What reads it (`body rotor`).
+        user: String,
+        /// The column asked for.
+        column: String,
+        /// The trajectory's columns, comma separated.
+        known: String,
+    },
+    /// A trace names a body the view does not have.
+    #[error("view: trace reads body `{body}`, which the view does not have (it has: {known})")]
+    MissingBody {
+        /// The body asked for.
+        body: String,
+        /// The view's bodies, comma separated.
+        known: String,
+    },
+    /// A colour is not `#rrggbb`.
+    #[error("view: {user} has colour `{colour}`; write it as #rrggbb")]
+    Colour {
+        /// Whose colour.
+        user: String,
+        /// The colour given.
+        colour: String,
+    },
+    /// A size, offset or scale is not a finite number (or a size is not positive).
+    #[error("view: {user}: {what}")]
+    Number {
+        /// Whose number.
+        user: String,
+        /// What is wrong.
+        what: String,
+    },
+    /// The trajectory has no rows.
+    #[error("view: the run has no rows to show")]
+    Empty,
+}
+
+impl ViewSpec {
+    /// Checks colours, numbers and body names (columns are checked against a trajectory).
+    pub fn check(&self) -> Result<(), ViewError> {
+        for b in &self.bodies {
+            let user = format!("body {}", b.name);
+            check_colour(&user, &b.colour)?;
+            check_finite(&user, "offset", &b.offset)?;
+            check_shape(&user, &b.shape)?;
+            if !(0.0..=1.0).contains(&b.opacity) {
+                return Err(ViewError::Number {
+                    user,
+                    what: format!("opacity {} is not in 0..1", b.opacity),
+                });
+            }
+        }
+        for a in &self.arrows {
+            let user = format!("arrow {}", a.label);
+            check_colour(&user, &a.colour)?;
+            check_finite(&user, "scale", &[a.scale])?;
+        }
+        for t in &self.traces {
+            let user = format!("trace of {}", t.body);
+            check_colour(&user, &t.colour)?;
+            check_finite(&user, "point", &t.point)?;
+            if !self.bodies.iter().any(|b| b.name == t.body) {
+                let known: Vec<&str> = self.bodies.iter().map(|b| b.name.as_str()).collect();
+                return Err(ViewError::MissingBody { body: t.body.clone(), known: known.join(", ") });
+            }
+        }
+        Ok(())
+    }
+
+    /// Every column the view reads, each with what reads it, in the order the view gives them.
+    pub fn columns(&self) -> Vec<(String, &str)> {
+        let bodies = self.bodies.iter().flat_map(|b| {
+            b.orientation.columns().iter().map(move |c| (format!("body {}", b.name), c.as_str()))
+        });
+        let arrows = self
+            .arrows
+            .iter()
+            .flat_map(|a| a.columns.iter().map(move |c| (format!("arrow {}", a.label), c.as_str())));
+        bodies.chain(arrows).collect()
+    }
+}
+
+fn check_colour(user: &str, colour: &str) -> Result<(), ViewError> {
+    let hex = colour.strip_prefix('#').unwrap_or("");
+    if hex.len() == 6 && hex.chars().all(|c| c.is_ascii_hexdigit()) {
+        Ok(())
+    } else {
+        Err(ViewError::Colour { user: user.to_string(), colour: colour.to_string() })
+    }
+}
+
+fn check_finite(user: &str, what: &str, values: &[f64]) -> Result<(), ViewError> {
+    if values.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(ViewError::Number { user: user.to_string(), what: format!("{what} {values:?} is not finite") })
+    }
+}
+
+fn check_shape(user: &str, shape: &Shape) -> Result<(), ViewError> {
+    let sizes: Vec<f64> = match *shape {
+        Shape::Ellipsoid { a, b, c } => vec![a, b, c],
+        Shape::Cylinder { radius, length } => vec![radius, length],
+        Shape::Box { x, y, z } => vec![x, y, z],
+        Shape::Rod { length } => vec![length],
+    };
+    if sizes.iter().all(|s| s.is_finite() && *s > 0.0) {
+        Ok(())
+    } else {
+        Err(ViewError::Number {
+            user: user.to_string(),
+            what: format!("shape sizes {sizes:?} must be positive"),
+        })
+    }
+}
