@@ -1,7 +1,12 @@
-//! The integrators: observed order by step halving, tolerance proportionality, and errors for
-//! a solution that blows up.
+//! The integrators: observed order by step halving, tolerance proportionality, errors for a
+//! solution that blows up, and the stepper used step by step (stop times, interpolation, early
+//! stops, the method table).
 
-use gyro_sim::ode::{integrate, tableau, Method, OdeError, System, Tolerances};
+use std::ops::ControlFlow;
+
+use gyro_sim::ode::{
+    by_name, integrate, tableau, ErkStepper, Method, OdeError, StopReason, System, Tolerances,
+};
 
 /// y1' = y2, y2' = -y1: y = (sin t, cos t).
 struct Oscillator;
@@ -20,7 +25,7 @@ fn error_at_one(method: Method) -> f64 {
     let mut last = [0.0; 2];
     integrate(&Oscillator, 0.0, &[0.0, 1.0], &[1.0], method, |_, y| {
         last.copy_from_slice(y);
-        Ok(())
+        ControlFlow::Continue(())
     })
     .unwrap();
     ((last[0] - 1f64.sin()).powi(2) + (last[1] - 1f64.cos()).powi(2)).sqrt()
@@ -82,7 +87,7 @@ fn blow_up_is_an_error_not_a_hang() {
         &[1.0],
         &[2.0],
         Method::Adaptive(&tableau::DOPRI5, Tolerances { rtol: 1e-8, atol: 1e-8 }),
-        |_, _| Ok(()),
+        |_, _| ControlFlow::Continue(()),
     );
     match r {
         Err(OdeError::StepSizeUnderflow { time, .. }) | Err(OdeError::NonFinite { time, .. }) => {
@@ -90,7 +95,9 @@ fn blow_up_is_an_error_not_a_hang() {
         }
         other => panic!("expected an error near t = 1, got {other:?}"),
     }
-    let r = integrate(&BlowUp, 0.0, &[1.0], &[2.0], Method::Fixed(&tableau::RK4, 0.01), |_, _| Ok(()));
+    let r = integrate(&BlowUp, 0.0, &[1.0], &[2.0], Method::Fixed(&tableau::RK4, 0.01), |_, _| {
+        ControlFlow::Continue(())
+    });
     assert!(matches!(r, Err(OdeError::NonFinite { .. })), "{r:?}");
 }
 
@@ -104,7 +111,7 @@ fn dense_output_is_accurate_between_steps_and_saves_steps() {
     let stats =
         integrate(&Oscillator, 0.0, &[0.0, 1.0], &times, Method::Adaptive(&tableau::DOPRI5, tol), |t, y| {
             worst = worst.max((y[0] - t.sin()).abs()).max((y[1] - t.cos()).abs());
-            Ok(())
+            ControlFlow::Continue(())
         })
         .unwrap();
     assert!(worst < 1e-7, "largest error {worst:e}");
@@ -114,7 +121,7 @@ fn dense_output_is_accurate_between_steps_and_saves_steps() {
     let stats8 =
         integrate(&Oscillator, 0.0, &[0.0, 1.0], &times, Method::Adaptive(&tableau::DOP853, tol), |t, y| {
             worst8 = worst8.max((y[0] - t.sin()).abs()).max((y[1] - t.cos()).abs());
-            Ok(())
+            ControlFlow::Continue(())
         })
         .unwrap();
     assert!(worst8 < 1e-8, "dop853 largest error {worst8:e}");
@@ -143,7 +150,7 @@ fn dop853_dense_output_converges_with_its_order() {
         let m = Method::Adaptive(&tableau::DOP853, Tolerances { rtol: tol, atol: tol });
         let stats = integrate(&Gaussian, 0.0, &[1.0], &times, m, |t, y| {
             worst = worst.max((y[0] - (-t * t).exp()).abs());
-            Ok(())
+            ControlFlow::Continue(())
         })
         .unwrap();
         (worst, stats.steps)
@@ -153,4 +160,171 @@ fn dop853_dense_output_converges_with_its_order() {
     assert!(s6 < 100 && s10 < 200, "steps {s6}, {s10}");
     assert!(e6 < 1e-5, "tol 1e-6: error {e6:e}");
     assert!(e10 < 2e-9 && e10 < e6 * 1e-2, "tol 1e-10: error {e10:e} (tol 1e-6: {e6:e})");
+}
+
+/// Output times through `integrate`: the values and the cost, stopping after `limit` outputs.
+fn through_integrate(method: Method, times: &[f64], limit: usize) -> (Vec<[f64; 2]>, gyro_sim::ode::Stats) {
+    let mut rows = Vec::new();
+    let stats = integrate(&Oscillator, 0.0, &[0.0, 1.0], times, method, |_, y| {
+        rows.push([y[0], y[1]]);
+        if rows.len() == limit {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
+        }
+    })
+    .unwrap();
+    (rows, stats)
+}
+
+/// The same by hand: step to the last time, interpolating the times inside each step, until
+/// `limit` outputs.
+fn through_stepper(method: Method, times: &[f64], limit: usize) -> (Vec<[f64; 2]>, gyro_sim::ode::Stats) {
+    let mut stepper = ErkStepper::new(&Oscillator, 0.0, &[0.0, 1.0], method).unwrap();
+    stepper.set_stop_time(*times.last().unwrap());
+    let mut rows = Vec::new();
+    let mut next = times.iter().peekable();
+    let mut y = [0.0; 2];
+    while rows.len() < limit {
+        while let Some(&&t) = next.peek() {
+            if t > stepper.t() || rows.len() == limit {
+                break;
+            }
+            stepper.interpolate(t, &mut y).unwrap();
+            rows.push(y);
+            next.next();
+        }
+        if rows.len() == limit
+            || stepper.step().unwrap() == StopReason::StopTimeReached && next.peek().is_none()
+        {
+            break;
+        }
+    }
+    (rows, stepper.stats())
+}
+
+#[test]
+fn the_stepper_by_hand_gives_integrate_s_numbers() {
+    let times: Vec<f64> = (0..=500).map(|i| f64::from(i) * 0.02).collect();
+    let tol = Tolerances { rtol: 1e-9, atol: 1e-9 };
+    for tab in [&tableau::DOPRI5, &tableau::DOP853] {
+        let m = Method::Adaptive(tab, tol);
+        let (by_integrate, stats) = through_integrate(m, &times, usize::MAX);
+        let (by_hand, hand_stats) = through_stepper(m, &times, usize::MAX);
+        assert_eq!(by_integrate.len(), times.len());
+        assert_eq!(stats, hand_stats, "{}", tab.name);
+        let bits = |rows: &[[f64; 2]]| rows.iter().flatten().map(|v| v.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&by_integrate), bits(&by_hand), "{}", tab.name);
+        // Most outputs fall inside steps: the interpolant did the work.
+        assert!(stats.steps < times.len(), "{}: {} steps", tab.name, stats.steps);
+    }
+}
+
+#[test]
+fn the_stepper_lands_on_its_stop_time() {
+    // Fixed steps: 0.3 shortened evenly to four steps of 0.25; the last ends on 1 exactly.
+    let mut stepper =
+        ErkStepper::new(&Oscillator, 0.0, &[0.0, 1.0], Method::Fixed(&tableau::RK4, 0.3)).unwrap();
+    stepper.set_stop_time(1.0);
+    let mut reasons = Vec::new();
+    let mut times = Vec::new();
+    for _ in 0..4 {
+        reasons.push(stepper.step().unwrap());
+        times.push(stepper.t());
+    }
+    assert_eq!(reasons[..3], [StopReason::StepTaken; 3]);
+    assert_eq!(reasons[3], StopReason::StopTimeReached);
+    assert_eq!(times, [0.25, 0.5, 0.75, 1.0]);
+    // At the stop time no step is taken; a later stop time goes on from there.
+    assert_eq!(stepper.step().unwrap(), StopReason::StopTimeReached);
+    assert_eq!(stepper.stats().steps, 4);
+    stepper.set_stop_time(1.5);
+    while stepper.step().unwrap() == StopReason::StepTaken {}
+    assert_eq!((stepper.t(), stepper.stats().steps), (1.5, 6));
+    // Adaptive: many steps, the last on the stop time exactly.
+    let tol = Tolerances { rtol: 1e-10, atol: 1e-10 };
+    let mut stepper =
+        ErkStepper::new(&Oscillator, 0.0, &[0.0, 1.0], Method::Adaptive(&tableau::DOP853, tol)).unwrap();
+    stepper.set_stop_time(std::f64::consts::PI);
+    let mut steps = 0;
+    while stepper.step().unwrap() == StopReason::StepTaken {
+        steps += 1;
+        assert!(stepper.t() < std::f64::consts::PI);
+    }
+    assert_eq!(stepper.t(), std::f64::consts::PI);
+    assert!(steps > 5 && stepper.y()[0].abs() < 1e-9, "{steps} steps, y {:?}", stepper.y());
+}
+
+#[test]
+fn breaking_early_is_ok_with_the_cost_so_far() {
+    let times: Vec<f64> = (0..=50).map(|i| f64::from(i) * 0.2).collect();
+    let m = Method::Adaptive(&tableau::DOP853, Tolerances { rtol: 1e-9, atol: 1e-9 });
+    let (all, full) = through_integrate(m, &times, usize::MAX);
+    let (some, partial) = through_integrate(m, &times, 10);
+    assert_eq!(some.len(), 10);
+    assert_eq!(some[..], all[..10]);
+    assert!(0 < partial.steps && partial.steps < full.steps, "{partial:?} vs {full:?}");
+    assert_eq!(partial, through_stepper(m, &times, 10).1);
+    // Landing on every output time (fixed steps) stops as early.
+    let (rows, stats) = through_integrate(Method::Fixed(&tableau::RK4, 0.05), &times, 3);
+    assert_eq!((rows.len(), stats.steps), (3, 8));
+}
+
+#[test]
+fn unknown_method_names_are_none() {
+    assert!(by_name("euler").is_none());
+    assert!(by_name("").is_none());
+    for (name, adaptive, order) in [("dop853", true, 8), ("dopri5", true, 5), ("rk4", false, 4)] {
+        let info = by_name(name).unwrap();
+        assert_eq!((info.name(), info.adaptive, info.order()), (name, adaptive, order));
+    }
+}
+
+#[test]
+fn interpolation_outside_the_last_step_is_an_error() {
+    let tol = Tolerances { rtol: 1e-8, atol: 1e-8 };
+    let mut stepper =
+        ErkStepper::new(&Oscillator, 0.0, &[0.0, 1.0], Method::Adaptive(&tableau::DOPRI5, tol)).unwrap();
+    let mut y = [0.0; 2];
+    // Before the first step only t0 is known.
+    assert!(matches!(stepper.interpolate(0.1, &mut y), Err(OdeError::OutsideStep { .. })));
+    stepper.interpolate(0.0, &mut y).unwrap();
+    assert_eq!(y, [0.0, 1.0]);
+    stepper.step().unwrap();
+    stepper.step().unwrap();
+    let (a, b) = (stepper.step_start(), stepper.t());
+    assert!(0.0 < a && a < b);
+    for t in [0.0, a - 1e-9, b + 1e-9, f64::NAN] {
+        assert!(matches!(stepper.interpolate(t, &mut y), Err(OdeError::OutsideStep { .. })), "t = {t}");
+    }
+    stepper.interpolate(0.5 * (a + b), &mut y).unwrap();
+    let t = 0.5 * (a + b);
+    assert!((y[0] - t.sin()).abs() < 1e-7 && (y[1] - t.cos()).abs() < 1e-7);
+    assert!(matches!(stepper.interpolate(t, &mut [0.0; 3]), Err(OdeError::DimensionMismatch { .. })));
+    // Without a continuous extension only the ends of a step are known.
+    let mut rk4 = ErkStepper::new(&Oscillator, 0.0, &[0.0, 1.0], Method::Fixed(&tableau::RK4, 0.1)).unwrap();
+    rk4.step().unwrap();
+    assert!(matches!(rk4.interpolate(0.05, &mut y), Err(OdeError::NoDenseOutput { method: "rk4" })));
+    rk4.interpolate(0.1, &mut y).unwrap();
+    assert_eq!(y, rk4.y());
+}
+
+#[test]
+fn steppers_check_dimensions_and_the_start() {
+    let m = Method::Fixed(&tableau::RK4, 0.1);
+    let wrong = ErkStepper::<_, 3>::new_sized(&Oscillator, 0.0, &[0.0, 1.0], m);
+    assert!(matches!(wrong, Err(OdeError::DimensionMismatch { expected: 3, found: 2 })));
+    assert!(matches!(ErkStepper::new(&Oscillator, 0.0, &[0.0], m), Err(OdeError::DimensionMismatch { .. })));
+    assert!(matches!(
+        ErkStepper::new(&Oscillator, 0.0, &[f64::NAN, 1.0], m),
+        Err(OdeError::NonFinite { .. })
+    ));
+    // A compile-time dimension gives the same numbers as any.
+    let mut sized = ErkStepper::<_, 2>::new_sized(&Oscillator, 0.0, &[0.0, 1.0], m).unwrap();
+    let mut any = ErkStepper::new(&Oscillator, 0.0, &[0.0, 1.0], m).unwrap();
+    for _ in 0..10 {
+        sized.step().unwrap();
+        any.step().unwrap();
+    }
+    assert_eq!(sized.y(), any.y());
 }

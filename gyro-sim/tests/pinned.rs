@@ -82,7 +82,7 @@ fn integrator_statistics_are_pinned() {
                 let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
                 let s = integrate(sys, 0.0, y0, &times, m, |_, y| {
                     bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
-                    Ok(())
+                    std::ops::ControlFlow::Continue(())
                 })
                 .unwrap();
                 lines.push(format!(
@@ -98,7 +98,7 @@ fn integrator_statistics_are_pinned() {
         let mut bits = Vec::new();
         let s = integrate(sys, 0.0, y0, &times, Method::Fixed(&tableau::RK4, 0.03), |_, y| {
             bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
-            Ok(())
+            std::ops::ControlFlow::Continue(())
         })
         .unwrap();
         lines.push(format!("{name} rk4 0.03: {} steps, fnv1a {:016x}", s.steps, fnv1a(&bits)));

@@ -1,10 +1,25 @@
-//! Ordinary differential equations: the [`System`] trait, Butcher tableaux as data, and explicit
-//! Runge-Kutta integration with error control.
+//! Ordinary differential equations. In: a [`System`] `y' = f(t, y)`, a start `(t0, y0)` and a
+//! [`Method`] (a Butcher tableau from [`tableau`], found by name with [`by_name`]). Out: states
+//! step by step from an [`ErkStepper`], or at output times from [`integrate`], with the cost in
+//! [`Stats`] or the reason in [`OdeError`].
+//!
+//! Files: `tableau` the coefficients as data; `methods` the table of methods by name; `stages`
+//! one step's stages and error estimate (`stages/unrolled` the compile-time-unrolled steps);
+//! `control` step sizes; `dense` the continuous extensions' one evaluation routine; `stepper`
+//! the stepper; `integrate` output times on top of it.
 
-mod erk;
+mod control;
+mod dense;
+mod integrate;
+mod methods;
+mod stages;
+mod stepper;
 pub mod tableau;
 
-pub use erk::{integrate, Method, Stats, Tolerances};
+pub use dense::{DenseOutput, DenseRounding};
+pub use integrate::integrate;
+pub use methods::{by_name, default_method, methods_help, Method, MethodInfo, Tolerances, METHODS};
+pub use stepper::{ErkStepper, Stats, StopReason};
 use thiserror::Error;
 
 /// A system `y' = f(t, y)` of fixed dimension; integrators only call `rhs`.
@@ -15,7 +30,7 @@ pub trait System {
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]);
 }
 
-/// Why an integration stopped early.
+/// Why an integration or a stepper's request failed.
 #[derive(Clone, Debug, PartialEq, Error)]
 pub enum OdeError {
     /// A state became NaN or infinite.
@@ -44,7 +59,28 @@ pub enum OdeError {
         /// The limit.
         max: usize,
     },
-    /// The output callback asked to stop with an error.
-    #[error("{0}")]
-    Output(String),
+    /// A value strictly inside a step was asked of a method without a continuous extension.
+    #[error("{method} has no dense output: only the ends of a step are known")]
+    NoDenseOutput {
+        /// The tableau's name.
+        method: &'static str,
+    },
+    /// A value was asked outside the last step.
+    #[error("t = {t} is outside the last step [{start}, {end}]")]
+    OutsideStep {
+        /// The time asked.
+        t: f64,
+        /// Where the last step began.
+        start: f64,
+        /// Where it ended.
+        end: f64,
+    },
+    /// A slice's length is not the system's dimension (or the stepper's compile-time one).
+    #[error("expected {expected} values, got {found}")]
+    DimensionMismatch {
+        /// The dimension.
+        expected: usize,
+        /// The length given.
+        found: usize,
+    },
 }

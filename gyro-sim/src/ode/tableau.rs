@@ -1,4 +1,7 @@
-//! Butcher tableaux as data, each citing its source.
+//! Butcher tableaux as data, each citing its source. In: nothing; out: the coefficients of each
+//! method (stages, weights, error weights, continuous extension) and its step-size control.
+
+use super::dense::{DenseOutput, DenseRounding};
 
 /// An explicit Runge-Kutta method: `c`, the strictly lower `a`, weights `b`, and for embedded
 /// pairs the error weights `e = b - b_hat`.
@@ -19,7 +22,7 @@ pub struct Tableau {
     /// DOP853's third-order error weights, combined with `e` as in Hairer's code.
     pub e3: Option<&'static [f64]>,
     /// The continuous extension used between steps; without one, steps land on output times.
-    pub dense: Option<Dense>,
+    pub dense: Option<DenseOutput>,
     /// The last stage is `f(t + h, y_new)`, reusable as the next step's first.
     pub fsal: bool,
     /// Step-size control parameters (for embedded pairs).
@@ -68,23 +71,6 @@ pub struct StepControl {
 /// Hairer's defaults for DOPRI5 (Solving ODEs I, section IV.2; dopri5.f: beta 0.04, 0.2..10).
 const DOPRI5_CONTROL: StepControl = StepControl { beta: 0.04, min_factor: 0.2, max_factor: 10.0 };
 
-/// A continuous extension (dense output) of an embedded pair.
-#[derive(Debug)]
-pub enum Dense {
-    /// Shampine's quartic extension of Dormand-Prince 5(4): the weights `d` of Hairer's `contd5`.
-    Quartic(&'static [f64]),
-    /// The seventh-degree extension of DOP853: three extra stages (`c`, rows of `a` over all
-    /// earlier stages including `f(t + h, y_new)`) and the four rows `d` of Hairer's `contd8`.
-    Septic {
-        /// Nodes of the extra stages.
-        c: &'static [f64],
-        /// Rows of `a` for the extra stages.
-        a: &'static [&'static [f64]],
-        /// Rows of `d`, over all 16 stages.
-        d: &'static [&'static [f64]],
-    },
-}
-
 /// Dormand and Prince's 5(4) pair.
 pub static DOPRI5: Tableau = Tableau {
     name: "dopri5",
@@ -110,15 +96,21 @@ pub static DOPRI5: Tableau = Tableau {
         -1.0 / 40.0,
     ]),
     e3: None,
-    dense: Some(Dense::Quartic(&[
-        -12715105075.0 / 11282082432.0,
-        0.0,
-        87487479700.0 / 32700410799.0,
-        -10690763975.0 / 1880347072.0,
-        701980252875.0 / 199316789632.0,
-        -1453857185.0 / 822651844.0,
-        69997945.0 / 29380423.0,
-    ])),
+    // Shampine's quartic extension: the weights `d` of Hairer's `contd5`.
+    dense: Some(DenseOutput {
+        c: &[],
+        a: &[],
+        d: &[&[
+            -12715105075.0 / 11282082432.0,
+            0.0,
+            87487479700.0 / 32700410799.0,
+            -10690763975.0 / 1880347072.0,
+            701980252875.0 / 199316789632.0,
+            -1453857185.0 / 822651844.0,
+            69997945.0 / 29380423.0,
+        ]],
+        rounding: DenseRounding::SumTimesStep,
+    }),
     fsal: true,
     control: DOPRI5_CONTROL,
     source: "J. R. Dormand and P. J. Prince, A family of embedded Runge-Kutta formulae, J. Comput. Appl. Math. 6 (1980) 19-26; Hairer, Norsett, Wanner, Solving ODEs I, Table II.5.2; dense output of L. F. Shampine (1986) as in Hairer's DOPRI5 (contd5)",
@@ -171,10 +163,12 @@ pub static DOP853: Tableau = Tableau {
     source: "E. Hairer, S. P. Norsett, G. Wanner, Solving Ordinary Differential Equations I, 2nd ed., section II.10 and the DOP853 code (coefficients of J. R. Dormand and P. J. Prince, 1980, as published with it)",
 };
 
-/// DOP853's dense output: the extra stages and `d` rows of Hairer's DOP853 code (`contd8`), as
-/// published with it and tabulated in SciPy's `dop853_coefficients.py` (digits as published).
+/// DOP853's seventh-degree dense output: three extra stages (`c`, rows of `a` over all earlier
+/// stages including `f(t + h, y_new)`) and the four rows `d` over all 16 stages of Hairer's DOP853
+/// code (`contd8`), as published with it and tabulated in SciPy's `dop853_coefficients.py`
+/// (digits as published).
 #[allow(clippy::excessive_precision)]
-const DOP853_DENSE: Dense = Dense::Septic {
+const DOP853_DENSE: DenseOutput = DenseOutput {
     c: &[0.1, 0.2, 0.777777777777777777777777777778],
     a: &[
         &[
@@ -300,4 +294,5 @@ const DOP853_DENSE: Dense = Dense::Septic {
             -0.14972683625798562581422125276e3,
         ],
     ],
+    rounding: DenseRounding::WeightsTimesStep,
 };

@@ -1,7 +1,8 @@
-//! Steps of the built-in tableaux with every stage loop unrolled at compile time: the
-//! coefficients become constants, zero coefficients vanish, and no loop or branch is left in a
-//! step but the component loops over the compile-time dimension `N`. The arithmetic and its
-//! order are those of the general step, so both give the same numbers.
+//! Steps of the built-in tableaux with every stage loop unrolled at compile time. In: a row of
+//! [`METHODS`] (found by the tableau's address) and a compile-time dimension `N`; out: the same
+//! step and error estimate as the general code, with the coefficients as constants, zero
+//! coefficients gone, and no loop or branch left but the component loops over `N`. The
+//! arithmetic and its order are those of the general step, so both give the same numbers.
 // Stage arithmetic walks one component index over several arrays at once.
 #![allow(clippy::needless_range_loop)]
 // `seq!` writes `0 * N` and `(0 + 1) * N` for the first stage.
@@ -10,32 +11,25 @@
 use seq_macro::seq;
 
 use super::{Tolerances, Work};
-use crate::ode::tableau::{Tableau, DOP853, DOPRI5, RK4};
+use crate::ode::methods::METHODS;
+use crate::ode::tableau::Tableau;
 use crate::ode::System;
 
-/// A tableau known at compile time.
-trait FixedTableau {
-    const TAB: &'static Tableau;
-}
-
-struct Dop853;
-struct Dopri5;
-struct Rk4;
-
-impl FixedTableau for Dop853 {
-    const TAB: &'static Tableau = &DOP853;
-}
-impl FixedTableau for Dopri5 {
-    const TAB: &'static Tableau = &DOPRI5;
-}
-impl FixedTableau for Rk4 {
-    const TAB: &'static Tableau = &RK4;
-}
-
-/// The most stages an unrolled step has (the `seq!` bounds below).
+/// The most stages an unrolled step has (the `seq!` bounds of the stage loops below).
 const MAX_STAGES: usize = 13;
-const _: () =
-    assert!(DOP853.c.len() <= MAX_STAGES && DOPRI5.c.len() <= MAX_STAGES && RK4.c.len() <= MAX_STAGES);
+
+/// Row `M` of [`METHODS`] as a compile-time tableau; None past the table's end (rows from
+/// 8 on, the `seq!` bound of the row loops) or for more than [`MAX_STAGES`] stages: those
+/// take the general step.
+struct Row<const M: usize>;
+
+impl<const M: usize> Row<M> {
+    const TAB: Option<&'static Tableau> = if M < METHODS.len() && METHODS[M].tableau.c.len() <= MAX_STAGES {
+        Some(METHODS[M].tableau)
+    } else {
+        None
+    };
+}
 
 impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
     /// One step like [`Work::step`] when the dimension is fixed and the tableau built in;
@@ -45,16 +39,15 @@ impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
         if N == 0 {
             return false;
         }
-        if std::ptr::eq(self.tab, Dop853::TAB) {
-            self.step_fixed::<Dop853>(t, y, h);
-        } else if std::ptr::eq(self.tab, Dopri5::TAB) {
-            self.step_fixed::<Dopri5>(t, y, h);
-        } else if std::ptr::eq(self.tab, Rk4::TAB) {
-            self.step_fixed::<Rk4>(t, y, h);
-        } else {
-            return false;
-        }
-        true
+        seq!(M in 0..8 {
+            if let Some(tab) = Row::<M>::TAB {
+                if std::ptr::eq(self.tab, tab) {
+                    self.step_fixed::<M>(t, y, h);
+                    return true;
+                }
+            }
+        });
+        false
     }
 
     /// The error estimate like [`Work::error`] when the step was unrolled; None otherwise.
@@ -63,18 +56,19 @@ impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
         if N == 0 {
             return None;
         }
-        if std::ptr::eq(self.tab, Dop853::TAB) {
-            Some(self.error_fixed::<Dop853>(y, h, tol))
-        } else if std::ptr::eq(self.tab, Dopri5::TAB) {
-            Some(self.error_fixed::<Dopri5>(y, h, tol))
-        } else {
-            None
-        }
+        seq!(M in 0..8 {
+            if let Some(tab) = Row::<M>::TAB {
+                if tab.e.is_some() && std::ptr::eq(self.tab, tab) {
+                    return Some(self.error_fixed::<M>(y, h, tol));
+                }
+            }
+        });
+        None
     }
 
     #[inline(always)]
-    fn step_fixed<T: FixedTableau>(&mut self, t: f64, y: &[f64], h: f64) {
-        let tab = T::TAB;
+    fn step_fixed<const M: usize>(&mut self, t: f64, y: &[f64], h: f64) {
+        let Some(tab) = Row::<M>::TAB else { return };
         let stages = tab.stages_before_error();
         let y = &y[..N];
         seq!(I in 1..13 {
@@ -116,10 +110,9 @@ impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
         acc
     }
 
-    /// `sum_j w_j k_j` over the stages of `T`, `w` one of its weight rows.
+    /// `sum_j w_j k_j` over the `s` stages, `w` a compile-time weight row (at most 13 stages).
     #[inline(always)]
-    fn fixed_sum<T: FixedTableau>(&self, w: &[f64]) -> [f64; N] {
-        let s = T::TAB.c.len();
+    fn fixed_sum(&self, s: usize, w: &[f64]) -> [f64; N] {
         let mut acc = [0.0f64; N];
         seq!(J in 0..13 {
             if J < s && w[J] != 0.0 {
@@ -133,12 +126,15 @@ impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
     }
 
     #[inline(always)]
-    fn error_fixed<T: FixedTableau>(&self, y: &[f64], h: f64, tol: Tolerances) -> f64 {
-        let tab = T::TAB;
-        let e5 = self.fixed_sum::<T>(tab.e.unwrap_or(&[]));
+    fn error_fixed<const M: usize>(&self, y: &[f64], h: f64, tol: Tolerances) -> f64 {
+        // Only rows with error weights come here (see `error_unrolled`).
+        let Some(tab) = Row::<M>::TAB else { return f64::NAN };
+        let Some(e) = tab.e else { return f64::NAN };
+        let s = tab.c.len();
+        let e5 = self.fixed_sum(s, e);
         match tab.e3 {
             Some(w3) => {
-                let e3 = self.fixed_sum::<T>(w3);
+                let e3 = self.fixed_sum(s, w3);
                 self.error_norm(y, h, &e5, Some(&e3), tol)
             }
             None => self.error_norm(y, h, &e5, None, tol),
@@ -149,6 +145,8 @@ impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    const TOL: Tolerances = Tolerances { rtol: 1e-6, atol: 1e-6 };
 
     struct Decay;
     impl System for Decay {
@@ -162,18 +160,19 @@ mod tests {
     }
 
     #[test]
-    fn built_in_tableaux_take_the_unrolled_step_when_the_dimension_is_fixed() {
+    fn every_table_row_takes_the_unrolled_step_when_the_dimension_is_fixed() {
         let y = [1.0, 1.0];
-        for tab in [&DOP853, &DOPRI5, &RK4] {
+        for tab in METHODS.iter().map(|m| m.tableau) {
             let mut fixed = Work::<Decay, 2>::new(&Decay, tab);
             Decay.rhs(0.0, &y, &mut fixed.k[..2]);
             assert!(fixed.step_unrolled(0.0, &y, 0.1), "{}", tab.name);
             assert!((fixed.ynew[0] - (-0.1f64).exp()).abs() < 1e-6, "{}: {:?}", tab.name, fixed.ynew);
             let mut general = Work::<Decay, 0>::new(&Decay, tab);
             assert!(!general.step_unrolled(0.0, &y, 0.1));
+            assert_eq!(fixed.error_unrolled(&y, 0.1, TOL).is_some(), tab.e.is_some(), "{}", tab.name);
         }
         // A tableau with the same coefficients elsewhere in memory takes the general step.
-        static COPY: Tableau = Tableau { name: "copy", dense: None, ..RK4 };
+        static COPY: Tableau = Tableau { name: "copy", dense: None, ..crate::ode::tableau::RK4 };
         let mut other = Work::<Decay, 2>::new(&Decay, &COPY);
         assert!(!other.step_unrolled(0.0, &y, 0.1));
     }

@@ -1,0 +1,175 @@
+//! The methods by name. In: a name (a scene's `method`); out: its [`MethodInfo`] (tableau, order,
+//! adaptive or fixed step), or None for a name the table does not have, which the caller reports.
+//! Also [`Method`] and [`Tolerances`], what an integration is told to use. A new method is its
+//! tableau's data in [`crate::ode::tableau`] and one row of [`METHODS`]; the row is checked at
+//! compile time, and every row takes the unrolled steps.
+
+use super::dense::DenseRounding;
+use super::tableau::{Tableau, DOP853, DOPRI5, RK4};
+
+/// Error tolerances in Autolev's sense: each component's local error is kept below
+/// `atol + rtol * |y|` (RMS over components).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tolerances {
+    /// Relative tolerance (Autolev's RELERR).
+    pub rtol: f64,
+    /// Absolute tolerance (Autolev's ABSERR).
+    pub atol: f64,
+}
+
+/// How to integrate.
+#[derive(Clone, Copy, Debug)]
+pub enum Method {
+    /// An embedded pair with error control.
+    Adaptive(&'static Tableau, Tolerances),
+    /// A fixed step no larger than the given one (shortened evenly to land on stop times).
+    Fixed(&'static Tableau, f64),
+}
+
+impl Method {
+    /// The tableau either way.
+    pub fn tableau(&self) -> &'static Tableau {
+        match self {
+            Method::Adaptive(tab, _) | Method::Fixed(tab, _) => tab,
+        }
+    }
+}
+
+/// A method the scenes can name.
+#[derive(Debug)]
+pub struct MethodInfo {
+    /// Its coefficients (name and order included).
+    pub tableau: &'static Tableau,
+    /// Steps are chosen by error control (the tableau is an embedded pair); otherwise fixed.
+    pub adaptive: bool,
+}
+
+impl MethodInfo {
+    /// The name scenes use.
+    pub fn name(&self) -> &'static str {
+        self.tableau.name
+    }
+
+    /// The order of the solution weights.
+    pub fn order(&self) -> u32 {
+        self.tableau.order
+    }
+
+    /// The [`Method`]: `tol` for an adaptive one, `step` for a fixed-step one.
+    pub fn method(&self, tol: Tolerances, step: f64) -> Method {
+        if self.adaptive {
+            Method::Adaptive(self.tableau, tol)
+        } else {
+            Method::Fixed(self.tableau, step)
+        }
+    }
+}
+
+/// Every method by name, in the order help texts list them.
+pub static METHODS: &[MethodInfo] = &[
+    MethodInfo { tableau: &DOP853, adaptive: true },
+    MethodInfo { tableau: &DOPRI5, adaptive: true },
+    MethodInfo { tableau: &RK4, adaptive: false },
+];
+
+/// The method a scene that names none gets.
+const DEFAULT_METHOD: &str = "dopri5";
+
+/// The method called `name` (any case); None when there is none.
+pub fn by_name(name: &str) -> Option<&'static MethodInfo> {
+    METHODS.iter().find(|m| m.name().eq_ignore_ascii_case(name))
+}
+
+/// The method used when none is named.
+pub fn default_method() -> &'static MethodInfo {
+    by_name(DEFAULT_METHOD).unwrap_or(&METHODS[0])
+}
+
+/// The names for an error message: `methods: dop853, dopri5 (adaptive), rk4 (fixed step)`.
+pub fn methods_help() -> String {
+    let names = |adaptive: bool| {
+        let names: Vec<&str> =
+            METHODS.iter().filter(|m| m.adaptive == adaptive).map(MethodInfo::name).collect();
+        names.join(", ")
+    };
+    let groups: Vec<String> = [(true, "adaptive"), (false, "fixed step")]
+        .into_iter()
+        .map(|(adaptive, kind)| (names(adaptive), kind))
+        .filter(|(names, _)| !names.is_empty())
+        .map(|(names, kind)| format!("{names} ({kind})"))
+        .collect();
+    format!("methods: {}", groups.join(", "))
+}
+
+/// Every row's tableau is well formed: checked when the crate compiles.
+const _: () = {
+    let mut i = 0;
+    while i < METHODS.len() {
+        check(&METHODS[i]);
+        i += 1;
+    }
+};
+
+/// Panics (at compile time) unless the row's shapes fit together: `a` strictly lower triangular
+/// over `c`, weights over every stage, a first-same-as-last stage that is `f(t + h, y_new)`, the
+/// continuous extension's rows over the stages and its extra stages, an error estimate for an
+/// adaptive method.
+const fn check(m: &MethodInfo) {
+    let tab = m.tableau;
+    let s = tab.c.len();
+    assert!(s > 0 && tab.a.len() == s && tab.b.len() == s, "a, b and c must have one entry per stage");
+    let mut i = 0;
+    while i < s {
+        assert!(tab.a[i].len() == i, "row i of a has i entries");
+        i += 1;
+    }
+    assert!(!m.adaptive || tab.e.is_some(), "an adaptive method needs error weights");
+    if tab.fsal {
+        // The last stage is f(t + h, y_new): node 1, its row of a the weights b.
+        assert!(tab.c[s - 1] == 1.0 && tab.b[s - 1] == 0.0, "first-same-as-last: c ends in 1, b in 0");
+        let mut j = 0;
+        while j < s - 1 {
+            assert!(tab.a[s - 1][j] == tab.b[j], "first-same-as-last: the last row of a is b");
+            j += 1;
+        }
+    }
+    if let Some(e) = tab.e {
+        assert!(e.len() == s, "error weights over every stage");
+    }
+    if let Some(e3) = tab.e3 {
+        assert!(e3.len() == s, "error weights over every stage");
+    }
+    if let Some(dense) = &tab.dense {
+        let extra = dense.c.len();
+        assert!(dense.a.len() == extra, "one row of a per extra stage");
+        let mut i = 0;
+        while i < extra {
+            assert!(dense.a[i].len() == s + i, "an extra stage reads every stage before it");
+            i += 1;
+        }
+        let mut r = 0;
+        while r < dense.d.len() {
+            assert!(dense.d[r].len() <= s + extra, "a row of d reads the stages and the extra ones");
+            r += 1;
+        }
+        assert!(
+            !matches!(dense.rounding, DenseRounding::SumTimesStep) || dense.d.len() == 1,
+            "SumTimesStep takes one row of d"
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_find_their_rows() {
+        assert_eq!(by_name("dop853").map(MethodInfo::order), Some(8));
+        assert_eq!(by_name("DOPRI5").map(|m| m.adaptive), Some(true));
+        assert!(std::ptr::eq(by_name("rk4").unwrap().tableau, &RK4));
+        assert!(by_name("euler").is_none());
+        assert_eq!(default_method().name(), "dopri5");
+        assert_eq!(methods_help(), "methods: dop853, dopri5 (adaptive), rk4 (fixed step)");
+    }
+}

@@ -1,0 +1,286 @@
+//! The stepper. In: a system, `(t0, y0)`, a [`Method`] and optionally a stop time; out: one
+//! accepted step per [`ErkStepper::step`] (its state, why it stopped there), values inside the
+//! last step from [`ErkStepper::interpolate`], and the cost so far in [`Stats`].
+//!
+//! Adaptive methods choose each step by PI error control; fixed-step methods take the given
+//! step, shortened evenly to land on the stop time. The step that reaches the stop time ends on
+//! it exactly: the value there is a step's own value at that time, not at a sum of step sizes.
+
+use std::cell::{Cell, RefCell};
+
+use super::control::{accepted_step, bound_first_step, initial_step, PiControl};
+use super::dense::{DenseCache, StepData};
+use super::stages::Work;
+use super::{Method, OdeError, System, Tolerances};
+
+/// Most steps a stepper takes.
+const MAX_STEPS: usize = 10_000_000;
+
+/// What integration cost.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected steps.
+    pub rejected: usize,
+    /// Calls of the right-hand side.
+    pub rhs_evals: usize,
+}
+
+/// Why [`ErkStepper::step`] returned.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum StopReason {
+    /// An accepted step short of the stop time (or without one).
+    StepTaken,
+    /// The stepper is at the stop time: the step just taken ended on it, or it already was.
+    StopTimeReached,
+}
+
+/// Fixed steps still to take toward the stop time: the rest of the way in `left` equal steps.
+#[derive(Clone, Copy, Debug, Default)]
+struct FixedPlan {
+    h: f64,
+    left: usize,
+}
+
+/// An explicit Runge-Kutta stepper for `sys`. `N` is the dimension when fixed at compile time
+/// (then the built-in tableaux take fully unrolled steps; see [`ErkStepper::new_sized`]), 0 for
+/// any ([`ErkStepper::new`]).
+pub struct ErkStepper<'a, S: System + ?Sized, const N: usize = 0> {
+    work: Work<'a, S, N>,
+    method: Method,
+    t0: f64,
+    t: f64,
+    y: Vec<f64>,
+    /// The last accepted step: where it began, its start, its size.
+    t_prev: f64,
+    y_prev: Vec<f64>,
+    h_prev: f64,
+    /// The next step size to try (adaptive).
+    h: f64,
+    control: PiControl,
+    stop: Option<f64>,
+    horizon: Option<f64>,
+    plan: FixedPlan,
+    dense: RefCell<DenseCache>,
+    /// Right-hand-side evaluations of the interpolants' extra stages.
+    dense_evals: Cell<usize>,
+}
+
+impl<'a, S: System + ?Sized> ErkStepper<'a, S> {
+    /// A stepper at `(t0, y0)`; `f(t0, y0)` and, for an adaptive method, the starting step size
+    /// are evaluated now. An error when `y0` is not finite or not of the system's dimension.
+    pub fn new(sys: &'a S, t0: f64, y0: &[f64], method: Method) -> Result<Self, OdeError> {
+        Self::new_sized(sys, t0, y0, method)
+    }
+}
+
+impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
+    /// [`ErkStepper::new`] with the dimension `N` fixed at compile time (0: any); an error
+    /// unless `N` is 0 or `sys.dim()`.
+    pub fn new_sized(sys: &'a S, t0: f64, y0: &[f64], method: Method) -> Result<Self, OdeError> {
+        let n = sys.dim();
+        if N != 0 && N != n {
+            return Err(OdeError::DimensionMismatch { expected: N, found: n });
+        }
+        if y0.len() != n {
+            return Err(OdeError::DimensionMismatch { expected: n, found: y0.len() });
+        }
+        check_finite(t0, y0)?;
+        let tab = method.tableau();
+        let mut work = Work::<S, N>::new(sys, tab);
+        sys.rhs(t0, y0, &mut work.k[..n]);
+        work.stats.rhs_evals += 1;
+        let h = match method {
+            Method::Adaptive(_, tol) => initial_step(&mut work, t0, y0, tol),
+            Method::Fixed(_, step) => step,
+        };
+        Ok(ErkStepper {
+            work,
+            method,
+            t0,
+            t: t0,
+            y: y0.to_vec(),
+            t_prev: t0,
+            y_prev: y0.to_vec(),
+            h_prev: 0.0,
+            h,
+            control: PiControl::new(tab.order, tab.control),
+            stop: None,
+            horizon: None,
+            plan: FixedPlan::default(),
+            dense: RefCell::new(DenseCache::new(n, tab.dense.as_ref())),
+            dense_evals: Cell::new(0),
+        })
+    }
+
+    /// Steps never pass `t_stop`; the one that reaches it ends on it exactly.
+    pub fn set_stop_time(&mut self, t_stop: f64) {
+        if self.stop.map(f64::to_bits) != Some(t_stop.to_bits()) {
+            self.stop = Some(t_stop);
+            self.plan = FixedPlan::default();
+        }
+    }
+
+    /// Where the whole integration ends: an adaptive method's first step is no longer than the
+    /// way there (without a horizon, than the way to the stop time). No effect after that step.
+    pub fn set_horizon(&mut self, t_end: f64) {
+        self.horizon = Some(t_end);
+    }
+
+    /// The current time.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// The current state.
+    pub fn y(&self) -> &[f64] {
+        &self.y
+    }
+
+    /// Where the last accepted step began (`t0` before the first).
+    pub fn step_start(&self) -> f64 {
+        self.t_prev
+    }
+
+    /// The cost so far, the interpolants' extra stages included.
+    pub fn stats(&self) -> Stats {
+        let mut stats = self.work.stats;
+        stats.rhs_evals += self.dense_evals.get();
+        stats
+    }
+
+    /// Takes one accepted step, or none when the stepper is at the stop time already. After an
+    /// error the state is the last accepted one, and only it can be interpolated (the failed
+    /// attempt overwrote the stages).
+    #[inline(always)]
+    pub fn step(&mut self) -> Result<StopReason, OdeError> {
+        if self.stop.is_some_and(|stop| self.t >= stop) {
+            return Ok(StopReason::StopTimeReached);
+        }
+        let result = match self.method {
+            Method::Adaptive(_, tol) => self.adaptive_step(tol),
+            Method::Fixed(_, step) => self.fixed_step(step),
+        };
+        if result.is_err() {
+            self.t_prev = self.t;
+        }
+        result
+    }
+
+    /// The state at `t` inside the last accepted step (its ends included) into `out`: at the
+    /// ends the step's own values, inside the tableau's continuous extension. An error outside
+    /// the step, strictly inside it without an extension, or for `out` of the wrong length.
+    #[inline]
+    pub fn interpolate(&self, t: f64, out: &mut [f64]) -> Result<(), OdeError> {
+        let n = self.work.n();
+        if out.len() != n {
+            return Err(OdeError::DimensionMismatch { expected: n, found: out.len() });
+        }
+        if t == self.t {
+            out.copy_from_slice(&self.y);
+            return Ok(());
+        }
+        if t == self.t_prev {
+            out.copy_from_slice(&self.y_prev);
+            return Ok(());
+        }
+        if !(self.t_prev < t && t < self.t) {
+            return Err(OdeError::OutsideStep { t, start: self.t_prev, end: self.t });
+        }
+        let tab = self.work.tab;
+        let dense = tab.dense.as_ref().ok_or(OdeError::NoDenseOutput { method: tab.name })?;
+        let step = StepData::<N> {
+            t: self.t_prev,
+            h: self.h_prev,
+            y0: &self.y_prev,
+            y1: &self.y,
+            k: &self.work.k,
+            s: tab.c.len(),
+            f1: self.work.end_slope(),
+            n_dyn: n,
+        };
+        let theta = (t - self.t_prev) / self.h_prev;
+        let evals = self.dense.borrow_mut().interpolate(self.work.sys, dense, &step, theta, out);
+        self.dense_evals.set(self.dense_evals.get() + evals);
+        Ok(())
+    }
+
+    /// An adaptive step toward the stop time (if any), of the size the control proposes or
+    /// smaller.
+    #[inline(always)]
+    fn adaptive_step(&mut self, tol: Tolerances) -> Result<StopReason, OdeError> {
+        self.check_step_limit()?;
+        if self.work.stats.steps == 0 {
+            // The first step: Hairer's estimate, now bounded by the span to integrate.
+            if let Some(end) = self.horizon.or(self.stop) {
+                self.h = bound_first_step(self.h, end - self.t0);
+            }
+        }
+        let target = self.stop.unwrap_or(f64::INFINITY);
+        self.work.begin();
+        let step = accepted_step(&mut self.work, self.t, &self.y, self.h, target, tol, &self.control)?;
+        self.accept(step.t_new, step.h)?;
+        let proposed = step.next_h(self.control.accepted(step.err));
+        // A step shortened to land on the stop time does not shrink the next.
+        self.h = if step.at_target { proposed.max(self.h) } else { proposed };
+        Ok(if step.at_target { StopReason::StopTimeReached } else { StopReason::StepTaken })
+    }
+
+    /// A fixed step: of size `step` without a stop time; toward one, the rest of the way divided
+    /// evenly into the fewest steps no longer than `step`, planned when the stop time is set
+    /// (the step limit is checked then, as for a run of steps between two output times).
+    #[inline(always)]
+    fn fixed_step(&mut self, step: f64) -> Result<StopReason, OdeError> {
+        if self.plan.left == 0 {
+            self.check_step_limit()?;
+            self.plan = match self.stop {
+                Some(stop) => {
+                    let count = ((stop - self.t) / step - 1e-9).ceil().max(1.0);
+                    FixedPlan { h: (stop - self.t) / count, left: count as usize }
+                }
+                None => FixedPlan { h: step, left: 1 },
+            };
+        }
+        let h = self.plan.h;
+        let lands = match self.stop {
+            Some(stop) if self.plan.left == 1 => Some(stop),
+            _ => None,
+        };
+        self.work.begin();
+        self.work.step(self.t, &self.y, h);
+        let t_new = lands.unwrap_or(self.t + h);
+        self.work.complete(t_new);
+        self.accept(t_new, h)?;
+        self.plan.left -= 1;
+        Ok(if lands.is_some() { StopReason::StopTimeReached } else { StopReason::StepTaken })
+    }
+
+    fn check_step_limit(&self) -> Result<(), OdeError> {
+        if self.work.stats.steps >= MAX_STEPS {
+            return Err(OdeError::TooManySteps { time: self.t, max: MAX_STEPS });
+        }
+        Ok(())
+    }
+
+    /// Makes the step of size `h` to `(t_new, work.ynew)` the current state, unless that state
+    /// is not finite.
+    #[inline(always)]
+    fn accept(&mut self, t_new: f64, h: f64) -> Result<(), OdeError> {
+        check_finite(t_new, &self.work.ynew)?;
+        self.work.finish(t_new);
+        std::mem::swap(&mut self.y_prev, &mut self.y);
+        std::mem::swap(&mut self.y, &mut self.work.ynew);
+        (self.t_prev, self.t, self.h_prev) = (self.t, t_new, h);
+        self.dense.get_mut().invalidate();
+        Ok(())
+    }
+}
+
+fn check_finite(t: f64, y: &[f64]) -> Result<(), OdeError> {
+    match y.iter().position(|v| !v.is_finite()) {
+        Some(index) => Err(OdeError::NonFinite { time: t, index, value: y[index] }),
+        None => Ok(()),
+    }
+}
