@@ -7,6 +7,7 @@
 //! [`run`] chains them; [`models`] holds the models compiled into the simulator.
 #![warn(missing_docs)]
 
+pub mod initial;
 pub mod models;
 pub mod ode;
 pub mod output;

@@ -13,6 +13,12 @@ pub mod heavy_top {
     kane_derive::model!("../kane-model/models/heavy_top.al");
 }
 
+/// A torque-free rigid body (EJS "Free Rotation", Feynman's plate): Euler parameters and body
+/// rates, principal moments I1, I2, I3.
+pub mod free_body {
+    kane_derive::model!("../kane-model/models/free_body.al");
+}
+
 /// The same top built through kane-model's Rust API (`kane_model::models::HeavyTop`), with
 /// energy, angular-momentum and orientation outputs.
 pub mod heavy_top_rust {
@@ -21,5 +27,9 @@ pub mod heavy_top_rust {
 
 /// `registry` with the compiled models added.
 pub fn register(registry: Registry) -> Registry {
-    registry.with::<gimbal_gyroscope::Model>().with::<heavy_top::Model>().with::<heavy_top_rust::Model>()
+    registry
+        .with::<gimbal_gyroscope::Model>()
+        .with::<heavy_top::Model>()
+        .with::<heavy_top_rust::Model>()
+        .with::<free_body::Model>()
 }

@@ -1,13 +1,15 @@
 //! Resolving a scene: in come a [`Scene`] and a [`Registry`]; out goes a [`Problem`] in model
-//! units (the scene's units converted: degrees to radians, deg/s to rad/s), or an error at the
+//! units (the scene's units converted: degrees to radians, deg/s to rad/s; a top's `[axle]`
+//! motion converted to Euler parameters and body rates by [`crate::initial`]), or an error at the
 //! scene's line and column.
 
 use kane_model::runtime::ModelInfo;
 
+use crate::initial::{norm_error, TopStart, UNIT_NORM_TOLERANCE};
 use crate::ode::{Method, Tolerances};
 use crate::problem::{output_times, plot_times, Pick, Problem};
 use crate::registry::{ModelEntry, Registry};
-use crate::scene::{Scene, SceneError, Value};
+use crate::scene::{Axle, Scene, SceneError, Value};
 
 /// The problem a scene describes.
 pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError> {
@@ -94,6 +96,9 @@ fn initial_state(scene: &Scene, entry: &ModelEntry) -> Result<Vec<f64>, SceneErr
         };
         y[i] = in_model_units(scene, name, v, info.state_units[i], span)?;
     }
+    if let Some(axle) = &scene.axle {
+        apply_axle(scene, axle, info, &mut y)?;
+    }
     if let Some(i) = y.iter().position(|v| !v.is_finite()) {
         return Err(scene.error_at(
             0..0,
@@ -102,6 +107,101 @@ fn initial_state(scene: &Scene, entry: &ModelEntry) -> Result<Vec<f64>, SceneErr
         ));
     }
     Ok(y)
+}
+
+/// The `[axle]` table applied to `y` (which holds the model's defaults and the `[initial]`
+/// values): with `tilt`, its Euler parameters and rates are derived (a state set both here and
+/// in `[initial]` is an error); without, the Euler parameters `y` holds must have unit norm.
+fn apply_axle(scene: &Scene, axle: &Axle, info: &ModelInfo, y: &mut [f64]) -> Result<(), SceneError> {
+    let quaternion = axle_states(scene, info, &axle.quaternion, &[])?;
+    let rates = axle_states(scene, info, &axle.rates, &axle.quaternion)?;
+    if !axle.derives() {
+        let q = [y[quaternion[0]], y[quaternion[1]], y[quaternion[2]], y[quaternion[3]]];
+        return unit_euler_parameters(scene, axle, info, &quaternion, q);
+    }
+    let derived: Vec<usize> = quaternion.iter().chain(&rates).copied().collect();
+    for (name, _, span) in &scene.initial {
+        if info.state(name).is_some_and(|i| derived.contains(&i)) {
+            return Err(scene.error_at(
+                span.clone(),
+                format!("`{name}` is set twice: [axle] derives it from the axle's motion"),
+                &format!("remove {name} from [initial], or remove tilt from [axle] to give the Euler parameters yourself"),
+            ));
+        }
+    }
+    let start = TopStart::from_scene(scene, axle)?;
+    for (i, v) in quaternion.iter().zip(start.euler_parameters()) {
+        y[*i] = v;
+    }
+    for (i, v) in rates.iter().zip(start.body_rates()) {
+        y[*i] = v;
+    }
+    Ok(())
+}
+
+/// The state indices `names` of `[axle]` name; an error at a name that is not a state, or one
+/// named twice (`earlier` are names the table gave before these).
+fn axle_states(
+    scene: &Scene,
+    info: &ModelInfo,
+    names: &[(String, std::ops::Range<usize>)],
+    earlier: &[(String, std::ops::Range<usize>)],
+) -> Result<Vec<usize>, SceneError> {
+    let mut out = Vec::with_capacity(names.len());
+    for (k, (name, span)) in names.iter().enumerate() {
+        let Some(i) = info.state(name) else {
+            return Err(scene.error_at(
+                span.clone(),
+                format!("`{name}` in [axle] is not a state of {}", info.name),
+                &format!("states: {}", info.state_names.join(", ")),
+            ));
+        };
+        if earlier.iter().chain(&names[..k]).any(|(n, _)| n.eq_ignore_ascii_case(name)) {
+            return Err(scene.error_at(
+                span.clone(),
+                format!("`{name}` is named twice in [axle]"),
+                "quaternion names the four Euler-parameter states, rates the three body rates, each once",
+            ));
+        }
+        out.push(i);
+    }
+    Ok(out)
+}
+
+/// An error unless the Euler parameters `q` (scalar first) have unit norm; it points at the
+/// first of them `[initial]` sets, or at `[axle]`'s quaternion when the model's defaults gave
+/// them all.
+fn unit_euler_parameters(
+    scene: &Scene,
+    axle: &Axle,
+    info: &ModelInfo,
+    quaternion: &[usize],
+    q: [f64; 4],
+) -> Result<(), SceneError> {
+    if norm_error(&q) <= UNIT_NORM_TOLERANCE {
+        return Ok(());
+    }
+    let names: Vec<&str> = quaternion.iter().map(|i| info.state_names[*i]).collect();
+    let span = scene
+        .initial
+        .iter()
+        .filter(|(name, _, _)| info.state(name).is_some_and(|i| quaternion.contains(&i)))
+        .map(|(_, _, span)| span.clone())
+        .min_by_key(|span| span.start)
+        .unwrap_or_else(|| axle.quaternion_span.clone());
+    Err(scene.error_at(
+        span,
+        format!(
+            "the Euler parameters {} = ({}) have norm {}, not 1",
+            names.join(", "),
+            q.map(|x| format!("{x}")).join(", "),
+            q.iter().map(|x| x * x).sum::<f64>().sqrt(),
+        ),
+        &format!(
+            "Euler parameters must have unit norm (to {UNIT_NORM_TOLERANCE:e}): give the orientation as tilt = \"60 deg\" under [axle] and remove {} from [initial], or normalise them",
+            names.join(", ")
+        ),
+    ))
 }
 
 /// The states and outputs asked for (every state and output when none are named).
@@ -163,4 +263,93 @@ fn in_model_units(
             ));
         }
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const HEAD: &str = "model = \"heavy_top\"\nt_final = 1.0\noutput_step = 0.1\n";
+    const NAMES: &str = "quaternion = [\"E4\", \"E1\", \"E2\", \"E3\"]\n";
+
+    fn initial(text: &str) -> Result<(Vec<f64>, &'static ModelInfo), SceneError> {
+        let scene = Scene::parse("top.toml", &format!("{HEAD}{text}"))?;
+        resolve(&scene, &Registry::builtin()).map(|p| (p.initial, p.model))
+    }
+
+    fn state(y: &[f64], info: &ModelInfo, name: &str) -> f64 {
+        y[info.state(name).unwrap()]
+    }
+
+    #[test]
+    fn the_axle_gives_euler_parameters_and_rates() {
+        let text = format!(
+            "[axle]\ntilt = \"60 deg\"\nspin = \"10 rad/s\"\nprecession = \"-1 rad/s\"\nnutation = \"0.5 rad/s\"\n{NAMES}rates = [\"W1\", \"W2\", \"W3\"]\n"
+        );
+        let (y, info) = initial(&text).unwrap();
+        let want = TopStart { tilt: 60f64.to_radians(), spin: 10.0, precession: -1.0, nutation: 0.5 };
+        let [e4, e1, e2, e3] = want.euler_parameters();
+        let [w1, w2, w3] = want.body_rates();
+        for (name, v) in [("E4", e4), ("E1", e1), ("E2", e2), ("E3", e3), ("W1", w1), ("W2", w2), ("W3", w3)]
+        {
+            assert_eq!(state(&y, info, name), v, "{name}");
+        }
+        assert!((w2 + 60f64.to_radians().sin()).abs() < 1e-15 && w1 == 0.5 && w3 == 10.0);
+    }
+
+    #[test]
+    fn without_rates_the_initial_table_gives_them() {
+        let text = format!("[initial]\nW3 = 5.0\n[axle]\ntilt = \"30 deg\"\n{NAMES}");
+        let (y, info) = initial(&text).unwrap();
+        assert_eq!(state(&y, info, "W3"), 5.0);
+        assert_eq!(state(&y, info, "E1"), 15f64.to_radians().sin());
+    }
+
+    #[test]
+    fn a_state_set_in_both_tables_is_an_error_at_its_initial_line() {
+        let text = format!("[initial]\nW2 = 1.0\nE1 = 0.5\n[axle]\ntilt = \"30 deg\"\n{NAMES}");
+        let e = initial(&text).unwrap_err().to_string();
+        assert!(e.starts_with("top.toml:6:6: error: `E1` is set twice: [axle] derives it"), "{e}");
+        assert!(e.contains("help: remove E1 from [initial]"), "{e}");
+        // Rates too, when [axle] names them.
+        let text = format!(
+            "[initial]\nw2 = 1.0\n[axle]\ntilt = \"30 deg\"\n{NAMES}rates = [\"W1\", \"W2\", \"W3\"]\n"
+        );
+        let e = initial(&text).unwrap_err().to_string();
+        assert!(e.starts_with("top.toml:5:6: error: `w2` is set twice"), "{e}");
+    }
+
+    #[test]
+    fn euler_parameters_given_directly_must_have_unit_norm() {
+        let text = format!("[initial]\nE4 = 1.0\nE1 = 0.5\nE2 = 0.0\nE3 = 0.0\n[axle]\n{NAMES}");
+        let e = initial(&text).unwrap_err().to_string();
+        assert!(
+            e.starts_with(
+                "top.toml:5:6: error: the Euler parameters E4, E1, E2, E3 = (1, 0.5, 0, 0) have norm 1.118"
+            ),
+            "{e}"
+        );
+        assert!(e.contains("tilt = \"60 deg\" under [axle]"), "{e}");
+        // Within 1e-9 of unit norm is accepted, and without [axle] nothing is checked.
+        let c = 30f64.to_radians().cos();
+        let s = 30f64.to_radians().sin();
+        let ok = format!("[initial]\nE4 = {c}\nE1 = {}\nE2 = 0.0\nE3 = 0.0\n[axle]\n{NAMES}", s + 5e-10);
+        assert!(initial(&ok).is_ok());
+        assert!(initial("[initial]\nE4 = 1.0\nE1 = 0.5\nE2 = 0.0\nE3 = 0.0\n").is_ok());
+    }
+
+    #[test]
+    fn axle_names_must_be_states_named_once_and_values_in_fitting_units() {
+        let bad = "[axle]\ntilt = \"30 deg\"\nquaternion = [\"E4\", \"E1\", \"E2\", \"Q3\"]\n";
+        let e = initial(bad).unwrap_err().to_string();
+        assert!(e.starts_with("top.toml:6:33: error: `Q3` in [axle] is not a state of heavy_top"), "{e}");
+        assert!(e.contains("states: E1, E2, E3, E4, W1, W2, W3"), "{e}");
+        let twice = "[axle]\ntilt = \"30 deg\"\nquaternion = [\"E4\", \"E1\", \"E2\", \"E3\"]\nrates = [\"W1\", \"E1\", \"W3\"]\n";
+        let e = initial(twice).unwrap_err().to_string();
+        assert!(e.starts_with("top.toml:7:16: error: `E1` is named twice in [axle]"), "{e}");
+        let unit = format!("[axle]\ntilt = \"10 rad/s\"\n{NAMES}");
+        let e = initial(&unit).unwrap_err().to_string();
+        assert!(e.starts_with("top.toml:5:8: error: `tilt` in [axle] is an angle, not in RAD/S"), "{e}");
+        assert!(e.contains("help: write a number with deg or rad"), "{e}");
+    }
 }

@@ -1,5 +1,7 @@
-//! Scenes: TOML files naming a model, its parameters, the initial state (with units), the time
-//! span, the integrator and the outputs wanted.
+//! Scenes: in comes a TOML file's text; out goes a validated [`Scene`] naming a model, its
+//! parameters, the initial state (with units, and optionally a top's motion EJS style in an
+//! `[axle]` table, converted by [`crate::initial`]), the time span, the integrator and the
+//! outputs wanted; or a [`SceneError`] at the file's line and column.
 
 use std::collections::BTreeMap;
 use std::fmt;
@@ -25,6 +27,8 @@ pub struct Scene {
     pub parameters: Vec<(String, Value, std::ops::Range<usize>)>,
     /// Initial values to set.
     pub initial: Vec<(String, Value, std::ops::Range<usize>)>,
+    /// A symmetric top's initial motion, EJS style (`[axle]`).
+    pub axle: Option<Axle>,
     /// End time (start is 0).
     pub t_final: f64,
     /// Output step.
@@ -42,6 +46,39 @@ pub struct Value {
     pub number: f64,
     /// The unit written after it, if any (`deg`, `rad/s`, ...).
     pub unit: Option<String>,
+}
+
+/// An `[axle]` table: a symmetric top's initial motion as EJS gives it (tilt of the axle from
+/// +z, spin about it, precession and nutation rates), converted to Euler parameters and body
+/// rates by [`crate::initial`].
+///
+/// With `tilt`, the Euler parameters named by `quaternion` are derived from it, and, when `rates`
+/// names the body-rate states, so are the rates (spin, precession, nutation absent are 0).
+/// Without `tilt`, the table only says which states are the Euler parameters: `[initial]` gives
+/// them, and they must have unit norm.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Axle {
+    /// The axle's angle from +z (space z up), as written.
+    pub tilt: Option<(Value, std::ops::Range<usize>)>,
+    /// Body rate about the axle (omega3).
+    pub spin: Option<(Value, std::ops::Range<usize>)>,
+    /// Precession rate (phidot0).
+    pub precession: Option<(Value, std::ops::Range<usize>)>,
+    /// Nutation rate (thetadot0).
+    pub nutation: Option<(Value, std::ops::Range<usize>)>,
+    /// The model's Euler-parameter states, scalar first, body -> space (four).
+    pub quaternion: Vec<(String, std::ops::Range<usize>)>,
+    /// The model's body-axis angular velocity states (three), or none.
+    pub rates: Vec<(String, std::ops::Range<usize>)>,
+    /// Where the table's `quaternion` key is given.
+    pub quaternion_span: std::ops::Range<usize>,
+}
+
+impl Axle {
+    /// Whether the Euler parameters (and, with `rates`, the rates) are derived from the table.
+    pub fn derives(&self) -> bool {
+        self.tilt.is_some()
+    }
 }
 
 /// Integrator settings.
@@ -95,6 +132,18 @@ struct SceneFile {
     integrator: Option<IntegratorFile>,
     parameters: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
     initial: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
+    axle: Option<Spanned<AxleFile>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AxleFile {
+    tilt: Option<Spanned<toml::Value>>,
+    spin: Option<Spanned<toml::Value>>,
+    precession: Option<Spanned<toml::Value>>,
+    nutation: Option<Spanned<toml::Value>>,
+    quaternion: Option<Spanned<Vec<Spanned<String>>>>,
+    rates: Option<Spanned<Vec<Spanned<String>>>>,
 }
 
 #[derive(Default, Deserialize)]
@@ -187,22 +236,89 @@ impl Text<'_> {
     ) -> Result<Vec<(String, Value, Span)>, SceneError> {
         let mut out = Vec::new();
         for (k, v) in table.unwrap_or_default() {
-            let span = v.span();
-            let value = match v.get_ref() {
-                toml::Value::Float(x) => Value { number: *x, unit: None },
-                toml::Value::Integer(i) => Value { number: *i as f64, unit: None },
-                toml::Value::String(s) => self.with_unit(s, span.clone())?,
-                other => {
-                    return Err(self.err(
-                        span,
-                        format!("`{other}` is not a number"),
-                        "write a number, or a string like \"30 deg\"",
-                    ))
-                }
-            };
-            out.push((k.get_ref().clone(), value, span));
+            out.push((k.get_ref().clone(), self.value(&v)?, v.span()));
         }
         Ok(out)
+    }
+
+    /// A number with an optional unit (`"30 deg"`).
+    fn value(&self, v: &Spanned<toml::Value>) -> Result<Value, SceneError> {
+        let span = v.span();
+        match v.get_ref() {
+            toml::Value::Float(x) => Ok(Value { number: *x, unit: None }),
+            toml::Value::Integer(i) => Ok(Value { number: *i as f64, unit: None }),
+            toml::Value::String(s) => self.with_unit(s, span),
+            other => Err(self.err(
+                span,
+                format!("`{other}` is not a number"),
+                "write a number, or a string like \"30 deg\"",
+            )),
+        }
+    }
+
+    /// The `[axle]` table: `quaternion` names four states, `rates` three; spin, precession and
+    /// nutation set rates, so they need `tilt` (the derived orientation) and `rates`.
+    fn axle(&self, axle: Option<Spanned<AxleFile>>) -> Result<Option<Axle>, SceneError> {
+        let Some(axle) = axle else { return Ok(None) };
+        let table_span = axle.span();
+        let a = axle.into_inner();
+        let names = |list: Option<Spanned<Vec<Spanned<String>>>>, want: usize, what: &str, example: &str| {
+            let Some(list) = list else { return Ok((Vec::new(), table_span.clone())) };
+            if list.get_ref().len() != want {
+                return Err(self.err(
+                    list.span(),
+                    format!("`{what}` names {} states, not {want}", list.get_ref().len()),
+                    &format!("write {what} = {example}, the model's state names"),
+                ));
+            }
+            let span = list.span();
+            Ok((list.into_inner().into_iter().map(|n| (n.get_ref().clone(), n.span())).collect(), span))
+        };
+        let (quaternion, quaternion_span) = names(
+            a.quaternion,
+            4,
+            "quaternion",
+            "[\"E4\", \"E1\", \"E2\", \"E3\"] (scalar first, body -> space)",
+        )?;
+        let (rates, _) = names(a.rates, 3, "rates", "[\"W1\", \"W2\", \"W3\"] (body-axis angular velocity)")?;
+        if quaternion.is_empty() {
+            return Err(self.err(
+                table_span,
+                "[axle] does not say which states are the Euler parameters".into(),
+                "add quaternion = [\"E4\", \"E1\", \"E2\", \"E3\"] (the model's Euler-parameter states, scalar first, body -> space)",
+            ));
+        }
+        let value =
+            |v: Option<Spanned<toml::Value>>| v.map(|v| self.value(&v).map(|x| (x, v.span()))).transpose();
+        let out = Axle {
+            tilt: value(a.tilt)?,
+            spin: value(a.spin)?,
+            precession: value(a.precession)?,
+            nutation: value(a.nutation)?,
+            quaternion,
+            rates,
+            quaternion_span,
+        };
+        for (key, given) in
+            [("spin", &out.spin), ("precession", &out.precession), ("nutation", &out.nutation)]
+        {
+            let Some((_, span)) = given else { continue };
+            if !out.derives() {
+                return Err(self.err(
+                    span.clone(),
+                    format!("`{key}` needs `tilt` in [axle]"),
+                    "add tilt = \"0 deg\" (upright) or the axle's angle from +z; without tilt, [axle] only names the Euler-parameter states and [initial] gives them",
+                ));
+            }
+            if out.rates.is_empty() {
+                return Err(self.err(
+                    span.clone(),
+                    format!("`{key}` sets the body rates, but [axle] does not name them"),
+                    "add rates = [\"W1\", \"W2\", \"W3\"] (the model's body-axis angular velocity states)",
+                ));
+            }
+        }
+        Ok(Some(out))
     }
 
     fn with_unit(&self, s: &str, span: Span) -> Result<Value, SceneError> {
@@ -267,7 +383,7 @@ impl Scene {
             text.err(
                 e.span().unwrap_or(0..0),
                 e.message().to_string(),
-                "keys are title, model, t_final, output_step, outputs, [integrator], [parameters], [initial]",
+                "keys are title, model, t_final, output_step, outputs, [integrator], [parameters], [initial], [axle] (tilt, spin, precession, nutation, quaternion, rates)",
             )
         })?;
         let model = raw.model.ok_or_else(|| {
@@ -289,6 +405,7 @@ impl Scene {
             model: model.into_inner(),
             parameters: text.values(raw.parameters)?,
             initial: text.values(raw.initial)?,
+            axle: text.axle(raw.axle)?,
             t_final,
             output_step,
             outputs,
@@ -299,5 +416,55 @@ impl Scene {
     /// An error at a span of this scene's text.
     pub fn error_at(&self, span: Span, message: String, help: &str) -> SceneError {
         error_at(&self.path.display().to_string(), &self.source, span, message, help)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const HEAD: &str = "model = \"heavy_top\"\nt_final = 1.0\noutput_step = 0.1\n[axle]\n";
+
+    fn error(text: &str) -> String {
+        Scene::parse("top.toml", &format!("{HEAD}{text}")).unwrap_err().to_string()
+    }
+
+    #[test]
+    fn an_axle_table_is_read_with_its_units_and_spans() {
+        let text = "tilt = \"60 deg\"\nspin = 10\nquaternion = [\"E4\", \"E1\", \"E2\", \"E3\"]\nrates = [\"W1\", \"W2\", \"W3\"]\n";
+        let s = Scene::parse("top.toml", &format!("{HEAD}{text}")).unwrap();
+        let axle = s.axle.unwrap();
+        assert!(axle.derives());
+        assert_eq!(axle.tilt.unwrap().0, Value { number: 60.0, unit: Some("deg".into()) });
+        assert_eq!(axle.spin.unwrap().0, Value { number: 10.0, unit: None });
+        assert!(axle.precession.is_none() && axle.nutation.is_none());
+        assert_eq!(
+            axle.quaternion.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>(),
+            ["E4", "E1", "E2", "E3"]
+        );
+        assert_eq!(&s.source[axle.rates[1].1.clone()], "\"W2\"");
+    }
+
+    #[test]
+    fn an_axle_table_needs_its_quaternion_and_the_right_counts() {
+        let e = error("tilt = \"60 deg\"\n");
+        assert!(e.contains("error: [axle] does not say which states are the Euler parameters"), "{e}");
+        assert!(e.contains("help: add quaternion = [\"E4\", \"E1\", \"E2\", \"E3\"]"), "{e}");
+        let e = error("quaternion = [\"E4\", \"E1\", \"E2\"]\n");
+        assert!(e.starts_with("top.toml:5:14: error: `quaternion` names 3 states, not 4"), "{e}");
+        let e = error("quaternion = [\"E4\", \"E1\", \"E2\", \"E3\"]\nrates = [\"W1\"]\n");
+        assert!(e.starts_with("top.toml:6:9: error: `rates` names 1 states, not 3"), "{e}");
+        let e = error("tilts = \"60 deg\"\n");
+        assert!(e.starts_with("top.toml:5:1: error: unknown field `tilts`"), "{e}");
+    }
+
+    #[test]
+    fn rates_of_the_axle_need_tilt_and_rates() {
+        let q = "quaternion = [\"E4\", \"E1\", \"E2\", \"E3\"]\n";
+        let e = error(&format!("spin = \"10 rad/s\"\n{q}"));
+        assert!(e.starts_with("top.toml:5:8: error: `spin` needs `tilt` in [axle]"), "{e}");
+        let e = error(&format!("tilt = \"60 deg\"\nprecession = \"1 rad/s\"\n{q}"));
+        assert!(e.starts_with("top.toml:6:14: error: `precession` sets the body rates"), "{e}");
+        assert!(e.contains("help: add rates = [\"W1\", \"W2\", \"W3\"]"), "{e}");
     }
 }
