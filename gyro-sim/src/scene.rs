@@ -29,6 +29,8 @@ pub struct Scene {
     pub initial: Vec<(String, Value, std::ops::Range<usize>)>,
     /// A symmetric top's initial motion, EJS style (`[axle]`).
     pub axle: Option<Axle>,
+    /// A 3-D view to write beside the results (`[view]`, see [`crate::output::ViewSpec`]).
+    pub view: Option<crate::output::ViewSpec>,
     /// End time (start is 0).
     pub t_final: f64,
     /// Output step.
@@ -133,6 +135,7 @@ struct SceneFile {
     parameters: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
     initial: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
     axle: Option<Spanned<AxleFile>>,
+    view: Option<crate::output::ViewSpec>,
 }
 
 #[derive(Deserialize)]
@@ -383,7 +386,7 @@ impl Scene {
             text.err(
                 e.span().unwrap_or(0..0),
                 e.message().to_string(),
-                "keys are title, model, t_final, output_step, outputs, [integrator], [parameters], [initial], [axle] (tilt, spin, precession, nutation, quaternion, rates)",
+                "keys are title, model, t_final, output_step, outputs, [integrator], [parameters], [initial], [axle] (tilt, spin, precession, nutation, quaternion, rates), [view]",
             )
         })?;
         let model = raw.model.ok_or_else(|| {
@@ -406,6 +409,7 @@ impl Scene {
             parameters: text.values(raw.parameters)?,
             initial: text.values(raw.initial)?,
             axle: text.axle(raw.axle)?,
+            view: raw.view,
             t_final,
             output_step,
             outputs,

@@ -53,8 +53,12 @@ fn panels(table: &Table) -> Vec<Panel<'_>> {
     if rest.is_empty() {
         rest = (0..cols.len()).filter(|c| !cols[*c].angle).collect();
     }
-    let mut units: Vec<&str> = rest.iter().map(|c| cols[*c].unit.as_str()).collect();
-    units.dedup();
+    let mut units: Vec<&str> = Vec::new();
+    for c in &rest {
+        if !units.contains(&cols[*c].unit.as_str()) {
+            units.push(cols[*c].unit.as_str());
+        }
+    }
     for unit in units {
         groups.push(rest.iter().copied().filter(|c| cols[*c].unit == unit).collect());
     }
