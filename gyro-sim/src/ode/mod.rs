@@ -59,8 +59,8 @@ pub enum OdeError {
         /// The limit.
         max: usize,
     },
-    /// A value strictly inside a step was asked of a method without a continuous extension.
-    #[error("{method} has no dense output: only the ends of a step are known")]
+    /// A value before the end of a step was asked of a method without a continuous extension.
+    #[error("{method} has no dense output: only the state at the end of a step is known")]
     NoDenseOutput {
         /// The tableau's name.
         method: &'static str,

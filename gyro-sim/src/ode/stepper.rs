@@ -53,7 +53,8 @@ pub struct ErkStepper<'a, S: System + ?Sized, const N: usize = 0> {
     t0: f64,
     t: f64,
     y: Vec<f64>,
-    /// The last accepted step: where it began, its start, its size.
+    /// The last accepted step: where it began, the state there (kept only for a tableau with a
+    /// continuous extension: nothing else reads it), its size.
     t_prev: f64,
     y_prev: Vec<f64>,
     h_prev: f64,
@@ -63,6 +64,8 @@ pub struct ErkStepper<'a, S: System + ?Sized, const N: usize = 0> {
     stop: Option<f64>,
     horizon: Option<f64>,
     plan: FixedPlan,
+    /// The tableau has a continuous extension.
+    dense_output: bool,
     dense: RefCell<DenseCache>,
     /// Right-hand-side evaluations of the interpolants' extra stages.
     dense_evals: Cell<usize>,
@@ -110,6 +113,7 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
             stop: None,
             horizon: None,
             plan: FixedPlan::default(),
+            dense_output: tab.dense.is_some(),
             dense: RefCell::new(DenseCache::new(n, tab.dense.as_ref())),
             dense_evals: Cell::new(0),
         })
@@ -169,9 +173,10 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
         result
     }
 
-    /// The state at `t` inside the last accepted step (its ends included) into `out`: at the
-    /// ends the step's own values, inside the tableau's continuous extension. An error outside
-    /// the step, strictly inside it without an extension, or for `out` of the wrong length.
+    /// The state at `t` in the last accepted step into `out`: at its end the step's own value;
+    /// before that (its start included) from the tableau's continuous extension, exact at the
+    /// start. An error outside the step, before its end without an extension, or for `out` of
+    /// the wrong length.
     #[inline]
     pub fn interpolate(&self, t: f64, out: &mut [f64]) -> Result<(), OdeError> {
         let n = self.work.n();
@@ -182,15 +187,15 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
             out.copy_from_slice(&self.y);
             return Ok(());
         }
-        if t == self.t_prev {
-            out.copy_from_slice(&self.y_prev);
-            return Ok(());
-        }
-        if !(self.t_prev < t && t < self.t) {
+        if !(self.t_prev <= t && t < self.t) {
             return Err(OdeError::OutsideStep { t, start: self.t_prev, end: self.t });
         }
         let tab = self.work.tab;
         let dense = tab.dense.as_ref().ok_or(OdeError::NoDenseOutput { method: tab.name })?;
+        if t == self.t_prev {
+            out.copy_from_slice(&self.y_prev);
+            return Ok(());
+        }
         let step = StepData::<N> {
             t: self.t_prev,
             h: self.h_prev,
@@ -270,7 +275,9 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
     fn accept(&mut self, t_new: f64, h: f64) -> Result<(), OdeError> {
         check_finite(t_new, &self.work.ynew)?;
         self.work.finish(t_new);
-        std::mem::swap(&mut self.y_prev, &mut self.y);
+        if self.dense_output {
+            std::mem::swap(&mut self.y_prev, &mut self.y);
+        }
         std::mem::swap(&mut self.y, &mut self.work.ynew);
         (self.t_prev, self.t, self.h_prev) = (self.t, t_new, h);
         self.dense.get_mut().invalidate();
