@@ -66,10 +66,32 @@ fn print_summary(title: &str, summary: &run::RunSummary) {
         t.stats.rhs_evals,
         t.wall.as_secs_f64() * 1e3,
     );
+    for line in conserved_drifts(t) {
+        println!("{line}");
+    }
     if let Some(a) = t.accuracy {
         println!(
             "accuracy {:e} asked: {} runs; the written one (rtol {:.1e}, atol {:.1e}) differs by {:.2e} from the run before (about that run's error; the written run's is far smaller)",
             a.goal, a.runs, a.rtol, a.atol, a.estimate
         );
     }
+}
+
+/// The drift of the conserved quantities the run wrote (`ENERGY`, `LZ`, `L3`): start, end and
+/// the change relative to max(1, |start|).
+fn conserved_drifts(t: &gyro_sim::trajectory::Trajectory) -> Vec<String> {
+    let (Some(first), Some(last)) = (t.rows.first(), t.rows.last()) else { return Vec::new() };
+    t.columns
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| ["ENERGY", "LZ", "L3"].iter().any(|n| c.name.eq_ignore_ascii_case(n)))
+        .map(|(k, c)| {
+            let (a, b) = (first[k + 1], last[k + 1]);
+            format!(
+                "{}: {a:.12e} -> {b:.12e} (drift {:.2e} relative)",
+                c.name,
+                (b - a).abs() / a.abs().max(1.0)
+            )
+        })
+        .collect()
 }
