@@ -30,7 +30,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
         initial: initial_state(scene, entry)?,
         times: times.clone(),
         plot_times: if has_dense_output(method) {
-            plot_times(&times, PLOT_POINTS_PER_STEP, MAX_PLOT_POINTS)
+            plot_times(&times, scene.plot_points, MAX_PLOT_POINTS)
         } else {
             Vec::new()
         },
@@ -40,10 +40,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
     })
 }
 
-/// Figures are drawn from this many points per output interval when the method has dense
-/// output (1: the output rows alone)...
-const PLOT_POINTS_PER_STEP: usize = 1;
-/// ... and at most this many in all.
+/// Figures are drawn from at most this many points in all.
 const MAX_PLOT_POINTS: usize = 20_000;
 
 /// Whether `method` interpolates inside its steps (then plot points cost no extra steps).

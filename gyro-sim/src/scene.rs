@@ -35,6 +35,8 @@ pub struct Scene {
     pub t_final: f64,
     /// Output step.
     pub output_step: f64,
+    /// Points per output interval the figures are drawn from (dense output; 1: the rows alone).
+    pub plot_points: usize,
     /// Outputs asked for (state or output names); empty means all.
     pub outputs: Vec<(String, std::ops::Range<usize>)>,
     /// Integrator.
@@ -130,6 +132,7 @@ struct SceneFile {
     model: Option<Spanned<String>>,
     t_final: Option<Spanned<f64>>,
     output_step: Option<Spanned<f64>>,
+    plot_points: Option<Spanned<u32>>,
     outputs: Option<Vec<Spanned<String>>>,
     integrator: Option<IntegratorFile>,
     parameters: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
@@ -338,6 +341,19 @@ impl Text<'_> {
     }
 
     /// `t_final` and `output_step`: positive, the step no longer than the span.
+    /// `plot_points`: 1 (the output rows alone) to 1000 points per output interval.
+    fn plot_points(&self, v: Option<Spanned<u32>>) -> Result<usize, SceneError> {
+        match v {
+            Some(n) if !(1..=1000).contains(n.get_ref()) => Err(self.err(
+                n.span(),
+                format!("plot_points must be 1 to 1000, not {}", n.get_ref()),
+                "give the points per output interval the figures are drawn from (1: the rows alone)",
+            )),
+            Some(n) => Ok(*n.get_ref() as usize),
+            None => Ok(1),
+        }
+    }
+
     fn times(
         &self,
         t_final: Option<Spanned<f64>>,
@@ -386,7 +402,7 @@ impl Scene {
             text.err(
                 e.span().unwrap_or(0..0),
                 e.message().to_string(),
-                "keys are title, model, t_final, output_step, outputs, [integrator], [parameters], [initial], [axle] (tilt, spin, precession, nutation, quaternion, rates), [view]",
+                "keys are title, model, t_final, output_step, outputs, [integrator], [parameters], [initial], [axle] (tilt, spin, precession, nutation, quaternion, rates), [view], plot_points",
             )
         })?;
         let model = raw.model.ok_or_else(|| {
@@ -412,6 +428,7 @@ impl Scene {
             view: raw.view,
             t_final,
             output_step,
+            plot_points: text.plot_points(raw.plot_points)?,
             outputs,
             integrator,
         })

@@ -247,7 +247,7 @@ fn integrate<M: GeneratedModel>(
         sys.expand(y_red, &mut full_y);
         y_end.copy_from_slice(&full_y);
         if needs_rates {
-            M::rhs(t, &full_y, params, &mut dy);
+            sys.inner.rhs(t, &full_y, &mut dy);
         }
         let mut row = Vec::with_capacity(columns.len() + 1);
         row.push(t);

@@ -62,3 +62,9 @@ fn accuracy_must_be_positive_and_needs_an_adaptive_method() {
     assert!(e.starts_with("bad.toml:6:12: error: accuracy needs an adaptive method"), "{e}");
     assert!(e.contains("dop853"), "{e}");
 }
+
+#[test]
+fn plot_points_must_be_in_range() {
+    let e = error("model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\nplot_points = 0\n");
+    assert!(e.starts_with("bad.toml:4:15: error: plot_points must be 1 to 1000, not 0"), "{e}");
+}

@@ -111,184 +111,196 @@ fn ops(m: &LoadedModel, roots: &[ExprId]) -> usize {
 
 fn run(command: Command) -> Result<(), String> {
     match command {
-        Command::Check { file } => {
-            let m = load(&file)?;
-            match &m.equations {
-                Some(e) => {
-                    let mm: Vec<ExprId> = e.mass_matrix.iter().flatten().copied().collect();
-                    println!(
-                        "{}: ok: {} coordinates ({}), {} speeds ({}), {} bodies; M {n}x{n} in {} operations, f in {}",
-                        file.display(),
-                        e.coordinates.len(),
-                        names(&m, &e.coordinates).join(", "),
-                        e.speeds.len(),
-                        names(&m, &e.speeds).join(", "),
-                        m.model.bodies().len(),
-                        ops(&m, &mm),
-                        ops(&m, &e.forcing),
-                        n = e.speeds.len(),
-                    );
-                }
-                None => println!("{}: ok: no KANE() in this file", file.display()),
-            }
-            Ok(())
+        Command::Check { file } => check(file),
+        Command::Eoms { file, format } => eoms(file, format),
+        Command::Eval { file, set, json } => eval(file, set, json),
+        Command::Gen { file, out, stats } => gen(file, out, stats),
+        Command::Compare { file, hand } => compare(file, hand),
+    }
+}
+
+/// `kane check`: the model loads; sizes of its equations.
+fn check(file: PathBuf) -> Result<(), String> {
+    let m = load(&file)?;
+    match &m.equations {
+        Some(e) => {
+            let mm: Vec<ExprId> = e.mass_matrix.iter().flatten().copied().collect();
+            println!(
+                "{}: ok: {} coordinates ({}), {} speeds ({}), {} bodies; M {n}x{n} in {} operations, f in {}",
+                file.display(),
+                e.coordinates.len(),
+                names(&m, &e.coordinates).join(", "),
+                e.speeds.len(),
+                names(&m, &e.speeds).join(", "),
+                m.model.bodies().len(),
+                ops(&m, &mm),
+                ops(&m, &e.forcing),
+                n = e.speeds.len(),
+            );
         }
-        Command::Eoms { file, format } => {
-            let mut m = load(&file)?;
-            let e = equations(&m, &file)?.clone();
-            let text = |m: &LoadedModel, x: ExprId| match format {
-                Format::Latex => m.model.ar.to_latex(x),
-                _ => m.model.ar.to_text(x),
-            };
-            let q = names(&m, &e.coordinates);
-            let u = names(&m, &e.speeds);
-            let kin: Vec<String> = e.kinematics.iter().map(|x| text(&m, *x)).collect();
-            let mass: Vec<Vec<String>> =
-                e.mass_matrix.iter().map(|r| r.iter().map(|x| text(&m, *x)).collect()).collect();
-            let forcing: Vec<String> = e.forcing.iter().map(|x| text(&m, *x)).collect();
-            let frames: Vec<_> = m.model.bodies().iter().map(|b| b.frame).collect();
-            let points: Vec<_> = m.model.bodies().iter().map(|b| b.mass_center).collect();
-            let table = m.model.partial_velocity_table(&frames, &points).map_err(|e| e.to_string())?;
-            match format {
-                Format::Json => {
-                    let v = serde_json::json!({
-                        "coordinates": q, "speeds": u, "kinematics": kin,
-                        "partial_velocities": table.lines().collect::<Vec<_>>(),
-                        "mass_matrix": mass, "forcing": forcing,
-                    });
-                    println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
-                }
-                _ => {
-                    println!("% Kinematic equations");
-                    for (qi, k) in q.iter().zip(&kin) {
-                        println!("{qi}' = {k}");
-                    }
-                    println!("\n% Partial velocities and partial angular velocities");
-                    print!("{table}");
-                    println!("\n% Mass matrix M (M u' = f)");
-                    for (i, row) in mass.iter().enumerate() {
-                        for (j, x) in row.iter().enumerate() {
-                            println!("M[{},{}] = {x}", i + 1, j + 1);
-                        }
-                    }
-                    println!("\n% Forcing f");
-                    for (i, x) in forcing.iter().enumerate() {
-                        println!("f[{}] = {x}", i + 1);
-                    }
-                }
-            }
-            Ok(())
+        None => println!("{}: ok: no KANE() in this file", file.display()),
+    }
+    Ok(())
+}
+
+/// `kane eoms`: the equations of motion, printed.
+fn eoms(file: PathBuf, format: Format) -> Result<(), String> {
+    let mut m = load(&file)?;
+    let e = equations(&m, &file)?.clone();
+    let text = |m: &LoadedModel, x: ExprId| match format {
+        Format::Latex => m.model.ar.to_latex(x),
+        _ => m.model.ar.to_text(x),
+    };
+    let q = names(&m, &e.coordinates);
+    let u = names(&m, &e.speeds);
+    let kin: Vec<String> = e.kinematics.iter().map(|x| text(&m, *x)).collect();
+    let mass: Vec<Vec<String>> =
+        e.mass_matrix.iter().map(|r| r.iter().map(|x| text(&m, *x)).collect()).collect();
+    let forcing: Vec<String> = e.forcing.iter().map(|x| text(&m, *x)).collect();
+    let frames: Vec<_> = m.model.bodies().iter().map(|b| b.frame).collect();
+    let points: Vec<_> = m.model.bodies().iter().map(|b| b.mass_center).collect();
+    let table = m.model.partial_velocity_table(&frames, &points).map_err(|e| e.to_string())?;
+    match format {
+        Format::Json => {
+            let v = serde_json::json!({
+                "coordinates": q, "speeds": u, "kinematics": kin,
+                "partial_velocities": table.lines().collect::<Vec<_>>(),
+                "mass_matrix": mass, "forcing": forcing,
+            });
+            println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
         }
-        Command::Eval { file, set, json } => {
-            let m = load(&file)?;
-            let e = equations(&m, &file)?;
-            let mut values: BTreeMap<String, f64> =
-                m.inputs.iter().map(|i| (i.name.to_ascii_uppercase(), i.value)).collect();
-            for s in &set {
-                let (k, v) = s.split_once('=').ok_or_else(|| format!("--set {s}: expected NAME=VALUE"))?;
-                let v: f64 =
-                    v.trim().parse().map_err(|_| format!("--set {s}: `{}` is not a number", v.trim()))?;
-                let key = k.trim().to_ascii_uppercase();
-                if m.model.ar.symbols().all(|(_, info)| info.name.to_ascii_uppercase() != key) {
-                    return Err(format!("--set {s}: the model has no symbol `{}`", k.trim()));
-                }
-                values.insert(key, v);
+        _ => {
+            println!("% Kinematic equations");
+            for (qi, k) in q.iter().zip(&kin) {
+                println!("{qi}' = {k}");
             }
-            let ar = &m.model.ar;
-            let mut roots: Vec<ExprId> = e.mass_matrix.iter().flatten().copied().collect();
-            roots.extend(&e.forcing);
-            roots.extend(&e.kinematics);
-            let missing: Vec<String> = ar
-                .free_symbols(&roots)
-                .into_iter()
-                .map(|s| ar.symbol_info(s).name.clone())
-                .filter(|n| !values.contains_key(&n.to_ascii_uppercase()))
-                .collect();
-            if !missing.is_empty() {
-                return Err(format!(
-                    "{}: no value for {}; give them with --set NAME=VALUE or INPUT",
-                    file.display(),
-                    missing.join(", ")
-                ));
-            }
-            let value_of = |s: SymbolId| values.get(&ar.symbol_info(s).name.to_ascii_uppercase()).copied();
-            let at = |x: ExprId| ar.eval(&[x], value_of).map(|v| v[0]).map_err(|err| err.to_string());
-            let n = e.speeds.len();
-            let mass = DMatrix::from_fn(n, n, |i, j| at(e.mass_matrix[i][j]).unwrap_or(f64::NAN));
-            let forcing = DVector::from_fn(n, |i, _| at(e.forcing[i]).unwrap_or(f64::NAN));
-            for x in &roots {
-                at(*x)?;
-            }
-            let qdot = e.kinematics.iter().map(|x| at(*x)).collect::<Result<Vec<f64>, String>>()?;
-            let udot =
-                mass.clone().lu().solve(&forcing).ok_or("the mass matrix is singular at this state")?;
-            let rows: Vec<Vec<f64>> = (0..n).map(|i| (0..n).map(|j| mass[(i, j)]).collect()).collect();
-            if json {
-                let v = serde_json::json!({
-                    "coordinates": names(&m, &e.coordinates), "speeds": names(&m, &e.speeds),
-                    "mass_matrix": rows, "forcing": forcing.iter().collect::<Vec<_>>(),
-                    "qdot": qdot, "udot": udot.iter().collect::<Vec<_>>(),
-                });
-                println!("{v}");
-            } else {
-                for (name, v) in names(&m, &e.coordinates).iter().zip(&qdot) {
-                    println!("{name}' = {v}");
-                }
-                for (name, v) in names(&m, &e.speeds).iter().zip(udot.iter()) {
-                    println!("{name}' = {v}");
+            println!("\n% Partial velocities and partial angular velocities");
+            print!("{table}");
+            println!("\n% Mass matrix M (M u' = f)");
+            for (i, row) in mass.iter().enumerate() {
+                for (j, x) in row.iter().enumerate() {
+                    println!("M[{},{}] = {x}", i + 1, j + 1);
                 }
             }
-            Ok(())
-        }
-        Command::Gen { file, out, stats } => {
-            let emitted = kane_model::build::generate_file(&file, &read(&file)?).map_err(|e| match e {
-                kane_model::build::BuildError::Model(report) => report.render(),
-                other => other.to_string(),
-            })?;
-            let source = kane_model::codegen::to_source(&emitted).map_err(|e| e.to_string())?;
-            match out {
-                Some(path) => {
-                    // Written to a temporary file, then renamed: never a half-written module.
-                    let tmp = path.with_extension("rs.tmp");
-                    std::fs::write(&tmp, &source).map_err(|e| format!("{}: {e}", tmp.display()))?;
-                    std::fs::rename(&tmp, &path).map_err(|e| format!("{}: {e}", path.display()))?;
-                }
-                None => print!("{source}"),
-            }
-            if stats {
-                eprintln!(
-                    "lowered program: rhs {} operations per call; outputs {} operations for all of them",
-                    emitted.op_counts.0, emitted.op_counts.1
-                );
-            }
-            Ok(())
-        }
-        Command::Compare { file, hand } => {
-            let (src, hand_src) = (read(&file)?, read(&hand)?);
-            let results =
-                lang::compare(&file.display().to_string(), &src, &hand.display().to_string(), &hand_src)
-                    .map_err(|r| r.render())?;
-            let mut differs = false;
-            for c in results {
-                let line = match c.verdict {
-                    Equivalence::Proven => "proven equal".to_string(),
-                    Equivalence::NumericallyEqual { samples, max_relative_residual, tolerance } => format!(
-                        "numerically equal at {samples} random points (largest relative residual {max_relative_residual:.1e}, tolerance {tolerance:.0e})"
-                    ),
-                    Equivalence::Differs { point, lhs, rhs } => {
-                        differs = true;
-                        let at: Vec<String> = point.iter().map(|(n, v)| format!("{n} = {v:.6}")).collect();
-                        format!("DIFFERS: hand {lhs}, derived {rhs}, residual {:.3e} at {}", lhs - rhs, at.join(", "))
-                    }
-                    Equivalence::Inconclusive => "inconclusive: no point where both sides are finite".to_string(),
-                };
-                println!("{}: {line}", c.label);
-            }
-            if differs {
-                Err("some equations differ".into())
-            } else {
-                Ok(())
+            println!("\n% Forcing f");
+            for (i, x) in forcing.iter().enumerate() {
+                println!("f[{}] = {x}", i + 1);
             }
         }
+    }
+    Ok(())
+}
+
+/// `kane eval`: the equations evaluated at a state.
+fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
+    let m = load(&file)?;
+    let e = equations(&m, &file)?;
+    let mut values: BTreeMap<String, f64> =
+        m.inputs.iter().map(|i| (i.name.to_ascii_uppercase(), i.value)).collect();
+    for s in &set {
+        let (k, v) = s.split_once('=').ok_or_else(|| format!("--set {s}: expected NAME=VALUE"))?;
+        let v: f64 = v.trim().parse().map_err(|_| format!("--set {s}: `{}` is not a number", v.trim()))?;
+        let key = k.trim().to_ascii_uppercase();
+        if m.model.ar.symbols().all(|(_, info)| info.name.to_ascii_uppercase() != key) {
+            return Err(format!("--set {s}: the model has no symbol `{}`", k.trim()));
+        }
+        values.insert(key, v);
+    }
+    let ar = &m.model.ar;
+    let mut roots: Vec<ExprId> = e.mass_matrix.iter().flatten().copied().collect();
+    roots.extend(&e.forcing);
+    roots.extend(&e.kinematics);
+    let missing: Vec<String> = ar
+        .free_symbols(&roots)
+        .into_iter()
+        .map(|s| ar.symbol_info(s).name.clone())
+        .filter(|n| !values.contains_key(&n.to_ascii_uppercase()))
+        .collect();
+    if !missing.is_empty() {
+        return Err(format!(
+            "{}: no value for {}; give them with --set NAME=VALUE or INPUT",
+            file.display(),
+            missing.join(", ")
+        ));
+    }
+    let value_of = |s: SymbolId| values.get(&ar.symbol_info(s).name.to_ascii_uppercase()).copied();
+    let at = |x: ExprId| ar.eval(&[x], value_of).map(|v| v[0]).map_err(|err| err.to_string());
+    let n = e.speeds.len();
+    let mass = DMatrix::from_fn(n, n, |i, j| at(e.mass_matrix[i][j]).unwrap_or(f64::NAN));
+    let forcing = DVector::from_fn(n, |i, _| at(e.forcing[i]).unwrap_or(f64::NAN));
+    for x in &roots {
+        at(*x)?;
+    }
+    let qdot = e.kinematics.iter().map(|x| at(*x)).collect::<Result<Vec<f64>, String>>()?;
+    let udot = mass.clone().lu().solve(&forcing).ok_or("the mass matrix is singular at this state")?;
+    let rows: Vec<Vec<f64>> = (0..n).map(|i| (0..n).map(|j| mass[(i, j)]).collect()).collect();
+    if json {
+        let v = serde_json::json!({
+            "coordinates": names(&m, &e.coordinates), "speeds": names(&m, &e.speeds),
+            "mass_matrix": rows, "forcing": forcing.iter().collect::<Vec<_>>(),
+            "qdot": qdot, "udot": udot.iter().collect::<Vec<_>>(),
+        });
+        println!("{v}");
+    } else {
+        for (name, v) in names(&m, &e.coordinates).iter().zip(&qdot) {
+            println!("{name}' = {v}");
+        }
+        for (name, v) in names(&m, &e.speeds).iter().zip(udot.iter()) {
+            println!("{name}' = {v}");
+        }
+    }
+    Ok(())
+}
+
+/// `kane gen`: the generated Rust module, written atomically.
+fn gen(file: PathBuf, out: Option<PathBuf>, stats: bool) -> Result<(), String> {
+    let emitted = kane_model::build::generate_file(&file, &read(&file)?).map_err(|e| match e {
+        kane_model::build::BuildError::Model(report) => report.render(),
+        other => other.to_string(),
+    })?;
+    let source = kane_model::codegen::to_source(&emitted).map_err(|e| e.to_string())?;
+    match out {
+        Some(path) => {
+            // Written to a temporary file, then renamed: never a half-written module.
+            let tmp = path.with_extension("rs.tmp");
+            std::fs::write(&tmp, &source).map_err(|e| format!("{}: {e}", tmp.display()))?;
+            std::fs::rename(&tmp, &path).map_err(|e| format!("{}: {e}", path.display()))?;
+        }
+        None => print!("{source}"),
+    }
+    if stats {
+        eprintln!(
+            "lowered program: rhs {} operations per call; outputs {} operations for all of them",
+            emitted.op_counts.0, emitted.op_counts.1
+        );
+    }
+    Ok(())
+}
+
+/// `kane compare`: hand-derived equations against the derived ones.
+fn compare(file: PathBuf, hand: PathBuf) -> Result<(), String> {
+    let (src, hand_src) = (read(&file)?, read(&hand)?);
+    let results = lang::compare(&file.display().to_string(), &src, &hand.display().to_string(), &hand_src)
+        .map_err(|r| r.render())?;
+    let mut differs = false;
+    for c in results {
+        let line = match c.verdict {
+            Equivalence::Proven => "proven equal".to_string(),
+            Equivalence::NumericallyEqual { samples, max_relative_residual, tolerance } => format!(
+                "numerically equal at {samples} random points (largest relative residual {max_relative_residual:.1e}, tolerance {tolerance:.0e})"
+            ),
+            Equivalence::Differs { point, lhs, rhs } => {
+                differs = true;
+                let at: Vec<String> = point.iter().map(|(n, v)| format!("{n} = {v:.6}")).collect();
+                format!("DIFFERS: hand {lhs}, derived {rhs}, residual {:.3e} at {}", lhs - rhs, at.join(", "))
+            }
+            Equivalence::Inconclusive => "inconclusive: no point where both sides are finite".to_string(),
+        };
+        println!("{}: {line}", c.label);
+    }
+    if differs {
+        Err("some equations differ".into())
+    } else {
+        Ok(())
     }
 }
