@@ -19,3 +19,4 @@ pub mod run;
 pub mod scene;
 pub mod solve;
 pub mod trajectory;
+pub mod unit_norm;

@@ -69,6 +69,12 @@ fn print_summary(title: &str, summary: &run::RunSummary) {
     for line in conserved_drifts(t) {
         println!("{line}");
     }
+    if let Some(d) = t.norm_drift {
+        println!(
+            "Euler-parameter norm: largest drift {:.2e} (projected back past {:.0e}: {} times); outputs use the normalised parameters",
+            d.largest, d.threshold, d.projections
+        );
+    }
     if let Some(a) = t.accuracy {
         println!(
             "accuracy {:e} asked: {} runs; the written one (rtol {:.1e}, atol {:.1e}) differs by {:.2e} from the run before (about that run's error; the written run's is far smaller)",

@@ -37,6 +37,8 @@ pub struct Problem {
     pub accuracy: Option<f64>,
     /// The columns to write, in order.
     pub picks: Vec<Pick>,
+    /// Groups of states held at unit norm (Euler parameters), as state indices.
+    pub unit_norms: Vec<Vec<usize>>,
 }
 
 /// Output times `i * step` (never by repeated addition) up to `t_final`, which is the last one

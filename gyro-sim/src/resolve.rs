@@ -37,6 +37,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
         method,
         accuracy: scene.integrator.accuracy,
         picks: picks(scene, info)?,
+        unit_norms: unit_norms(scene, info)?,
     })
 }
 
@@ -104,6 +105,14 @@ fn initial_state(scene: &Scene, entry: &ModelEntry) -> Result<Vec<f64>, SceneErr
         ));
     }
     Ok(y)
+}
+
+/// The state groups held at unit norm: `[axle]`'s Euler parameters.
+fn unit_norms(scene: &Scene, info: &ModelInfo) -> Result<Vec<Vec<usize>>, SceneError> {
+    match &scene.axle {
+        Some(axle) => Ok(vec![axle_states(scene, info, &axle.quaternion, &[])?]),
+        None => Ok(Vec::new()),
+    }
 }
 
 /// The `[axle]` table applied to `y` (which holds the model's defaults and the `[initial]`

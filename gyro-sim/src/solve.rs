@@ -13,6 +13,7 @@ use crate::problem::{Pick, Problem};
 use crate::refine::refine;
 use crate::registry::Registry;
 use crate::trajectory::{Column, Trajectory};
+use crate::unit_norm::{normalise, NormDrift, UnitNorm};
 
 /// Why an integration failed.
 #[derive(Clone, Debug, PartialEq, Error)]
@@ -137,6 +138,7 @@ pub(crate) struct Integration {
     pub(crate) rows: Vec<Vec<f64>>,
     pub(crate) plot_rows: Vec<Vec<f64>>,
     pub(crate) y_end: Vec<f64>,
+    pub(crate) norm_drift: Option<NormDrift>,
 }
 
 /// Integrates `problem` with the generated model `M`.
@@ -152,10 +154,11 @@ pub fn solve_model<M: GeneratedModel>(problem: &Problem) -> Result<Trajectory, S
     let columns = columns(problem);
     let integrate_at = |method: Method| integrate::<M>(problem, &sys, &keep, &columns, method);
     let start = Instant::now();
-    let (Integration { stats, rows, plot_rows, y_end }, accuracy) = match (problem.accuracy, problem.method) {
-        (Some(goal), Method::Adaptive(tab, tol)) => refine(goal, tab, tol, integrate_at)?,
-        _ => (integrate_at(problem.method)?, None),
-    };
+    let (Integration { stats, rows, plot_rows, y_end, norm_drift }, accuracy) =
+        match (problem.accuracy, problem.method) {
+            (Some(goal), Method::Adaptive(tab, tol)) => refine(goal, tab, tol, integrate_at)?,
+            _ => (integrate_at(problem.method)?, None),
+        };
     let wall = start.elapsed();
     let t_end = *problem.times.last().unwrap_or(&0.0);
     let kinetic_energy = kinetic_energy_output::<M>().map(|k| {
@@ -176,6 +179,7 @@ pub fn solve_model<M: GeneratedModel>(problem: &Problem) -> Result<Trajectory, S
         integrated: keep.iter().map(|k| info.state_names[*k]).collect(),
         kinetic_energy,
         accuracy,
+        norm_drift,
     })
 }
 
@@ -243,8 +247,11 @@ fn integrate<M: GeneratedModel>(
     let all_times = merged(&problem.times, &problem.plot_times);
     let mut plot_rows: Vec<Vec<f64>> = Vec::new();
     let mut next_output = 0;
-    let result = ode::integrate(sys, 0.0, &y_start, &all_times, method, |t, y_red| {
+    let groups = reduced_groups(&problem.unit_norms, keep);
+    let held = UnitNorm::new(sys, &groups, norm_threshold(method));
+    let result = ode::integrate(&held, 0.0, &y_start, &all_times, method, |t, y_red| {
         sys.expand(y_red, &mut full_y);
+        normalise(&problem.unit_norms, &mut full_y);
         y_end.copy_from_slice(&full_y);
         if needs_rates {
             sys.inner.rhs(t, &full_y, &mut dy);
@@ -284,7 +291,24 @@ fn integrate<M: GeneratedModel>(
     })?;
     match bad {
         Some(e) => Err(e),
-        None => Ok(Integration { stats, rows, plot_rows, y_end }),
+        None => {
+            let norm_drift = (!groups.is_empty()).then(|| held.drift());
+            Ok(Integration { stats, rows, plot_rows, y_end, norm_drift })
+        }
+    }
+}
+
+/// The unit-norm groups as indices into the integrated states `keep`.
+fn reduced_groups(groups: &[Vec<usize>], keep: &[usize]) -> Vec<Vec<usize>> {
+    groups.iter().map(|g| g.iter().filter_map(|i| keep.iter().position(|k| k == i)).collect()).collect()
+}
+
+/// How far a unit norm may drift before it is projected back: the method's tolerance (a
+/// fixed-step method's state is held to 1e-10).
+fn norm_threshold(method: Method) -> f64 {
+    match method {
+        Method::Adaptive(_, tol) => tol.rtol.max(tol.atol),
+        Method::Fixed(..) => 1e-10,
     }
 }
 

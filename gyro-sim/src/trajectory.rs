@@ -4,6 +4,7 @@
 use std::time::Duration;
 
 use crate::ode::Stats;
+use crate::unit_norm::NormDrift;
 
 /// One column after `t`.
 #[derive(Clone, Debug, PartialEq)]
@@ -61,4 +62,6 @@ pub struct Trajectory {
     pub kinetic_energy: Option<(f64, f64)>,
     /// How an asked accuracy was met.
     pub accuracy: Option<Accuracy>,
+    /// How far the unit-norm states (Euler parameters) drifted, when the problem has any.
+    pub norm_drift: Option<NormDrift>,
 }

@@ -43,6 +43,7 @@ fn trajectory() -> Trajectory {
         integrated: vec![],
         kinetic_energy: None,
         accuracy: None,
+        norm_drift: None,
     }
 }
 

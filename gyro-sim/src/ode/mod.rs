@@ -28,6 +28,12 @@ pub trait System {
     fn dim(&self) -> usize;
     /// Writes `f(t, y)` into `dy`.
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]);
+    /// Moves `y` back onto an invariant manifold when it has drifted too far (before a step);
+    /// true when it moved. None by default.
+    #[inline(always)]
+    fn project(&self, _y: &mut [f64]) -> bool {
+        false
+    }
 }
 
 /// Why an integration or a stepper's request failed.

@@ -128,6 +128,14 @@ impl<'a, S: System + ?Sized, const N: usize> Work<'a, S, N> {
         self.start_ready = true;
     }
 
+    /// Stage 0 evaluated afresh at `(t, y)`: the state was moved since the last step.
+    pub(super) fn restart(&mut self, t: f64, y: &[f64]) {
+        let n = self.n();
+        self.sys.rhs(t, y, &mut self.k[..n]);
+        self.stats.rhs_evals += 1;
+        self.start_ready = true;
+    }
+
     /// One step of size `h` from `(t, y)`, with stage 0 = f(t, y): fills `ynew` and the stages.
     pub(super) fn step(&mut self, t: f64, y: &[f64], h: f64) {
         if self.step_unrolled(t, y, h) {

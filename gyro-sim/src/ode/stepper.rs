@@ -155,13 +155,19 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
         stats
     }
 
-    /// Takes one accepted step, or none when the stepper is at the stop time already. After an
+    /// Takes one accepted step, or none when the stepper is at the stop time already; first the
+    /// system may project the state (then the last step can no longer be interpolated). After an
     /// error the state is the last accepted one, and only it can be interpolated (the failed
     /// attempt overwrote the stages).
     #[inline(always)]
     pub fn step(&mut self) -> Result<StopReason, OdeError> {
         if self.stop.is_some_and(|stop| self.t >= stop) {
             return Ok(StopReason::StopTimeReached);
+        }
+        if self.work.sys.project(&mut self.y) {
+            check_finite(self.t, &self.y)?;
+            self.work.restart(self.t, &self.y);
+            self.t_prev = self.t;
         }
         let result = match self.method {
             Method::Adaptive(_, tol) => self.adaptive_step(tol),

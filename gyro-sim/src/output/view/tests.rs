@@ -103,6 +103,7 @@ fn trajectory() -> Trajectory {
         integrated: vec![],
         kinetic_energy: None,
         accuracy: None,
+        norm_drift: None,
     }
 }
 
