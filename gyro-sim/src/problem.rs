@@ -35,8 +35,11 @@ pub struct Problem {
     pub method: Method,
     /// The largest error asked of the trajectory (tolerances refined until it is met).
     pub accuracy: Option<f64>,
-    /// The columns to write, in order.
+    /// The columns, in order: the first `written_picks` are written to the CSV and the
+    /// figures, the rest only feed the 3-D view.
     pub picks: Vec<Pick>,
+    /// How many of `picks` are written.
+    pub written_picks: usize,
     /// Groups of states held at unit norm (Euler parameters), as state indices.
     pub unit_norms: Vec<Vec<usize>>,
 }

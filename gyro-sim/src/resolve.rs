@@ -23,6 +23,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
     let info = entry.info;
     let times = output_times(scene.t_final, scene.output_step);
     let method = method(scene);
+    let written = picks(scene, info)?;
     Ok(Problem {
         title: scene.title.clone(),
         model: info,
@@ -36,7 +37,8 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
         },
         method,
         accuracy: scene.integrator.accuracy,
-        picks: picks(scene, info)?,
+        written_picks: written.len(),
+        picks: with_view_picks(scene, info, written)?,
         unit_norms: unit_norms(scene, info)?,
     })
 }
@@ -235,6 +237,35 @@ fn picks(scene: &Scene, info: &ModelInfo) -> Result<Vec<Pick>, SceneError> {
             }
         })
         .collect()
+}
+
+/// `written` and after them the outputs the scene's `[view]` reads that `written` lacks; an
+/// error at `[view]` for a column the model does not have.
+fn with_view_picks(scene: &Scene, info: &ModelInfo, mut picks: Vec<Pick>) -> Result<Vec<Pick>, SceneError> {
+    let Some(view) = &scene.view else { return Ok(picks) };
+    for (user, column) in view.columns() {
+        let pick = if let Some(i) = info.state(column) {
+            Pick::State(i)
+        } else if let Some(k) =
+            info.outputs.iter().position(|o| o.columns.iter().any(|c| c.eq_ignore_ascii_case(column)))
+        {
+            Pick::Output(k)
+        } else {
+            let known: Vec<&str> = info.outputs.iter().flat_map(|o| o.columns.iter().copied()).collect();
+            return Err(scene.error_at(
+                scene.view_span.clone(),
+                format!(
+                    "[view]: {user} reads `{column}`, which {} neither has as a state nor computes",
+                    info.name
+                ),
+                &format!("states: {}; output columns: {}", info.state_names.join(", "), known.join(", ")),
+            ));
+        };
+        if !picks.contains(&pick) {
+            picks.push(pick);
+        }
+    }
+    Ok(picks)
 }
 
 /// A scene value in the model's internal units (radians for angles).

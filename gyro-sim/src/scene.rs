@@ -31,6 +31,8 @@ pub struct Scene {
     pub axle: Option<Axle>,
     /// A 3-D view to write beside the results (`[view]`, see [`crate::output::ViewSpec`]).
     pub view: Option<crate::output::ViewSpec>,
+    /// Where `[view]` is (empty when none).
+    pub view_span: std::ops::Range<usize>,
     /// End time (start is 0).
     pub t_final: f64,
     /// Output step.
@@ -381,6 +383,21 @@ impl Text<'_> {
     }
 }
 
+/// Where the first `[view]` or `[[view.` table header is (empty when none): a dotted table
+/// array has no span of its own in the TOML reader.
+fn view_span(source: &str) -> Span {
+    let mut at = 0;
+    for line in source.split_inclusive('\n') {
+        let head = line.trim_start();
+        if head.starts_with("[view") || head.starts_with("[[view") {
+            let start = at + line.len() - head.len();
+            return start..start + head.trim_end().len();
+        }
+        at += line.len();
+    }
+    0..0
+}
+
 impl Scene {
     /// Reads and validates a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
@@ -425,6 +442,7 @@ impl Scene {
             parameters: text.values(raw.parameters)?,
             initial: text.values(raw.initial)?,
             axle: text.axle(raw.axle)?,
+            view_span: view_span(source),
             view: raw.view,
             t_final,
             output_step,

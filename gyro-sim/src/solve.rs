@@ -201,16 +201,18 @@ fn integrated_states(problem: &Problem) -> Vec<usize> {
     (0..needed.len()).filter(|i| needed[*i] || !info.cyclic.contains(i)).collect()
 }
 
-/// The columns the picks write.
+/// The columns the picks write (those past `written_picks` hidden).
 fn columns(problem: &Problem) -> Vec<Column> {
     let info = problem.model;
     let mut out = Vec::new();
-    for p in &problem.picks {
+    for (n, p) in problem.picks.iter().enumerate() {
+        let hidden = n >= problem.written_picks;
         match *p {
             Pick::State(i) => out.push(Column {
                 name: info.state_names[i].to_string(),
                 unit: info.state_units[i].to_string(),
                 output: false,
+                hidden,
             }),
             Pick::Output(k) => {
                 let o = &info.outputs[k];
@@ -218,6 +220,7 @@ fn columns(problem: &Problem) -> Vec<Column> {
                     name: c.to_string(),
                     unit: o.unit.to_string(),
                     output: true,
+                    hidden,
                 }));
             }
         }

@@ -15,6 +15,8 @@ pub struct Column {
     pub unit: String,
     /// Whether it is a model output (not a state).
     pub output: bool,
+    /// Computed only for the 3-D view: not written to the CSV or the figures.
+    pub hidden: bool,
 }
 
 impl Column {

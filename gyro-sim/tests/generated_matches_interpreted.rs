@@ -62,7 +62,7 @@ fn generated_outputs_equal_the_interpreted_ones() {
         vals.extend(gimbal::INFO.state_names.iter().zip(&y).map(|(n, v)| (n.to_string(), *v)));
         let (_, udot) = interpreted_rhs(ar, &eqs, &|n| vals.iter().find(|(k, _)| k == n).map(|(_, v)| *v));
         vals.extend(["U1'", "U2'", "U3'"].iter().zip(&udot).map(|(n, v)| (n.to_string(), *v)));
-        let mut out = [0.0; gimbal::N_OUTPUTS];
+        let mut out = [0.0; gimbal::N_OUTPUT_COLUMNS];
         gimbal::outputs(0.0, &y, &p, &mut out);
         let want = value_of(ar, ap, &|n| vals.iter().find(|(k, _)| k == n).map(|(_, v)| *v));
         worst = worst.max((out[0] - want).abs() / want.abs().max(1.0));
@@ -125,4 +125,40 @@ fn jacobian_matches_central_differences() {
             );
         }
     }
+}
+
+#[test]
+fn direction_cosine_outputs_are_the_gimbal_rotations() {
+    // `OUTPUT A_B, A_C, A_D`: A_X_ij = a_i . x_j. SIMPROT(A, B, -2, Q1) turns B about -A2, so
+    // A_B = [[c1, 0, -s1], [0, 1, 0], [s1, 0, c1]]; each matrix is orthonormal and
+    // A_D = A_C * C_D with C_D the turn about -C2 by Q3.
+    let p = gimbal::Params::default();
+    let dcm = |name: &str, y: &[f64]| -> [[f64; 3]; 3] {
+        let k = gimbal::INFO.output(name).unwrap();
+        assert_eq!(gimbal::INFO.outputs[k].kind, "dcm");
+        let mut out = [0.0; 9];
+        gimbal::Model::output(k, 0.0, y, &[], &p, &mut out);
+        [[out[0], out[1], out[2]], [out[3], out[4], out[5]], [out[6], out[7], out[8]]]
+    };
+    let y: [f64; 6] = [0.7, -0.4, 1.9, 0.0, 0.0, 0.0];
+    let (s1, c1) = y[0].sin_cos();
+    let b = dcm("A_B", &y);
+    let want = [[c1, 0.0, -s1], [0.0, 1.0, 0.0], [s1, 0.0, c1]];
+    for (r, w) in b.iter().zip(&want) {
+        for (x, v) in r.iter().zip(w) {
+            assert!((x - v).abs() < 1e-15, "A_B {b:?} vs {want:?}");
+        }
+    }
+    let (s3, c3) = y[2].sin_cos();
+    let c_d = [[c3, 0.0, -s3], [0.0, 1.0, 0.0], [s3, 0.0, c3]];
+    let (c, d) = (dcm("A_C", &y), dcm("A_D", &y));
+    for i in 0..3 {
+        for j in 0..3 {
+            let product: f64 = (0..3).map(|k| c[i][k] * c_d[k][j]).sum();
+            assert!((product - d[i][j]).abs() < 1e-15, "A_D[{i}][{j}]");
+            let gram: f64 = (0..3).map(|k| d[k][i] * d[k][j]).sum();
+            assert!((gram - f64::from(u8::from(i == j))).abs() < 1e-15, "A_D orthonormal");
+        }
+    }
+    assert_eq!(gimbal::INFO.outputs[gimbal::INFO.output("A_D").unwrap()].columns[5], "A_D_23");
 }

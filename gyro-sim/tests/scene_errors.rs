@@ -68,3 +68,30 @@ fn plot_points_must_be_in_range() {
     let e = error("model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\nplot_points = 0\n");
     assert!(e.starts_with("bad.toml:4:15: error: plot_points must be 1 to 1000, not 0"), "{e}");
 }
+
+#[test]
+fn a_view_reading_a_column_the_model_lacks() {
+    let head = "model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n";
+    let body = "[[view.bodies]]\nname = \"rotor\"\nshape = { kind = \"rod\", length = 1.0 }\ncolour = \"#000000\"\norientation = { quaternion = [\"Q_E0\", \"Q_E1\", \"Q_E2\", \"Q_E3\"] }\n";
+    let e = error(&format!("{head}{body}"));
+    assert!(e.starts_with("bad.toml:4:1: error: [view]: body rotor reads `Q_E0`"), "{e}");
+    assert!(e.contains("A_D_11"), "names the columns there are: {e}");
+}
+
+#[test]
+fn view_columns_are_computed_but_not_written() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/paper/trial3.toml");
+    let scene = Scene::load(std::path::Path::new(path)).unwrap();
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("view_columns");
+    let summary = run(&scene, Some(&dir)).unwrap();
+    let t = &summary.trajectory;
+    assert!(t.columns.iter().any(|c| c.name == "A_D_11" && c.hidden));
+    assert!(t.columns.iter().filter(|c| !c.hidden).all(|c| !c.name.starts_with("A_")));
+    let csv = std::fs::read_to_string(dir.join("trajectory.csv")).unwrap();
+    assert_eq!(
+        csv.lines().next().unwrap(),
+        "t,q1_deg,q2_deg,q3_deg,u1_rad_per_s,u2_rad_per_s,u3_rad_per_s,ap_m_per_s2"
+    );
+    let page = std::fs::read_to_string(dir.join("view.html")).unwrap();
+    assert!(page.contains("\"A_D_11\""), "the view carries the rotor's direction cosines");
+}

@@ -24,8 +24,10 @@ const HEIGHT: u32 = 600;
 
 fn trajectory() -> Trajectory {
     let names = ["Q_E0", "Q_E1", "Q_E2", "Q_E3", "L_N1", "L_N2", "L_N3"];
-    let columns =
-        names.iter().map(|n| Column { name: n.to_string(), unit: String::new(), output: true }).collect();
+    let columns = names
+        .iter()
+        .map(|n| Column { name: n.to_string(), unit: String::new(), output: true, hidden: false })
+        .collect();
     let rows = (0..=400)
         .map(|i| {
             let t = i as f64 * 0.01;
@@ -58,6 +60,7 @@ fn view() -> ViewSpec {
                 orientation: Orientation::Quaternion(q.clone()),
                 offset: [ARM, 0.0, 0.0],
                 opacity: 1.0,
+                axis: 3,
             },
             BodyView {
                 name: "arm".to_string(),
@@ -66,6 +69,7 @@ fn view() -> ViewSpec {
                 orientation: Orientation::Quaternion(q),
                 offset: [ARM / 2.0, 0.0, 0.0],
                 opacity: 1.0,
+                axis: 3,
             },
         ],
         arrows: vec![ArrowView {
@@ -79,6 +83,8 @@ fn view() -> ViewSpec {
             point: [ARM, 0.0, 0.0],
             colour: "#202020".to_string(),
         }],
+        up: 3,
+        frame: "N".to_string(),
     }
 }
 
@@ -92,8 +98,13 @@ fn folder(name: &str) -> PathBuf {
 
 /// The page written for the synthetic run.
 fn page(dir: &Path) -> PathBuf {
+    page_of(dir, &view())
+}
+
+/// The page of the synthetic run drawn as `view` says.
+fn page_of(dir: &Path, view: &ViewSpec) -> PathBuf {
     let path = dir.join("view.html");
-    write_view(&trajectory(), &view(), &path).expect("view written");
+    write_view(&trajectory(), view, &path).expect("view written");
     path
 }
 
@@ -234,6 +245,20 @@ fn the_ball_is_where_the_run_puts_it() {
         let near_other = magenta.iter().filter(|p| (p.0 - ox).hypot(p.1 - oy) < 20.0).count();
         assert_eq!(near_other, 0, "t = {t}: no ball at ({ox:.0}, {oy:.0}), half a turn away");
     }
+}
+
+#[test]
+fn space_axis_two_drawn_up_turns_the_picture() {
+    let dir = folder("up");
+    let page = page_of(&dir, &ViewSpec { up: 2, ..view() });
+    // Drawn axes (x, y, z) are space (N3, N1, N2): at t = 0.5 the ball, at N2 * ARM in space,
+    // is drawn straight above the support.
+    let shot = screenshot(&page, &fragment(0.5, ""), "up2");
+    let [sx, sy, sz] = ball_at(0.5);
+    let (x, y) = project([sz, sx, sy], shot.1, shot.2);
+    let (mx, my) = mean(&where_(&shot, is_magenta));
+    let off = ((mx - x).powi(2) + (my - y).powi(2)).sqrt();
+    assert!(off < 12.0, "ball seen at ({mx:.0}, {my:.0}), drawn N2-up it is at ({x:.0}, {y:.0})");
 }
 
 #[test]

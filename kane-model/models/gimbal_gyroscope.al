@@ -64,4 +64,5 @@ OUTPUT T, Q1, Q2, Q3, U1, U2, U3                                       % 43
 AP = MAG(A_P_A>)          % added: |a_P|, which the paper plots on the right of Figures 3-5
 UNITS AP = M/SEC^2        % added
 OUTPUT AP                 % added
+OUTPUT A_B, A_C, A_D      % added: the frames' direction cosines (A_D_ij = a_i . d_j), for the 3-D view
 CODE DYNAMICS() PHASE3.M, SUBS                                         % 44

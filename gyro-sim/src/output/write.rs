@@ -59,9 +59,11 @@ pub fn write(trajectory: &Trajectory, dir: &Path) -> Result<Written, WriteError>
 
 /// The trajectory in display units, with CSV headers naming them.
 pub fn display_table(trajectory: &Trajectory) -> Table {
-    let columns: Vec<Column> = trajectory
-        .columns
+    let shown: Vec<usize> =
+        (0..trajectory.columns.len()).filter(|k| !trajectory.columns[*k].hidden).collect();
+    let columns: Vec<Column> = shown
         .iter()
+        .map(|k| &trajectory.columns[*k])
         .map(|c| Column {
             name: column_name(&c.name, &c.unit),
             label: c.name.clone(),
@@ -76,8 +78,8 @@ pub fn display_table(trajectory: &Trajectory) -> Table {
             .map(|row| {
                 let mut out = Vec::with_capacity(row.len());
                 out.push(row[0]);
-                let values = row[1..].iter().zip(&columns);
-                out.extend(values.map(|(v, c)| if c.degrees { v.to_degrees() } else { *v }));
+                let values = shown.iter().map(|k| row[k + 1]).zip(&columns);
+                out.extend(values.map(|(v, c)| if c.degrees { v.to_degrees() } else { v }));
                 out
             })
             .collect()

@@ -2,7 +2,8 @@
 //! file's equations, INPUT defaults, UNITS, its OUTPUT scalars and the kinetic energy.
 
 use crate::codegen::CodegenError;
-use crate::spec::ModelSpec;
+use crate::mechanics::FrameId;
+use crate::spec::{ModelSpec, OrientationForm};
 
 use super::{LoadedModel, Value};
 
@@ -23,9 +24,10 @@ impl LoadedModel {
             let unit = spec.unit(&oname).to_string();
             let oname = oname.as_str();
             match value {
-                Value::Vector(v) => spec.add_vector(oname, &v, n, &unit)?,
-                Value::Scalar(e) => spec.add_scalar(oname, e, &unit),
-                _ => return Err(CodegenError::UnknownOutput(oname.to_string())),
+                Output::Value(Value::Vector(v)) => spec.add_vector(oname, &v, n, &unit)?,
+                Output::Value(Value::Scalar(e)) => spec.add_scalar(oname, e, &unit),
+                Output::Orientation(f) => spec.add_orientation(oname, f, OrientationForm::Dcm)?,
+                Output::Value(_) => return Err(CodegenError::UnknownOutput(oname.to_string())),
             }
         }
         if !spec.outputs.iter().any(|o| o.name.eq_ignore_ascii_case("KE")) {
@@ -36,11 +38,12 @@ impl LoadedModel {
     }
 
     /// The OUTPUT names other than `T` and the states, each a scalar or a vector (`L>`, written
-    /// in the Newtonian frame) of the model; names without the `>`.
+    /// in the Newtonian frame) of the model, or a direction-cosine matrix `N_B` (`N` the
+    /// Newtonian frame, `B` a frame; entries `N_B_ij = n_i . b_j`); names without the `>`.
     fn output_values(
         &self,
         eqs: &crate::mechanics::KaneEquations,
-    ) -> Result<Vec<(String, Value)>, CodegenError> {
+    ) -> Result<Vec<(String, Output)>, CodegenError> {
         let mut out = Vec::new();
         for (oname, _) in &self.outputs {
             let is_state = eqs
@@ -53,10 +56,35 @@ impl LoadedModel {
             }
             let bare = oname.trim_end_matches('>');
             match self.value(oname).or_else(|| self.value(&format!("{bare}>"))) {
-                Some(v @ (Value::Scalar(_) | Value::Vector(_))) => out.push((bare.to_string(), v)),
-                _ => return Err(CodegenError::UnknownOutput(oname.clone())),
+                Some(v @ (Value::Scalar(_) | Value::Vector(_))) => {
+                    out.push((bare.to_string(), Output::Value(v)))
+                }
+                _ => match self.newtonian_dcm_of(oname) {
+                    Some(f) => out.push((bare.to_string(), Output::Orientation(f))),
+                    None => return Err(CodegenError::UnknownOutput(oname.clone())),
+                },
             }
         }
         Ok(out)
+    }
+}
+
+/// What one OUTPUT name computes.
+enum Output {
+    /// A scalar or a vector.
+    Value(Value),
+    /// The direction cosines of a frame in the Newtonian frame.
+    Orientation(FrameId),
+}
+
+impl LoadedModel {
+    /// The frame `B` when `name` is `N_B` with `N` the Newtonian frame (Autolev's name for the
+    /// direction-cosine matrix).
+    fn newtonian_dcm_of(&self, name: &str) -> Option<FrameId> {
+        let n = self.model.newtonian();
+        let (first, second) = name.split_once('_')?;
+        let newtonian = self.model.frame_name(n).eq_ignore_ascii_case(first);
+        let frame = self.model.frame(&second.to_ascii_uppercase()).or_else(|| self.model.frame(second))?;
+        newtonian.then_some(frame)
     }
 }

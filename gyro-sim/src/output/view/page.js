@@ -1,12 +1,27 @@
 // The view page's script: in come three.js (inline, as text) and the run (inline JSON: t, the
 // columns the view reads, the view itself); out comes the scene, played in time.
-// Space axes N1, N2, N3 are three's x, y, z, with z up.
+// Space axes N1, N2, N3 are three's x, y, z turned so that the view's `up` axis is z (a
+// cyclic permutation: the data are read through SPACE).
 
 const data = JSON.parse(document.getElementById('view-data').textContent);
 const params = readParams();
 const FOV = numbers('fov', 1)?.[0] ?? data.fov; // vertical field of view, degrees
 const DEFAULT_AZIMUTH = 40; // degrees from N1 toward N2
-const DEFAULT_ELEVATION = 20; // degrees above the N1-N2 plane
+const DEFAULT_ELEVATION = 20; // degrees above the horizontal plane
+
+/** The rotation from space axes to drawn axes that puts space axis `up` (1, 2, 3) upward. */
+function spaceTurn(up) {
+  const m = new THREE.Matrix4();
+  if (up === 1) m.set(0, 1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0, 0, 0, 1);
+  if (up === 2) m.set(0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 1);
+  return new THREE.Quaternion().setFromRotationMatrix(m);
+}
+
+/** The rotation turning a shape's z axis to body axis `axis` (1, 2, 3). */
+function axisTurn(axis) {
+  const to = [new THREE.Vector3(1, 0, 0), new THREE.Vector3(0, 1, 0), new THREE.Vector3(0, 0, 1)][(axis ?? 3) - 1];
+  return new THREE.Quaternion().setFromUnitVectors(new THREE.Vector3(0, 0, 1), to);
+}
 
 /** The parameters after `?` and after `#`, the latter winning. */
 function readParams() {
@@ -55,7 +70,7 @@ function quaternionAtRow(orientation, i) {
     const m = new THREE.Matrix4().set(c[0], c[1], c[2], 0, c[3], c[4], c[5], 0, c[6], c[7], c[8], 0, 0, 0, 0, 1);
     q.setFromRotationMatrix(m);
   }
-  return q.lengthSq() > 0 ? q.normalize() : q.identity();
+  return SPACE.clone().multiply(q.lengthSq() > 0 ? q.normalize() : q.identity());
 }
 
 /** A body's orientation at a row position: the rows' orientations slerped. */
@@ -67,7 +82,8 @@ function quaternionAt(orientation, at) {
 
 /** An arrow's vector (space axes, scaled) at a row position. */
 function arrowAt(arrow, at) {
-  return new THREE.Vector3(...arrow.columns.map((n) => valueAt(n, at))).multiplyScalar(arrow.scale);
+  const v = new THREE.Vector3(...arrow.columns.map((n) => valueAt(n, at)));
+  return v.applyQuaternion(SPACE).multiplyScalar(arrow.scale);
 }
 
 /** The geometry of a shape, in body axes about its centre; cylinders and rods along z. */
@@ -79,6 +95,8 @@ function shapeGeometry(shape) {
       return new THREE.CylinderGeometry(shape.radius, shape.radius, shape.length, 48).rotateX(Math.PI / 2);
     case 'box':
       return new THREE.BoxGeometry(shape.x, shape.y, shape.z);
+    case 'ring':
+      return new THREE.TorusGeometry(shape.radius, shape.tube, 16, 96);
     default: {
       const r = shape.length * 0.015;
       return new THREE.CylinderGeometry(r, r, shape.length, 12).rotateX(Math.PI / 2);
@@ -95,6 +113,8 @@ function shapeReach(shape) {
       return Math.hypot(shape.radius, shape.length / 2);
     case 'box':
       return Math.hypot(shape.x, shape.y, shape.z) / 2;
+    case 'ring':
+      return shape.radius + shape.tube;
     default:
       return shape.length / 2;
   }
@@ -185,13 +205,14 @@ function addFurniture(scene, box, size) {
   grid.rotateX(Math.PI / 2);
   grid.position.z = Math.min(0, box.min.z) - size * 0.01;
   scene.add(grid);
+  const n = data.view.frame ?? 'N';
   const axes = [
-    ['N1', 0xb04040, new THREE.Vector3(1, 0, 0)],
-    ['N2', 0x40a040, new THREE.Vector3(0, 1, 0)],
-    ['N3', 0x4040b0, new THREE.Vector3(0, 0, 1)],
+    [n + '1', 0xb04040, new THREE.Vector3(1, 0, 0)],
+    [n + '2', 0x40a040, new THREE.Vector3(0, 1, 0)],
+    [n + '3', 0x4040b0, new THREE.Vector3(0, 0, 1)],
   ];
   for (const [name, colour, dir] of axes) {
-    const end = dir.clone().multiplyScalar(size * 0.6);
+    const end = dir.clone().applyQuaternion(SPACE).multiplyScalar(size * 0.6);
     const line = new THREE.Line(
       new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(), end]),
       new THREE.LineBasicMaterial({ color: colour }),
@@ -221,6 +242,7 @@ function addBodies(scene) {
     const mark = spinMark(b.shape, b.colour, b.opacity);
     if (mark) mesh.add(mark);
     mesh.position.set(...b.offset);
+    mesh.quaternion.copy(axisTurn(b.axis));
     group.add(mesh);
     scene.add(group);
     return { spec: b, group };
@@ -356,7 +378,7 @@ function tick(now) {
   requestAnimationFrame(tick);
 }
 
-let scene, camera, renderer, bodies, arrows, traces, size, orbit, state;
+let scene, camera, renderer, bodies, arrows, traces, size, orbit, state, SPACE;
 const slider = document.getElementById('slider');
 const timeText = document.getElementById('time');
 const playButton = document.getElementById('play');
@@ -364,6 +386,7 @@ const speedSelect = document.getElementById('speed');
 
 /** Builds the scene from the data and the URL parameters, then starts the clock. */
 function main() {
+  SPACE = spaceTurn(data.view.up ?? 3);
   const box = sceneBox();
   size = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-6);
   scene = new THREE.Scene();

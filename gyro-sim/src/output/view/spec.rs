@@ -5,7 +5,7 @@
 use serde::{Deserialize, Serialize};
 
 /// What the page draws: bodies, arrows and traces, all about the support at the origin.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ViewSpec {
     /// The rigid bodies drawn.
@@ -17,6 +17,18 @@ pub struct ViewSpec {
     /// Points fixed in a body whose paths are drawn.
     #[serde(default)]
     pub traces: Vec<TraceView>,
+    /// The space axis drawn upward: 1, 2 or 3 (N3, the default).
+    #[serde(default = "third")]
+    pub up: u8,
+    /// The space frame's name, labelling its axes (`N`, the default).
+    #[serde(default = "newtonian")]
+    pub frame: String,
+}
+
+impl Default for ViewSpec {
+    fn default() -> Self {
+        ViewSpec { bodies: Vec::new(), arrows: Vec::new(), traces: Vec::new(), up: 3, frame: newtonian() }
+    }
 }
 
 /// One rigid body: a shape turning with the body's orientation about the origin.
@@ -39,9 +51,13 @@ pub struct BodyView {
     /// 1 opaque (the default) down to 0 unseen: below 1, arrows inside the body show through.
     #[serde(default = "one")]
     pub opacity: f64,
+    /// The body axis (1, 2 or 3, the default) along which the shape's own z axis lies: a
+    /// rotor spinning about body y is a cylinder with `axis = 2`.
+    #[serde(default = "third")]
+    pub axis: u8,
 }
 
-/// A body's shape in its own axes; cylinders and rods lie along the body's z axis.
+/// A body's shape in its own axes; cylinders and rods lie along its z axis, rings about it.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "lowercase", deny_unknown_fields)]
 pub enum Shape {
@@ -74,6 +90,13 @@ pub enum Shape {
     Rod {
         /// Its length.
         length: f64,
+    },
+    /// A ring (torus) about the z axis, in the x-y plane: a gimbal.
+    Ring {
+        /// Radius of its centre line.
+        radius: f64,
+        /// Radius of its tube.
+        tube: f64,
     },
 }
 
@@ -118,6 +141,14 @@ pub struct ArrowView {
 
 fn one() -> f64 {
     1.0
+}
+
+fn newtonian() -> String {
+    "N".to_string()
+}
+
+fn third() -> u8 {
+    3
 }
 
 /// A point fixed in a body whose path in space is drawn up to the current time.
@@ -175,10 +206,12 @@ pub enum ViewError {
 }
 
 impl ViewSpec {
-    /// Checks colours, numbers and body names (columns are checked against a trajectory).
+    /// Checks colours, numbers, axes and body names (columns are checked against a trajectory).
     pub fn check(&self) -> Result<(), ViewError> {
+        check_axis("up", self.up)?;
         for b in &self.bodies {
             let user = format!("body {}", b.name);
+            check_axis(&format!("{user}: axis"), b.axis)?;
             check_colour(&user, &b.colour)?;
             check_finite(&user, "offset", &b.offset)?;
             check_shape(&user, &b.shape)?;
@@ -219,6 +252,14 @@ impl ViewSpec {
     }
 }
 
+fn check_axis(user: &str, axis: u8) -> Result<(), ViewError> {
+    if (1..=3).contains(&axis) {
+        Ok(())
+    } else {
+        Err(ViewError::Number { user: user.to_string(), what: format!("axis {axis} is not 1, 2 or 3") })
+    }
+}
+
 fn check_colour(user: &str, colour: &str) -> Result<(), ViewError> {
     let hex = colour.strip_prefix('#').unwrap_or("");
     if hex.len() == 6 && hex.chars().all(|c| c.is_ascii_hexdigit()) {
@@ -242,6 +283,7 @@ fn check_shape(user: &str, shape: &Shape) -> Result<(), ViewError> {
         Shape::Cylinder { radius, length } => vec![radius, length],
         Shape::Box { x, y, z } => vec![x, y, z],
         Shape::Rod { length } => vec![length],
+        Shape::Ring { radius, tube } => vec![radius, tube],
     };
     if sizes.iter().all(|s| s.is_finite() && *s > 0.0) {
         Ok(())

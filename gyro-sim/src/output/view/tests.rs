@@ -85,8 +85,10 @@ fn inlined_texts_cannot_end_their_script_elements() {
 
 fn trajectory() -> Trajectory {
     let names = ["Q_E0", "Q_E1", "Q_E2", "Q_E3", "L_N1", "L_N2", "L_N3", "KE"];
-    let columns =
-        names.iter().map(|n| Column { name: n.to_string(), unit: String::new(), output: true }).collect();
+    let columns = names
+        .iter()
+        .map(|n| Column { name: n.to_string(), unit: String::new(), output: true, hidden: false })
+        .collect();
     let rows = (0..3)
         .map(|i| {
             let t = i as f64 * 0.5;

@@ -22,6 +22,7 @@ pub fn module(spec: &ModelSpec, lowered: &Lowered) -> TokenStream {
     let state_consts: Vec<Ident> = state_names.iter().map(|s| const_ident(s)).collect();
     let state_idx: Vec<usize> = (0..state_names.len()).collect();
     let (ns, no) = (state_names.len(), spec.outputs.len());
+    let n_columns: usize = spec.outputs.iter().map(|o| o.components.len()).sum();
     let n_derived = program.derive.results.len();
     let params_items = params_items(spec, lowered, &param_idents);
     let quaternion: Vec<bool> = spec.outputs.iter().map(|o| is_quaternion(&o.kind)).collect();
@@ -33,6 +34,8 @@ pub fn module(spec: &ModelSpec, lowered: &Lowered) -> TokenStream {
         pub const N_STATES: usize = #ns;
         /// Number of outputs.
         pub const N_OUTPUTS: usize = #no;
+        /// Number of values `outputs` writes: every output's columns.
+        pub const N_OUTPUT_COLUMNS: usize = #n_columns;
         #(
             /// Index of a state in `y`.
             pub const #state_consts: usize = #state_idx;
