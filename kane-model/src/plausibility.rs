@@ -116,9 +116,15 @@ fn inertia_issue(
     let tol = 1e-12 * moments.iter().fold(f64::MIN_POSITIVE, |a, b| a.max(b.abs()));
     let (lo, mid, hi) = (moments[0], moments[1], moments[2]);
     let (offender, what) = if lo < -tol {
-        (lo, format!("has a negative principal moment {lo}"))
+        (lo, format!("has a negative principal moment {lo}; principal moments must be non-negative"))
     } else if lo + mid < hi - tol {
-        (hi, format!("violates the triangle inequality: principal moments {lo} + {mid} < {hi}"))
+        (
+            hi,
+            format!(
+                "violates the triangle inequality: principal moments {lo} + {mid} < {hi}; a rigid body's \
+                 moments satisfy I1 + I2 >= I3"
+            ),
+        )
     } else {
         return None;
     };
@@ -132,11 +138,7 @@ fn inertia_issue(
     let parameter = blamed
         .and_then(|k| symbol_name(model, entries[k][k]))
         .unwrap_or_else(|| format!("I_{}_{cm}>>", body.name));
-    let message = format!(
-        "the central inertia of {} {what} ({}); a rigid body's moments satisfy I1 + I2 >= I3",
-        body.name,
-        listing(&involved, values)
-    );
+    let message = format!("the central inertia of {} {what} ({})", body.name, listing(&involved, values));
     Some(PlausibilityIssue { parameter, involved, message })
 }
 

@@ -142,3 +142,35 @@ fn angular_claims(model: &mut Model, sources: &Sources) -> Vec<Claim> {
     }
     claims
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const PENDULUM: &str = "NEWTONIAN N\nBODIES B\nPOINT O\nVARIABLES Q', U'\nCONSTANTS L\n\
+        SIMPROT(N, B, 3, Q)\nQ' = U\nV_O_N> = 0>\nA_O_N> = 0>\nP_O_BO> = L*B1>\nV2PTS(N, B, O, BO)\n";
+
+    fn errors(src: &str) -> Vec<Diagnostic> {
+        let mut m = crate::lang::load("t.al", src).unwrap();
+        consistency(&mut m, src)
+    }
+
+    #[test]
+    fn consistent_assignments_pass() {
+        assert!(errors(PENDULUM).is_empty());
+        assert!(errors(&format!("{PENDULUM}A_BO_N> = -L*U^2*B1> + L*U'*B2>\nW_B_N> = U*B3>\n")).is_empty());
+    }
+
+    #[test]
+    fn a_contradiction_names_the_lines_it_comes_from() {
+        let src = format!("{PENDULUM}A_BO_N> = L*U'*B2>\n");
+        let e = errors(&src);
+        assert_eq!(e.len(), 1, "{e:?}");
+        assert!(e[0].message.starts_with("`A_BO_N> = L*U'*B2>` contradicts the acceleration of BO in N"));
+        // The acceleration follows from the V2PTS line (which set the velocity).
+        assert_eq!(e[0].notes.len(), 1);
+        assert_eq!(statement_text(&src, &e[0].notes[0].0), "V2PTS(N, B, O, BO)");
+        let marked = format!("{PENDULUM}A_BO_N> = L*U'*B2> % override\n");
+        assert!(errors(&marked).is_empty());
+    }
+}

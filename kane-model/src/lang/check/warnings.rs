@@ -30,3 +30,23 @@ pub(crate) fn input_warnings(m: &LoadedModel) -> Vec<Diagnostic> {
 fn input_span(m: &LoadedModel, name: &str) -> Option<Span> {
     m.inputs.iter().rev().find(|i| i.name.eq_ignore_ascii_case(name)).map(|i| i.span.clone())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_warning_sits_at_the_input_or_else_at_the_mass_statement() {
+        let src = "NEWTONIAN N\nBODIES B\nCONSTANTS M\nMASS B = M\nINPUT M = -1\n";
+        let m = crate::lang::load("t.al", src).unwrap();
+        let w = input_warnings(&m);
+        assert_eq!(w.len(), 1);
+        assert_eq!(&src[w[0].span.clone()], "M = -1");
+        let src = "NEWTONIAN N\nBODIES B\nMASS B = -1\n";
+        let m = crate::lang::load("t.al", src).unwrap();
+        let w = input_warnings(&m);
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert!(w[0].message.starts_with("implausible value of B: the mass of B is -1"), "{}", w[0].message);
+        assert_eq!(super::super::super::line_column(src, w[0].span.start).0, 3);
+    }
+}
