@@ -7,6 +7,7 @@
 //! - [`codegen`]: a spec lowered to one straight-line program, printed as Rust.
 //! - [`lang`]: the Autolev-compatible model language, building models and specs.
 //! - [`models`]: canonical systems (the paper's gimbal, the heavy top, n-link pendulums).
+//! - [`plausibility`]: masses, inertias and Euler parameters checked at given values.
 //! - [`dual`]: dual numbers implementing `num_traits::Float`, for exact derivatives.
 #![warn(missing_docs)]
 
@@ -17,6 +18,7 @@ pub mod expr;
 pub mod lang;
 pub mod mechanics;
 pub mod models;
+pub mod plausibility;
 pub mod runtime;
 pub mod spec;
 

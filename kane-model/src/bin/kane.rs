@@ -20,7 +20,8 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Parse and derive; print the errors, or a one-line summary.
+    /// Parse, derive and check (assigned vs implied kinematics; implausible INPUT values as
+    /// warnings); print the errors, or the warnings and a one-line summary.
     Check {
         /// The model file.
         file: PathBuf,
@@ -119,9 +120,12 @@ fn run(command: Command) -> Result<(), String> {
     }
 }
 
-/// `kane check`: the model loads; sizes of its equations.
+/// `kane check`: the model loads and passes the checks (warnings printed); sizes of its equations.
 fn check(file: PathBuf) -> Result<(), String> {
-    let m = load(&file)?;
+    let src = read(&file)?;
+    let checked = lang::check(&file.display().to_string(), &src).map_err(|r| r.render())?;
+    eprint!("{}", checked.warnings.render());
+    let m = checked.model;
     match &m.equations {
         Some(e) => {
             let mm: Vec<ExprId> = e.mass_matrix.iter().flatten().copied().collect();

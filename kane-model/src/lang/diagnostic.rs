@@ -6,7 +6,26 @@ use miette::{GraphicalReportHandler, GraphicalTheme, LabeledSpan, NamedSource, S
 
 use super::token::Span;
 
-/// One error found in a model file.
+/// How serious a diagnostic is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Severity {
+    /// The file is wrong: it does not load, or `kane check` fails.
+    Error,
+    /// Suspicious but accepted (`kane check` prints it and succeeds).
+    Warning,
+}
+
+impl Severity {
+    /// `error` or `warning`.
+    pub fn label(self) -> &'static str {
+        match self {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+        }
+    }
+}
+
+/// One error (or warning) found in a model file.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagnostic {
     /// Where in the source.
@@ -15,12 +34,27 @@ pub struct Diagnostic {
     pub message: String,
     /// What to do about it.
     pub help: Option<String>,
+    /// Error or warning.
+    pub severity: Severity,
+    /// Other places involved, each with what it contributes.
+    pub notes: Vec<(Span, String)>,
 }
 
 impl Diagnostic {
     /// An error at `span`.
     pub fn error(span: Span, message: impl Into<String>) -> Diagnostic {
-        Diagnostic { span, message: message.into(), help: None }
+        Diagnostic { span, message: message.into(), help: None, severity: Severity::Error, notes: Vec::new() }
+    }
+
+    /// A warning at `span`.
+    pub fn warning(span: Span, message: impl Into<String>) -> Diagnostic {
+        Diagnostic { severity: Severity::Warning, ..Diagnostic::error(span, message) }
+    }
+
+    /// Adds another place involved, with what it contributes.
+    pub fn with_note(mut self, span: Span, note: impl Into<String>) -> Diagnostic {
+        self.notes.push((span, note.into()));
+        self
     }
 
     /// Adds a hint.
@@ -39,8 +73,8 @@ pub fn line_column(src: &str, offset: usize) -> (usize, usize) {
     (line, col)
 }
 
-/// Diagnostics of one file, displayable as `file:line:col: error: message` lines and renderable
-/// with source excerpts.
+/// Diagnostics of one file, displayable as `file:line:col: error: message` lines (warnings and
+/// notes likewise) and renderable with source excerpts.
 #[derive(Clone, Debug)]
 pub struct Report {
     /// File name as given.
@@ -55,7 +89,11 @@ impl fmt::Display for Report {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         for d in &self.diagnostics {
             let (line, col) = line_column(&self.source, d.span.start);
-            writeln!(f, "{}:{line}:{col}: error: {}", self.file, d.message)?;
+            writeln!(f, "{}:{line}:{col}: {}: {}", self.file, d.severity.label(), d.message)?;
+            for (span, note) in &d.notes {
+                let (line, col) = line_column(&self.source, span.start);
+                writeln!(f, "{}:{line}:{col}: note: {note}", self.file)?;
+            }
             if let Some(h) = &d.help {
                 writeln!(f, "  help: {h}")?;
             }
@@ -87,6 +125,12 @@ impl fmt::Display for MietteDiag<'_> {
 impl std::error::Error for MietteDiag<'_> {}
 
 impl miette::Diagnostic for MietteDiag<'_> {
+    fn severity(&self) -> Option<miette::Severity> {
+        Some(match self.d.severity {
+            Severity::Error => miette::Severity::Error,
+            Severity::Warning => miette::Severity::Warning,
+        })
+    }
     fn help<'b>(&'b self) -> Option<Box<dyn fmt::Display + 'b>> {
         self.d.help.as_ref().map(|h| Box::new(h.clone()) as Box<dyn fmt::Display>)
     }
@@ -94,10 +138,15 @@ impl miette::Diagnostic for MietteDiag<'_> {
         Some(self.src)
     }
     fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
-        let span = SourceSpan::from(
-            self.d.span.start..self.d.span.end.max(self.d.span.start + 1).min(self.src.inner().len().max(1)),
-        );
-        Some(Box::new(std::iter::once(LabeledSpan::new_with_span(Some("here".into()), span))))
+        let len = self.src.inner().len().max(1);
+        let source_span = move |s: &Span| SourceSpan::from(s.start..s.end.max(s.start + 1).min(len));
+        let here = LabeledSpan::new_with_span(Some("here".into()), source_span(&self.d.span));
+        let notes = self
+            .d
+            .notes
+            .iter()
+            .map(move |(s, n)| LabeledSpan::new_with_span(Some(n.clone()), source_span(s)));
+        Some(Box::new(std::iter::once(here).chain(notes)))
     }
 }
 

@@ -13,6 +13,7 @@
 //! ```
 
 mod ast;
+mod check;
 mod compare;
 mod diagnostic;
 mod interp;
@@ -21,8 +22,9 @@ mod to_spec;
 mod token;
 
 pub use ast::{Expr, ExprKind, Stmt, StmtKind};
+pub use check::{check, Checked, OVERRIDE_MARKER};
 pub use compare::{compare, Comparison};
-pub use diagnostic::{line_column, Diagnostic, Report};
+pub use diagnostic::{line_column, Diagnostic, Report, Severity};
 pub use interp::value::Value;
 pub use interp::{CodeRequest, InputValue, LoadedModel};
 pub use token::Span;

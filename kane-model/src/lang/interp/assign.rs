@@ -33,7 +33,9 @@ impl Interpreter {
             if let (Some((a, b)), Value::Matrix { rows: 3, cols: 3, data }) = (self.dcm_frames(&key), &v) {
                 let m =
                     [[data[0], data[1], data[2]], [data[3], data[4], data[5]], [data[6], data[7], data[8]]];
-                return self.model.orient(b, a, crate::mechanics::Orientation::Dcm(m)).at(&target.span);
+                self.model.orient(b, a, crate::mechanics::Orientation::Dcm(m)).at(&target.span)?;
+                self.sources.orientations.insert(b, target.span.clone());
+                return Ok(());
             }
         }
         let full_key = format!("{key}{}", ">".repeat(target.suffix as usize));

@@ -71,7 +71,9 @@ impl Interpreter {
             let k = self.model.ar.float(std::f64::consts::PI / 180.0).at(fail)?;
             angle = self.model.ar.mul(&[k, angle]).at(fail)?;
         }
-        self.model.orient(child, parent, Orientation::Axis { axis, angle }).at(fail)
+        self.model.orient(child, parent, Orientation::Axis { axis, angle }).at(fail)?;
+        self.sources.orientations.insert(child, e.span.clone());
+        Ok(())
     }
 
     /// `V2PTS(N, B, P, Q)`, `A2PTS`, `V1PT`, `A1PT`: the velocity or acceleration theorems.
@@ -87,8 +89,14 @@ impl Interpreter {
             "V1PT" => self.model.v1pt(frame, body, from, to),
             _ => self.model.a1pt(frame, body, from, to),
         }
-        .map(|_| ())
-        .at(&e.span)
+        .at(&e.span)?;
+        let set = if upper.starts_with('V') {
+            &mut self.sources.velocities
+        } else {
+            &mut self.sources.accelerations
+        };
+        set.insert((to, frame), e.span.clone());
+        Ok(())
     }
 
     /// `FORCE(P, F>)`, `FORCE(Q/P, F>)` (and the opposite on Q), and likewise TORQUE on frames.

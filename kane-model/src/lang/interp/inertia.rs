@@ -19,6 +19,7 @@ impl Interpreter {
             return Err(Diagnostic::error(span.clone(), format!("`{body}` is not a body"))
                 .with_help("declare it with BODIES"));
         };
+        self.sources.inertial.insert(key.clone(), span.clone());
         if let [Expr { kind: ExprKind::Call { name, args: dims }, span: shape_span }] = args {
             return self.inertia_by_shape(b, name, dims, shape_span);
         }

@@ -19,6 +19,7 @@ mod names;
 mod orientation;
 mod prepare;
 mod scalar_fns;
+mod sources;
 mod statements;
 pub mod value;
 mod vector_fns;
@@ -31,6 +32,7 @@ use crate::mechanics::{BodyId, FrameId, KaneEquations, Model, ParticleId, PointI
 use super::ast::{Expr, Stmt};
 use super::diagnostic::Diagnostic;
 use super::token::Span;
+pub(crate) use sources::Sources;
 use value::Value;
 
 /// What a name stands for.
@@ -55,6 +57,8 @@ pub struct InputValue {
     pub value: f64,
     /// The unit word given after the value, if any.
     pub unit: Option<String>,
+    /// Where the INPUT item is in the source.
+    pub span: Span,
 }
 
 /// A CODE request.
@@ -82,6 +86,7 @@ pub struct LoadedModel {
     pub code: Vec<CodeRequest>,
     bindings: FxHashMap<String, Binding>,
     arrays: FxHashMap<String, Vec<(Vec<i64>, Value)>>,
+    pub(crate) sources: Sources,
 }
 
 impl LoadedModel {
@@ -133,6 +138,7 @@ pub(crate) struct Interpreter {
     pub(crate) code: Vec<CodeRequest>,
     pub(crate) errors: Vec<Diagnostic>,
     pub(crate) solved: FxHashMap<String, ExprId>,
+    pub(crate) sources: Sources,
 }
 
 type IResult<T> = Result<T, Diagnostic>;
@@ -198,6 +204,7 @@ impl Interpreter {
             code: Vec::new(),
             errors: Vec::new(),
             solved: FxHashMap::default(),
+            sources: Sources::default(),
         }
     }
 
@@ -219,6 +226,7 @@ impl Interpreter {
             code: self.code,
             bindings: self.bindings,
             arrays: self.arrays,
+            sources: self.sources,
         }
     }
 }

@@ -139,13 +139,21 @@ impl Interpreter {
         let fail: &Span = span;
         match (b, v) {
             (Builtin::Position(from, to), Value::Vector(r)) => {
-                self.model.set_position(to, from, r.clone()).at(fail)?
+                self.model.set_position(to, from, r.clone()).at(fail)?;
+                self.sources.position(from, to, span);
             }
-            (Builtin::Velocity(p, f), Value::Vector(r)) => self.model.set_velocity(p, f, r.clone()),
-            (Builtin::Acceleration(p, f), Value::Vector(r)) => self.model.set_acceleration(p, f, r.clone()),
+            (Builtin::Velocity(p, f), Value::Vector(r)) => {
+                self.model.set_velocity(p, f, r.clone());
+                self.sources.velocities.insert((p, f), span.clone());
+            }
+            (Builtin::Acceleration(p, f), Value::Vector(r)) => {
+                self.model.set_acceleration(p, f, r.clone());
+                self.sources.accelerations.insert((p, f), span.clone());
+            }
             (Builtin::AngularVelocity(a, b), Value::Vector(w)) => {
                 // W_A_N> = w sets A's angular velocity in N (A's parent, or A becomes N's child).
                 self.model.set_angular_velocity_in(a, b, w.clone()).at(fail)?;
+                self.sources.angular_velocities.insert(a, span.clone());
             }
             (Builtin::Inertia(body, point), Value::Dyadic(d)) => {
                 if point != self.model.body(body).mass_center {
@@ -156,6 +164,7 @@ impl Interpreter {
                     .with_help(format!("write I_{0}_{0}O>> = ...", self.model.body(body).name)));
                 }
                 self.model.set_inertia(body, d.clone());
+                self.sources.inertial.insert(self.model.body(body).name.to_ascii_uppercase(), span.clone());
             }
             // An angular acceleration set by name is a definition, kept as a value.
             (Builtin::AngularAcceleration(..), Value::Vector(_)) => return Ok(false),

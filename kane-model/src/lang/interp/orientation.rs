@@ -80,7 +80,9 @@ impl Interpreter {
             Kind::Body(axes) => Orientation::BodyFixed { axes, angles: [p[0], p[1], p[2]] },
             Kind::Space(axes) => Orientation::SpaceFixed { axes, angles: [p[0], p[1], p[2]] },
         };
-        self.model.orient(b, a, o).at(span)
+        self.model.orient(b, a, o).at(span)?;
+        self.sources.orientations.insert(b, span.clone());
+        Ok(())
     }
 
     /// `KINDIFFS(A, B, kind, ...)`: the kinematic equations that make the orientation's rates

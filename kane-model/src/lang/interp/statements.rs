@@ -54,6 +54,7 @@ impl Interpreter {
         for (name, span, e) in items {
             self.implicit_constants(e)?;
             let m = self.scalar(e)?;
+            self.sources.inertial.insert(name.to_ascii_uppercase(), span.clone());
             match self.bindings.get(&entity_key(&name.to_ascii_uppercase())) {
                 Some(Binding::Body(b)) => self.model.set_mass(*b, m),
                 Some(Binding::Particle(p)) => self.model.set_particle_mass(*p, m),
@@ -93,7 +94,7 @@ impl Interpreter {
                 || (item.unit.is_none()
                     && self.units.get(&name.to_ascii_uppercase()).is_some_and(|u| is_degrees(u)));
             let value = if in_degrees { v.to_radians() } else { v };
-            self.inputs.push(InputValue { name, value, unit: item.unit.clone() });
+            self.inputs.push(InputValue { name, value, unit: item.unit.clone(), span: item.span.clone() });
         }
         Ok(())
     }

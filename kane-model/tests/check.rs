@@ -1,0 +1,169 @@
+//! `kane check`: assigned kinematics that contradict positions and orientations are errors naming
+//! both lines (unless marked `% override`), and implausible INPUT values are warnings naming the
+//! parameter and its INPUT line; through the library and through the `kane` command.
+
+use std::process::Command;
+
+use kane_model::lang::{self, Severity};
+
+const MODELS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/models");
+
+fn model(name: &str) -> String {
+    std::fs::read_to_string(format!("{MODELS}/{name}")).expect("read model")
+}
+
+/// The paper's gimbal with the rotor's mass centre moved off O (A_DO_A> = 0> kept).
+fn offset_gimbal() -> String {
+    let src = model("gimbal_gyroscope.al");
+    assert!(src.contains("P_O_DO> = 0>   "));
+    src.replace("P_O_DO> = 0>   ", "P_O_DO> = 0.1*D2>")
+}
+
+/// The 1-based line of the first line starting with `start`.
+fn line_of(src: &str, start: &str) -> usize {
+    src.lines().position(|l| l.starts_with(start)).expect("line present") + 1
+}
+
+fn kane(args: &[&str]) -> (bool, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_kane")).args(args).output().expect("run kane");
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+    )
+}
+
+#[test]
+fn offset_rotor_is_an_error_naming_both_lines() {
+    let src = offset_gimbal();
+    let report = match lang::check("gimbal.al", &src) {
+        Err(r) => r,
+        Ok(_) => panic!("the offset rotor checked"),
+    };
+    let text = report.to_string();
+    let (a, p, v) = (line_of(&src, "A_DO_A>"), line_of(&src, "P_O_DO>"), line_of(&src, "V_O_A>"));
+    assert!(
+        text.contains(&format!(
+            "gimbal.al:{a}:1: error: `A_DO_A> = 0>` contradicts the acceleration of DO in A"
+        )),
+        "{text}"
+    );
+    assert!(
+        text.contains(&format!("gimbal.al:{p}:1: note: `P_O_DO> = 0.1*D2>` implies the other value")),
+        "{text}"
+    );
+    assert!(text.contains(&format!("gimbal.al:{v}:1: note: `V_O_A> = 0>`")), "{text}");
+    assert!(text.contains("% override"), "{text}");
+    let errors: Vec<_> = report.diagnostics.iter().filter(|d| d.severity == Severity::Error).collect();
+    assert_eq!(errors.len(), 1, "{text}");
+}
+
+#[test]
+fn the_paper_files_check_without_errors_or_warnings() {
+    for name in ["gimbal_gyroscope.al", "heavy_top.al", "free_body.al"] {
+        let checked = lang::check(name, &model(name)).unwrap_or_else(|r| panic!("{r}"));
+        assert!(checked.warnings.diagnostics.is_empty(), "{}", checked.warnings);
+        assert!(checked.model.equations.is_some());
+    }
+}
+
+#[test]
+fn override_marker_accepts_the_offset_rotor() {
+    let src = offset_gimbal().replace("A_DO_A> = 0>   ", "A_DO_A> = 0>   % override: rotor offset ignored ");
+    let checked = lang::check("gimbal.al", &src).unwrap_or_else(|r| panic!("{r}"));
+    assert!(checked.warnings.diagnostics.is_empty(), "{}", checked.warnings);
+    // Any other comment does not.
+    let src = offset_gimbal().replace("A_DO_A> = 0>   ", "A_DO_A> = 0>   % overridden? no ");
+    assert!(lang::check("gimbal.al", &src).is_err());
+}
+
+const PENDULUM: &str = "NEWTONIAN N\nBODIES B\nPOINT O\nVARIABLES Q', U'\nCONSTANTS M, L, G\n\
+    SIMPROT(N, B, 3, Q)\nQ' = U\nW_B_N> = U*N3>\nV_O_N> = 0>\nP_O_BO> = L*B1>\n\
+    V2PTS(N, B, O, BO)\nMASS B = M\nINERTIA B, 0, 0, 0\nGRAVITY(-G*N2>)\n\
+    ZERO = FR() + FRSTAR()\nKANE()\nINPUT M = 1, L = 1, G = 9.81\n";
+
+#[test]
+fn a_consistent_pendulum_checks() {
+    let checked = lang::check("p.al", PENDULUM).unwrap_or_else(|r| panic!("{r}"));
+    assert!(checked.warnings.diagnostics.is_empty(), "{}", checked.warnings);
+}
+
+#[test]
+fn a_velocity_contradicting_the_positions_names_both_lines() {
+    let src = PENDULUM.replace("V2PTS(N, B, O, BO)", "V_BO_N> = L*U*B1>");
+    let text = lang::check("p.al", &src).err().expect("an error").to_string();
+    assert!(
+        text.contains("p.al:11:1: error: `V_BO_N> = L*U*B1>` contradicts the velocity of BO in N"),
+        "{text}"
+    );
+    assert!(text.contains("p.al:10:1: note: `P_O_BO> = L*B1>`"), "{text}");
+    assert!(text.contains("p.al:9:1: note: `V_O_N> = 0>`"), "{text}");
+}
+
+#[test]
+fn an_angular_velocity_contradicting_the_orientation_names_both_lines() {
+    let src = PENDULUM.replace("W_B_N> = U*N3>", "W_B_N> = 2*U*N3>");
+    let text = lang::check("p.al", &src).err().expect("an error").to_string();
+    assert!(
+        text.contains("p.al:8:1: error: `W_B_N> = 2*U*N3>` contradicts the angular velocity of B in N"),
+        "{text}"
+    );
+    assert!(text.contains("p.al:6:1: note: `SIMPROT(N, B, 3, Q)`"), "{text}");
+}
+
+/// The warnings of a file that loads and checks.
+fn warnings(src: &str) -> String {
+    let checked = lang::check("w.al", src).unwrap_or_else(|r| panic!("{r}"));
+    assert!(checked.warnings.diagnostics.iter().all(|d| d.severity == Severity::Warning));
+    checked.warnings.to_string()
+}
+
+#[test]
+fn negative_and_zero_masses_are_warnings_at_their_input() {
+    let w = warnings(&PENDULUM.replace("INPUT M = 1,", "INPUT M = -2,"));
+    assert!(w.contains("w.al:17:7: warning: implausible value of M: the mass of B is -2"), "{w}");
+    let w = warnings(&PENDULUM.replace("INPUT M = 1,", "INPUT M = 0,"));
+    assert!(w.contains("w.al:17:7: warning: implausible value of M: the mass of B is 0"), "{w}");
+}
+
+#[test]
+fn a_triangle_inequality_violation_is_a_warning_naming_the_moment() {
+    let src = model("free_body.al").replace("INPUT I1 = 1, I2 = 2, I3 = 3", "INPUT I1 = 1, I2 = 1, I3 = 3");
+    let line = line_of(&src, "INPUT I1");
+    let w = warnings(&src);
+    assert!(w.contains(&format!("w.al:{line}:23: warning: implausible value of I3:")), "{w}");
+    assert!(w.contains("triangle inequality"), "{w}");
+    assert_eq!(w.matches("warning").count(), 1, "{w}");
+}
+
+#[test]
+fn non_unit_euler_parameters_are_a_warning() {
+    let src = model("heavy_top.al").replace("E4 = 0.8660254037844386", "E4 = 0.9");
+    let line = line_of(&src, "INPUT E1");
+    let w = warnings(&src);
+    assert!(
+        w.contains(&format!("w.al:{line}:7: warning: implausible value of E1: the Euler parameters of R")),
+        "{w}"
+    );
+    assert!(w.contains("E4 = 0.9"), "{w}");
+    // Unit within 1e-9 is accepted.
+    assert_eq!(warnings(&model("heavy_top.al").replace("E4 = 0.8660254037844386", "E4 = 0.86602540378")), "");
+}
+
+#[test]
+fn the_kane_command_fails_on_a_contradiction_and_prints_warnings() {
+    let dir = std::env::temp_dir().join(format!("kane-check-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("offset.al");
+    std::fs::write(&bad, offset_gimbal()).unwrap();
+    let (ok, _, err) = kane(&["check", bad.to_str().unwrap()]);
+    assert!(!ok);
+    assert!(err.contains("`A_DO_A> = 0>` contradicts") && err.contains("P_O_DO> = 0.1*D2>"), "{err}");
+    let warn = dir.join("warn.al");
+    std::fs::write(&warn, PENDULUM.replace("INPUT M = 1,", "INPUT M = -2,")).unwrap();
+    let (ok, out, err) = kane(&["check", warn.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    assert!(out.contains(": ok: 1 coordinates"), "{out}");
+    assert!(err.contains("implausible value of M"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
