@@ -28,7 +28,7 @@ pub use abbrev::Abbreviations;
 pub use arena::{Arena, Symbol, TIME};
 pub use cse::{Cse, StraightLine};
 pub use diff::TimeDerivative;
-pub use equiv::{Equivalence, EquivalenceConfig};
+pub use equiv::{Equivalence, EquivalenceConfig, SampleAround};
 pub use error::ExprError;
 pub use expand::TrigBasis;
 pub use node::{ExprId, Func, Node, SymbolId, SymbolKind};

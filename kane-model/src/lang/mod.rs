@@ -15,16 +15,23 @@
 mod ast;
 mod compare;
 mod diagnostic;
+mod eoms;
 mod interp;
 mod parser;
+mod present;
+mod session;
+mod show;
 mod to_spec;
 mod token;
 
 pub use ast::{Expr, ExprKind, Stmt, StmtKind};
-pub use compare::{compare, Comparison};
+pub use compare::{compare, Comparison, Outcome, Relation};
+pub use eoms::{printed_eoms, PrintedEoms};
 pub use diagnostic::{line_column, Diagnostic, Report};
 pub use interp::value::Value;
 pub use interp::{CodeRequest, InputValue, LoadedModel};
+pub use present::Presenter;
+pub use show::show;
 pub use token::Span;
 
 /// Parses a program; every syntax error is reported.
