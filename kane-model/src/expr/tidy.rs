@@ -12,15 +12,21 @@ use super::arena::Arena;
 use super::error::ExprError;
 use super::expand::TrigBasis;
 use super::node::{ExprId, Node, SymbolId, SymbolKind};
+use super::number::Number;
 
-/// One term of a [`Collected`] expression: `(+/-) coefficient * factors`.
+/// One term of a [`Collected`] expression: `(+/-) scale*(coefficient) * factors`, or, for the
+/// terms sharing a monomial in the variables, `(+/-) (inner terms) * factors`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CollectedTerm {
     /// True when the term is subtracted.
     pub negative: bool,
+    /// A whole number common to the coefficient's summands, taken out of them.
+    pub scale: Option<ExprId>,
     /// The coefficient's summands, positive ones first, each `(subtracted, magnitude)`; empty
-    /// for a coefficient of 1.
+    /// for a coefficient of 1 (and for a term with inner terms).
     pub coefficient: Vec<(bool, ExprId)>,
+    /// Terms (parameters times functions of the coordinates) multiplying `factors` together.
+    pub inner: Vec<CollectedTerm>,
     /// The state-dependent factors, functions first, then variables by derivative order; empty
     /// for a parameter-only term.
     pub factors: Vec<ExprId>,
@@ -112,14 +118,15 @@ impl Arena {
                 None => groups.push((key, vec![c])),
             }
         }
-        let mut terms = Vec::with_capacity(groups.len());
+        let mut pairs = Vec::with_capacity(groups.len());
         for (key, cs) in groups {
             let c = self.add(&cs)?;
             let c = if names.is_empty() { c } else { names.rewrite(self, c)? };
             if !self.is_zero(c) {
-                terms.push(self.collected_term(c, key)?);
+                pairs.push((c, key));
             }
         }
+        let mut terms = self.nest_by_variables(pairs)?;
         let one = self.one();
         let rank = |ar: &Arena, t: &CollectedTerm| {
             let key = t.factors.iter().map(|f| factor_rank(ar, *f).0).max().unwrap_or(0);
@@ -127,6 +134,50 @@ impl Arena {
         };
         terms.sort_by_key(|t| rank(self, t));
         Ok(Collected { terms })
+    }
+
+    /// Terms `c * key` grouped by the variables in `key`: `(a + b*cos(q)^2)*u1'` for
+    /// `a*u1' + b*cos(q)^2*u1'`.
+    fn nest_by_variables(&mut self, pairs: Vec<(ExprId, ExprId)>) -> Result<Vec<CollectedTerm>, ExprError> {
+        let mut groups: Vec<(ExprId, Vec<(ExprId, ExprId)>)> = Vec::new();
+        for (c, key) in pairs {
+            let factors: Vec<ExprId> = match self.node(key) {
+                Node::Product(f) => f.to_vec(),
+                _ => vec![key],
+            };
+            let (vars, funcs): (Vec<ExprId>, Vec<ExprId>) =
+                factors.into_iter().partition(|f| factor_rank(self, *f).0 > 0);
+            let (vars, funcs) = (self.mul(&vars)?, self.mul(&funcs)?);
+            match groups.iter_mut().find(|(v, _)| *v == vars) {
+                Some((_, g)) => g.push((c, funcs)),
+                None => groups.push((vars, vec![(c, funcs)])),
+            }
+        }
+        let mut terms = Vec::with_capacity(groups.len());
+        for (vars, group) in groups {
+            if let [(c, funcs)] = group.as_slice() {
+                let key = self.mul(&[*funcs, vars])?;
+                terms.push(self.collected_term(*c, key)?);
+                continue;
+            }
+            let mut inner = Vec::with_capacity(group.len());
+            for (c, funcs) in group {
+                inner.push(self.collected_term(c, funcs)?);
+            }
+            inner.sort_by_key(|t| (!t.factors.is_empty(), t.factors.first().copied()));
+            let negatives = inner.iter().filter(|t| t.negative).count();
+            let negative = 2 * negatives > inner.len() || (2 * negatives == inner.len() && inner[0].negative);
+            if negative {
+                inner.iter_mut().for_each(flip);
+            }
+            let values: Vec<ExprId> = inner.iter().map(|t| t.value).collect();
+            let sum = self.add(&values)?;
+            let value = self.mul(&[sum, vars])?;
+            let mut factors = self.collected_term(self.one(), vars)?.factors;
+            factors.sort_by_key(|f| factor_rank(self, *f));
+            terms.push(CollectedTerm { negative, scale: None, coefficient: Vec::new(), inner, factors, value });
+        }
+        Ok(terms)
     }
 
     /// The term `c * key` with its sign pulled out and its pieces in reading order.
@@ -158,7 +209,50 @@ impl Arena {
         if parts.len() == 1 && parts[0].1 == one && !factors.is_empty() {
             parts.clear();
         }
-        Ok(CollectedTerm { negative, coefficient: parts, factors, value })
+        let scale = self.common_whole_factor(&mut parts)?;
+        Ok(CollectedTerm { negative, scale, coefficient: parts, inner: Vec::new(), factors, value })
+    }
+
+    /// The greatest whole number dividing every summand's coefficient (when there are several
+    /// and it is above 1), divided out of them.
+    fn common_whole_factor(&mut self, parts: &mut [(bool, ExprId)]) -> Result<Option<ExprId>, ExprError> {
+        if parts.len() < 2 {
+            return Ok(None);
+        }
+        let mut g: i128 = 0;
+        for (_, x) in parts.iter() {
+            let (n, _) = self.split_coefficient(*x);
+            match n {
+                Number::Rational(r) if r.is_integer() => g = gcd(g, r.numer().abs()),
+                _ => return Ok(None),
+            }
+        }
+        if g <= 1 {
+            return Ok(None);
+        }
+        let k = self.integer(g);
+        for (_, x) in parts.iter_mut() {
+            *x = self.div(*x, k)?;
+        }
+        Ok(Some(k))
+    }
+}
+
+/// `t` negated for printing: the signs of a coefficient's summands, or else the term's own.
+fn flip(t: &mut CollectedTerm) {
+    if t.coefficient.len() > 1 {
+        t.coefficient.iter_mut().for_each(|p| p.0 = !p.0);
+        t.coefficient.sort_by_key(|p| p.0);
+    } else {
+        t.negative = !t.negative;
+    }
+}
+
+fn gcd(a: i128, b: i128) -> i128 {
+    if b == 0 {
+        a
+    } else {
+        gcd(b, a % b)
     }
 }
 

@@ -51,8 +51,19 @@ impl Style {
     /// The magnitude of one term.
     fn term(&self, ar: &Arena, t: &CollectedTerm) -> String {
         let mut parts = Vec::new();
+        if let Some(k) = t.scale {
+            parts.push((self.piece)(ar, k));
+        }
+        if !t.inner.is_empty() {
+            let inner = self.collected(ar, &Collected { terms: t.inner.clone() });
+            let bare = t.factors.is_empty() && !t.negative;
+            parts.push(if bare { inner } else { format!("{}{inner}{}", self.open, self.close) });
+        }
         match t.coefficient.len() {
             0 => {}
+            _ if t.scale.is_some() => {
+                parts.push(format!("{}{}{}", self.open, self.signed_sum(ar, &t.coefficient), self.close))
+            }
             1 if !t.coefficient[0].0 => parts.push(self.signed_sum(ar, &t.coefficient)),
             _ if t.factors.is_empty() && !t.negative => parts.push(self.signed_sum(ar, &t.coefficient)),
             _ => parts.push(format!("{}{}{}", self.open, self.signed_sum(ar, &t.coefficient), self.close)),
