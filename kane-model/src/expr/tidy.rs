@@ -238,9 +238,10 @@ impl Arena {
     }
 }
 
-/// `t` negated for printing: the signs of a coefficient's summands, or else the term's own.
+/// `t` negated for printing: a subtracted term is added; an added one with several summands
+/// has their signs changed, any other is subtracted.
 fn flip(t: &mut CollectedTerm) {
-    if t.coefficient.len() > 1 {
+    if !t.negative && t.coefficient.len() > 1 {
         t.coefficient.iter_mut().for_each(|p| p.0 = !p.0);
         t.coefficient.sort_by_key(|p| p.0);
     } else {
