@@ -204,6 +204,9 @@ mod tests {
         let r = ar.sqrt(m).unwrap();
         let r2 = ar.powi(r, 2).unwrap();
         let v = ar.equivalent(r2, m, &cfg).unwrap();
-        assert!(matches!(v, Equivalence::Proven | Equivalence::NumericallyEqual { samples: 64, .. }), "{v:?}");
+        assert!(
+            matches!(v, Equivalence::Proven | Equivalence::NumericallyEqual { samples: 64, .. }),
+            "{v:?}"
+        );
     }
 }

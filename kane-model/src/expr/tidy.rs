@@ -175,7 +175,14 @@ impl Arena {
             let value = self.mul(&[sum, vars])?;
             let mut factors = self.collected_term(self.one(), vars)?.factors;
             factors.sort_by_key(|f| factor_rank(self, *f));
-            terms.push(CollectedTerm { negative, scale: None, coefficient: Vec::new(), inner, factors, value });
+            terms.push(CollectedTerm {
+                negative,
+                scale: None,
+                coefficient: Vec::new(),
+                inner,
+                factors,
+                value,
+            });
         }
         Ok(terms)
     }

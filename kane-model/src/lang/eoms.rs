@@ -104,6 +104,9 @@ impl PrintedEoms {
                 lines.push(format!("{lead}{sign}{text}"));
             }
         }
-        format!("% Equations of motion (needs \\usepackage{{amsmath}})\n\\begin{{align*}}\n{}\n\\end{{align*}}\n", lines.join(" \\\\\n"))
+        format!(
+            "% Equations of motion (needs \\usepackage{{amsmath}})\n\\begin{{align*}}\n{}\n\\end{{align*}}\n",
+            lines.join(" \\\\\n")
+        )
     }
 }

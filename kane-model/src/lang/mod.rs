@@ -26,8 +26,8 @@ mod token;
 
 pub use ast::{Expr, ExprKind, Stmt, StmtKind};
 pub use compare::{compare, Comparison, Outcome, Relation};
-pub use eoms::{printed_eoms, PrintedEoms};
 pub use diagnostic::{line_column, Diagnostic, Report};
+pub use eoms::{printed_eoms, PrintedEoms};
 pub use interp::value::Value;
 pub use interp::{CodeRequest, InputValue, LoadedModel};
 pub use present::Presenter;

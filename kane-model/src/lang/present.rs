@@ -71,3 +71,17 @@ impl Presenter {
         Ok(ar.collected_latex(&c))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn prints_in_the_files_names() {
+        let src = "NEWTONIAN N\nCONSTANTS M, L, H\nVARIABLES Q'\nK1 = 1/2*M*L^2\n\
+                   K2 = 1/4*M*L^2 + 1/12*M*H^2\nX = (K2 - K1)*SIN(Q)^2\n";
+        let mut m = super::super::load("t.al", src).unwrap();
+        let p = m.presenter().unwrap();
+        let Some(super::Value::Scalar(x)) = m.value("X") else { panic!("X is a scalar") };
+        assert_eq!(p.text(&mut m.model.ar, x).unwrap(), "(K2 - K1)*sin(Q)^2");
+        assert_eq!(p.defined.iter().map(|d| d.0.as_str()).collect::<Vec<_>>(), ["K1", "K2"]);
+    }
+}

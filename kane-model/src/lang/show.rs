@@ -24,8 +24,12 @@ pub fn show(file: &str, source: &str, name: &str, frame: Option<&str>) -> Result
         return Err(report(arg, name, vec![Diagnostic::error(0..name.len(), "expected one quantity")]));
     };
     let StmtKind::Expr(e) = &stmt.kind else {
-        return Err(report(arg, name, vec![Diagnostic::error(stmt.span.clone(), "expected a quantity")
-            .with_help("give a name such as I1, V_P_A> or I_D_DO>>")]));
+        return Err(report(
+            arg,
+            name,
+            vec![Diagnostic::error(stmt.span.clone(), "expected a quantity")
+                .with_help("give a name such as I1, V_P_A> or I_D_DO>>")],
+        ));
     };
     let value = s.it.eval(e).map_err(|d| report(arg, name, vec![d]))?;
     let frame = match frame {

@@ -58,7 +58,12 @@ fn derived_value(it: &mut Interpreter, target: &Target) -> Result<Value, Diagnos
 }
 
 /// One statement `target = value`.
-fn given(it: &mut Interpreter, speeds: &[String], target: &Target, value: &Expr) -> Result<Given, Diagnostic> {
+fn given(
+    it: &mut Interpreter,
+    speeds: &[String],
+    target: &Target,
+    value: &Expr,
+) -> Result<Given, Diagnostic> {
     let hand = it.eval(value)?;
     let key = target.name.to_ascii_uppercase();
     let scalar = |v: &Value| match v {
@@ -85,7 +90,10 @@ fn given(it: &mut Interpreter, speeds: &[String], target: &Target, value: &Expr)
             _ => 0,
         };
         if r < 1 || r as usize > n {
-            return Err(Diagnostic::error(target.span.clone(), format!("expected ZERO[i] with 1 <= i <= {n}")));
+            return Err(Diagnostic::error(
+                target.span.clone(),
+                format!("expected ZERO[i] with 1 <= i <= {n}"),
+            ));
         }
         return Ok(Given::Zero(r as usize - 1, scalar(&hand)?));
     }

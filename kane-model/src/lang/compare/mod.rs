@@ -19,8 +19,8 @@ use super::parser;
 use super::present::Presenter;
 use super::session::{report, Session};
 use hand::Given;
-pub use judge::Relation;
 use judge::Judge;
+pub use judge::Relation;
 
 /// The verdict on one hand-derived equation or quantity component.
 #[derive(Clone, Debug)]

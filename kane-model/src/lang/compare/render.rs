@@ -31,11 +31,9 @@ impl Comparison {
         match &self.relation {
             Relation::Equal if self.verdict == Equivalence::Proven => format!("{}: proven equal", self.label),
             Relation::Equal => format!("{}: equal {}", self.label, how(&self.verdict)),
-            Relation::Negated => format!(
-                "{}: equal up to sign (hand = -derived), {}",
-                self.label,
-                how(&self.verdict)
-            ),
+            Relation::Negated => {
+                format!("{}: equal up to sign (hand = -derived), {}", self.label, how(&self.verdict))
+            }
             Relation::Row { row, negated } => format!(
                 "{}: equals derived {}{} (the order of the equations differs), {}",
                 self.label,
@@ -51,7 +49,9 @@ impl Comparison {
                 }
                 s
             }
-            Relation::Inconclusive => format!("{}: inconclusive: no point where both sides are finite", self.label),
+            Relation::Inconclusive => {
+                format!("{}: inconclusive: no point where both sides are finite", self.label)
+            }
         }
     }
 }
@@ -100,5 +100,40 @@ impl fmt::Display for Outcome {
             writeln!(f, "{}", c.line(&self.rows))?;
         }
         writeln!(f, "{}", self.summary())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn outcome(relations: Vec<Relation>) -> Outcome {
+        let comparisons = relations
+            .into_iter()
+            .enumerate()
+            .map(|(i, relation)| Comparison {
+                label: format!("ZERO[{}]", i + 1),
+                relation,
+                verdict: Equivalence::Proven,
+            })
+            .collect();
+        Outcome { comparisons, rows: vec!["ZERO[1]".into(), "ZERO[2]".into()] }
+    }
+
+    #[test]
+    fn the_summary_names_sign_and_order() {
+        let o = outcome(vec![Relation::Negated, Relation::Negated]);
+        assert_eq!(o.summary(), "equal up to sign: every equation is the derived one negated");
+        let o =
+            outcome(vec![Relation::Row { row: 1, negated: false }, Relation::Row { row: 0, negated: true }]);
+        assert_eq!(
+            o.summary(),
+            "equal up to sign: 1 of 2 negated and up to the order of the equations: \
+             ZERO[1] is derived ZERO[2], ZERO[2] is derived ZERO[1]"
+        );
+        let o = outcome(vec![Relation::Equal, Relation::Differs { difference: "x".into() }]);
+        assert!(o.differs());
+        assert_eq!(o.summary(), "1 of 2 differ");
+        assert!(o.to_string().contains("ZERO[2]: DIFFERS: hand - derived = x\n"));
     }
 }
