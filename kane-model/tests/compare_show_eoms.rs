@@ -47,6 +47,17 @@ fn swapped_equations_say_the_order_differs() {
 }
 
 #[test]
+fn speed_derivatives_are_checked_through_the_mass_matrix() {
+    let free_body = concat!(env!("CARGO_MANIFEST_DIR"), "/models/free_body.al");
+    let (ok, out, _) = kane(&["compare", free_body, &data("free_body_hand_udot_wrong.al")]);
+    assert!(!ok, "{out}");
+    assert_eq!(out.matches("proven equal").count(), 2, "{out}");
+    // One rate of three negated is a wrong rate, not equality up to sign.
+    assert!(out.contains("W3' (row 3 of M u' = f"), "{out}");
+    assert!(out.contains("DIFFERS: hand - derived = 2*(I2 - I1)*W1*W2\n"), "{out}");
+}
+
+#[test]
 fn a_velocity_is_compared_per_component() {
     let (ok, out, err) = kane(&["compare", GIMBAL, &data("gimbal_hand_velocity.al")]);
     assert!(ok, "{out}{err}");

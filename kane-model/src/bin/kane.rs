@@ -164,14 +164,12 @@ fn eoms(file: PathBuf, format: Format) -> Result<(), String> {
     match format {
         Format::Latex => print!("{}", p.to_latex(&mut m.model.ar)),
         Format::Text => {
-            let frames: Vec<_> = m.model.bodies().iter().map(|b| b.frame).collect();
-            let points: Vec<_> = m.model.bodies().iter().map(|b| b.mass_center).collect();
-            let table = m.model.partial_velocity_table(&frames, &points).map_err(|e| e.to_string())?;
             print!("{}", p.to_text(&m.model.ar));
             println!("\n% Partial velocities and partial angular velocities");
-            print!("{table}");
+            print!("{}", partial_velocities(&mut m)?);
         }
         Format::Json => {
+            let table = partial_velocities(&mut m)?;
             let ar = &m.model.ar;
             let text = |xs: &[kane_model::expr::Collected]| -> Vec<String> {
                 xs.iter().map(|x| ar.collected_text(x)).collect()
@@ -179,12 +177,20 @@ fn eoms(file: PathBuf, format: Format) -> Result<(), String> {
             let mass: Vec<Vec<String>> = p.mass_matrix.iter().map(|r| text(r)).collect();
             let v = serde_json::json!({
                 "coordinates": p.coordinates, "speeds": p.speeds, "kinematics": text(&p.kinematics),
+                "partial_velocities": table.lines().collect::<Vec<_>>(),
                 "mass_matrix": mass, "forcing": text(&p.forcing), "equations": text(&p.equations),
             });
             println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
         }
     }
     Ok(())
+}
+
+/// The partial velocity table of the bodies' frames and mass centres.
+fn partial_velocities(m: &mut LoadedModel) -> Result<String, String> {
+    let frames: Vec<_> = m.model.bodies().iter().map(|b| b.frame).collect();
+    let points: Vec<_> = m.model.bodies().iter().map(|b| b.mass_center).collect();
+    m.model.partial_velocity_table(&frames, &points).map(|t| t.to_string()).map_err(|e| e.to_string())
 }
 
 /// `kane eval`: the equations evaluated at a state.

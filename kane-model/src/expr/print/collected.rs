@@ -59,6 +59,9 @@ impl Style {
             let bare = t.factors.is_empty() && !t.negative;
             parts.push(if bare { inner } else { format!("{}{inner}{}", self.open, self.close) });
         }
+        if let Some(text) = self.over_whole_number(ar, t) {
+            return text;
+        }
         match t.coefficient.len() {
             0 => {}
             _ if t.scale.is_some() => {
@@ -73,6 +76,19 @@ impl Style {
             parts.push("1".into());
         }
         self.join(parts)
+    }
+
+    /// In text, `E2*W3/2` rather than `1/2*E2*W3` for a fraction times the factors.
+    fn over_whole_number(&self, ar: &Arena, t: &CollectedTerm) -> Option<String> {
+        let ([(false, x)], false, None) = (t.coefficient.as_slice(), self.latex, t.scale) else {
+            return None;
+        };
+        let r = ar.as_rational(*x).filter(|r| !r.is_integer() && !t.factors.is_empty())?;
+        let mut parts: Vec<String> = t.factors.iter().map(|f| (self.piece)(ar, *f)).collect();
+        if r.numer() != 1 {
+            parts.insert(0, r.numer().to_string());
+        }
+        Some(format!("{}/{}", self.join(parts), r.denom()))
     }
 
     fn collected(&self, ar: &Arena, c: &Collected) -> String {

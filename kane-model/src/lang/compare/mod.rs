@@ -155,8 +155,17 @@ fn udot_rows(
     for (r, x) in lhs.iter().enumerate() {
         let mut judge = Judge { ar, cfg, presenter };
         let (relation, verdict) = judge.judge(*x, &eqs.forcing, r, false)?;
-        let label = format!("{}' (row {} of M u' = f)", ar.symbol_info(eqs.speeds[r]).name, r + 1);
+        let name = &ar.symbol_info(eqs.speeds[r]).name;
+        let label = format!("{name}' (row {} of M u' = f, hand = M*(hand u'), derived = f)", r + 1);
         out.push(Comparison { label, relation, verdict });
+    }
+    // Rates equal up to sign only all together (u' = -h); one negated row is a wrong rate.
+    if !out.iter().all(|c| c.relation == Relation::Negated) {
+        for (r, c) in out.iter_mut().enumerate().filter(|(_, c)| c.relation == Relation::Negated) {
+            let diff = ar.sub(lhs[r], eqs.forcing[r])?;
+            c.relation = Relation::Differs { difference: presenter.text(ar, diff)? };
+            c.verdict = ar.equivalent(lhs[r], eqs.forcing[r], cfg)?;
+        }
     }
     Ok(out)
 }
