@@ -2,7 +2,7 @@
 //! gives (speed derivatives, `Fr + Fr*` rows, vectors or scalars of the model).
 
 use crate::expr::ExprId;
-use crate::mechanics::{KaneEquations, Vector};
+use crate::mechanics::{FrameId, KaneEquations, Vector};
 
 use super::super::ast::{Expr, ExprKind, Stmt, StmtKind, Target};
 use super::super::diagnostic::Diagnostic;
@@ -15,8 +15,9 @@ pub(super) enum Given {
     Udot(usize, ExprId),
     /// `ZERO[r] = g`: row `r` (0-based) of `Fr + Fr* = 0`.
     Zero(usize, ExprId),
-    /// `V_P_A> = v`: a vector of the model, with the model's value.
-    Vector { name: String, hand: Vector, derived: Vector },
+    /// `V_P_A> = v`: a vector of the model, with the model's value and the frame of the first
+    /// unit vector the hand file writes.
+    Vector { name: String, hand: Vector, derived: Vector, frame: Option<FrameId> },
     /// `K1 = x`: a scalar the model names, with the model's value.
     Scalar { name: String, hand: ExprId, derived: ExprId },
 }
@@ -102,7 +103,9 @@ fn given(
     }
     let name = format!("{}{}", target.name, ">".repeat(target.suffix as usize));
     match (hand, derived_value(it, target)?) {
-        (Value::Vector(hand), Value::Vector(derived)) => Ok(Given::Vector { name, hand, derived }),
+        (Value::Vector(hand), Value::Vector(derived)) => {
+            Ok(Given::Vector { name, hand, derived, frame: written_frame(it, value) })
+        }
         (Value::Scalar(hand), Value::Scalar(derived)) => Ok(Given::Scalar { name, hand, derived }),
         (h, d) => Err(Diagnostic::error(
             value.span.clone(),
@@ -110,4 +113,24 @@ fn given(
         )
         .with_help("compare scalars with scalars and vectors with vectors")),
     }
+}
+
+/// The frame of the first unit vector (`D2>`) written in `e`, left to right.
+fn written_frame(it: &Interpreter, e: &Expr) -> Option<FrameId> {
+    let mut stack = vec![e];
+    while let Some(e) = stack.pop() {
+        match &e.kind {
+            ExprKind::Name { name, suffix: 1, .. } => {
+                let key = name.to_ascii_uppercase();
+                if it.unit_vector(&key).is_some() {
+                    return it.frame_of(&key[..key.len() - 1]);
+                }
+            }
+            ExprKind::Neg(x) => stack.push(x),
+            ExprKind::Binary(_, a, b) => stack.extend([b.as_ref(), a.as_ref()]),
+            ExprKind::Call { args, .. } => stack.extend(args.iter().rev()),
+            _ => {}
+        }
+    }
+    None
 }

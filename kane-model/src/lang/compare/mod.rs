@@ -4,8 +4,8 @@
 //! A hand file holds one scalar equation per generalized speed, either as `U1' = ...` (the
 //! speed derivatives) or as `ZERO[1] = ...` (the expressions `Fr + Fr*` that vanish, written
 //! with the speed derivatives `U1'`), and may give quantities of the model: vectors such as
-//! `V_P_A> = L*U1*A1> + ...` (compared per component in the frame of the hand vector's first
-//! term) and named scalars such as `K1 = ...`. Points are sampled at the model's INPUT values.
+//! `V_P_A> = L*U1*A1> + ...` (compared per component in the frame of the first unit vector the
+//! hand file writes) and named scalars such as `K1 = ...`. Points are sampled at the model's INPUT values.
 
 mod hand;
 mod judge;
@@ -179,8 +179,8 @@ fn quantity(
 ) -> Result<Vec<Comparison>, String> {
     let (labels, hand, derived) = match g {
         Given::Scalar { name, hand, derived } => (vec![name.clone()], vec![*hand], vec![*derived]),
-        Given::Vector { name, hand, derived } => {
-            let frame = hand.terms().first().map_or(model.newtonian(), |t| t.0);
+        Given::Vector { name, hand, derived, frame } => {
+            let frame = frame.or(hand.terms().first().map(|t| t.0)).unwrap_or(model.newtonian());
             let components = |m: &mut Model, v: &Vector| m.express(v, frame).map_err(|e| e.to_string());
             let (h, d) = (components(model, hand)?, components(model, derived)?);
             let f = model.frame_name(frame).to_string();
