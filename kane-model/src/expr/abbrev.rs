@@ -60,10 +60,19 @@ impl Abbreviations {
     /// Abbreviations for `defs`: each `(name, value)` pair says the expression `name` (usually
     /// a symbol) stands for the parameter-only `value`. Definitions that are combinations of
     /// earlier ones are dropped.
+    ///
+    /// Shorter definitions are taken first, so a combination is written with the fewest names
+    /// (`IBXX - IBYY` comes back as `-IBZZ` when `IBZZ` is the shorter definition).
     pub fn new(ar: &mut Arena, defs: &[(ExprId, ExprId)]) -> Result<Abbreviations, ExprError> {
-        let mut rows: Vec<Row> = Vec::new();
+        let mut expanded = Vec::with_capacity(defs.len());
         for &(name, value) in defs {
-            let mut poly = ar.expand(value)?;
+            let poly = ar.expand(value)?;
+            expanded.push((terms(ar, poly).len(), name, poly));
+        }
+        expanded.sort_by_key(|d| d.0);
+        let mut rows: Vec<Row> = Vec::new();
+        for (_, name, poly) in expanded {
+            let mut poly = poly;
             let mut named = name;
             for row in &rows {
                 if let Some((p, k_named)) = eliminate(ar, poly, row)? {
@@ -141,5 +150,23 @@ mod tests {
         // Something the names do not cover stays as it is.
         let x = ar.mul(&[m, h]).unwrap();
         assert_eq!(ab.rewrite(&mut ar, x).unwrap(), x);
+    }
+
+    #[test]
+    fn the_shortest_names_are_preferred() {
+        // IXX = M*H^2/12, IYY = M*(W^2 + H^2)/12, IZZ = M*W^2/12: IXX - IYY is -IZZ.
+        let mut ar = Arena::new();
+        let [m, h, w] = ["M", "H", "W"].map(|n| ar.constant(n).unwrap());
+        let [ixx, iyy, izz] = ["IXX", "IYY", "IZZ"].map(|n| ar.constant(n).unwrap());
+        let k = ar.rational(1, 12).unwrap();
+        let (h2, w2) = (ar.powi(h, 2).unwrap(), ar.powi(w, 2).unwrap());
+        let vx = ar.mul(&[k, m, h2]).unwrap();
+        let hw = ar.add(&[h2, w2]).unwrap();
+        let vy = ar.mul(&[k, m, hw]).unwrap();
+        let vz = ar.mul(&[k, m, w2]).unwrap();
+        let ab = Abbreviations::new(&mut ar, &[(ixx, vx), (iyy, vy), (izz, vz)]).unwrap();
+        let d = ar.sub(vx, vy).unwrap();
+        let r = ab.rewrite(&mut ar, d).unwrap();
+        assert_eq!(ar.to_text(r), "-IZZ");
     }
 }
