@@ -103,6 +103,8 @@ fn show_prints_known_quantities() {
     assert_eq!(out, "K2 = M3*L^2/4 + M3*H3^2/12\n");
     let (_, out, _) = kane(&["show", GIMBAL, "V_P_A>", "--frame", "D"]);
     assert_eq!(out, "V_P_A> = (-L*cos(Q3)*sin(Q2)*U1 + L*sin(Q3)*U2)*D2> + (L*U3 + L*cos(Q2)*U1)*D3>\n");
+    let (_, out, _) = kane(&["show", GIMBAL, "Y*A1> - (I1+K1)*A2> + (I1+K1)*A1>"]);
+    assert!(out.ends_with(" = (Y + I1 + K1)*A1> - (I1 + K1)*A2>\n"), "{out}");
     let (ok, _, err) = kane(&["show", GIMBAL, "V_Q_A>"]);
     assert!(!ok && err.contains("`V_Q_A>` is not defined"), "{err}");
 }

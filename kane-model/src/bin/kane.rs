@@ -158,7 +158,6 @@ fn check(file: PathBuf) -> Result<(), String> {
 /// `kane eoms`: the equations of motion, simplified and collected, as text, LaTeX or JSON.
 fn eoms(file: PathBuf, format: Format) -> Result<(), String> {
     let mut m = load(&file)?;
-    equations(&m, &file)?;
     let p = lang::printed_eoms(&mut m).map_err(|e| format!("{}: {e}", file.display()))?;
     let p = p.ok_or_else(|| format!("{}: the file derives no equations; call KANE()", file.display()))?;
     match format {

@@ -54,6 +54,22 @@ impl Collected {
         ar.add(&values)
     }
 
+    /// `e` as one term, not simplified (zero for the number 0).
+    pub fn whole(ar: &Arena, e: ExprId) -> Collected {
+        if ar.is_zero(e) {
+            return Collected::default();
+        }
+        let term = CollectedTerm {
+            negative: false,
+            scale: None,
+            coefficient: vec![(false, e)],
+            inner: Vec::new(),
+            factors: Vec::new(),
+            value: e,
+        };
+        Collected { terms: vec![term] }
+    }
+
     fn size(&self, ar: &Arena) -> usize {
         self.terms.iter().map(|t| ar.graph_size(t.value)).sum()
     }
@@ -304,6 +320,8 @@ mod tests {
         let c = ar.tidy(e, |x| params.contains(&x), &Abbreviations::default()).unwrap();
         assert_eq!(c.terms.len(), 1);
         assert_eq!(ar.collected_text(&c), "(K2 - K1)*sin(Q2)^2*U1'");
+        let whole = Collected::whole(&ar, e);
+        assert_eq!(whole.to_expr(&mut ar).unwrap(), e);
         let back = c.to_expr(&mut ar).unwrap();
         let diff = ar.sub(back, e).unwrap();
         assert_eq!(ar.simplify(diff).unwrap(), ar.zero());

@@ -53,10 +53,14 @@ impl Presenter {
         Ok(Presenter { names: Abbreviations::new(ar, &defs)?, defined })
     }
 
-    /// `e` simplified and collected, parameters in the file's names.
+    /// `e` simplified and collected, parameters in the file's names; `e` as it is when
+    /// expanding it would give too many terms.
     pub fn tidy(&self, ar: &mut Arena, e: ExprId) -> Result<Collected, ExprError> {
         let params: Vec<bool> = ar.symbols().map(|(_, s)| s.kind == SymbolKind::Constant).collect();
-        ar.tidy(e, |s| params.get(s.index()).copied().unwrap_or(false), &self.names)
+        match ar.tidy(e, |s| params.get(s.index()).copied().unwrap_or(false), &self.names) {
+            Err(ExprError::TooLarge(_)) => Ok(Collected::whole(ar, e)),
+            other => other,
+        }
     }
 
     /// `e` simplified, as plain text.

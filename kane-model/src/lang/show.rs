@@ -1,6 +1,6 @@
 //! `kane show`: any quantity of a model (scalar, vector, dyadic, matrix), simplified.
 
-use crate::expr::{Arena, ExprError, ExprId};
+use crate::expr::{Arena, ExprError, ExprId, Node};
 use crate::mechanics::{Dyadic, FrameId, Model, Vector};
 
 use super::ast::StmtKind;
@@ -81,10 +81,13 @@ fn join_terms(ar: &mut Arena, p: &Presenter, terms: Vec<(ExprId, String)>) -> Re
             continue;
         }
         let text = ar.collected_text(&c);
-        let (neg, body) = match (c.terms.len(), text.strip_prefix('-')) {
-            (1, Some(rest)) => (true, rest.to_string()),
-            (1, None) => (false, text),
-            _ => (false, format!("({text})")),
+        // One term that prints as a sum (a parameter-only group, or an unsimplified whole).
+        let t = &c.terms[0];
+        let many = c.terms.len() > 1 || (!t.negative && matches!(ar.node(t.value), Node::Sum(_)));
+        let (neg, body) = match (many, text.strip_prefix('-')) {
+            (false, Some(rest)) => (true, rest.to_string()),
+            (false, None) => (false, text),
+            (true, _) => (false, format!("({text})")),
         };
         let body = if body == "1" { unit } else { format!("{body}*{unit}") };
         s.push_str(match (s.is_empty(), neg) {
