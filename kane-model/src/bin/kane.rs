@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
-use kane_model::expr::{Equivalence, ExprId, SymbolId, Tape};
+use kane_model::expr::{ExprId, SymbolId, Tape};
 use kane_model::lang::{self, LoadedModel};
 use kane_model::mechanics::KaneEquations;
 use nalgebra::{DMatrix, DVector};
@@ -56,12 +56,23 @@ enum Command {
         #[arg(long)]
         stats: bool,
     },
-    /// Check hand-derived equations (U1' = ... or ZERO[1] = ...) against the derived ones.
+    /// Check hand-derived equations (U1' = ... or ZERO[1] = ...) and quantities (V_P_A> = ...)
+    /// against the derived ones, and say how they differ.
     Compare {
         /// The model file.
         file: PathBuf,
         /// The hand-derived equations.
         hand: PathBuf,
+    },
+    /// Print any quantity of the model (scalar, vector, dyadic), simplified: I1, A_P_A>, ...
+    Show {
+        /// The model file.
+        file: PathBuf,
+        /// The quantity, as the model file would write it.
+        name: String,
+        /// Write vectors in this frame's unit vectors.
+        #[arg(long)]
+        frame: Option<String>,
     },
 }
 
@@ -117,6 +128,7 @@ fn run(command: Command) -> Result<(), String> {
         Command::Eval { file, set, json } => eval(file, set, json),
         Command::Gen { file, out, stats } => gen(file, out, stats),
         Command::Compare { file, hand } => compare(file, hand),
+        Command::Show { file, name, frame } => show(file, name, frame),
     }
 }
 
@@ -147,52 +159,41 @@ fn check(file: PathBuf) -> Result<(), String> {
     Ok(())
 }
 
-/// `kane eoms`: the equations of motion, printed.
+/// `kane eoms`: the equations of motion, simplified and collected, as text, LaTeX or JSON.
 fn eoms(file: PathBuf, format: Format) -> Result<(), String> {
     let mut m = load(&file)?;
-    let e = equations(&m, &file)?.clone();
-    let text = |m: &LoadedModel, x: ExprId| match format {
-        Format::Latex => m.model.ar.to_latex(x),
-        _ => m.model.ar.to_text(x),
-    };
-    let q = names(&m, &e.coordinates);
-    let u = names(&m, &e.speeds);
-    let kin: Vec<String> = e.kinematics.iter().map(|x| text(&m, *x)).collect();
-    let mass: Vec<Vec<String>> =
-        e.mass_matrix.iter().map(|r| r.iter().map(|x| text(&m, *x)).collect()).collect();
-    let forcing: Vec<String> = e.forcing.iter().map(|x| text(&m, *x)).collect();
-    let frames: Vec<_> = m.model.bodies().iter().map(|b| b.frame).collect();
-    let points: Vec<_> = m.model.bodies().iter().map(|b| b.mass_center).collect();
-    let table = m.model.partial_velocity_table(&frames, &points).map_err(|e| e.to_string())?;
+    let p = lang::printed_eoms(&mut m).map_err(|e| format!("{}: {e}", file.display()))?;
+    let p = p.ok_or_else(|| format!("{}: the file derives no equations; call KANE()", file.display()))?;
     match format {
+        Format::Latex => print!("{}", p.to_latex(&mut m.model.ar)),
+        Format::Text => {
+            print!("{}", p.to_text(&m.model.ar));
+            println!("\n% Partial velocities and partial angular velocities");
+            print!("{}", partial_velocities(&mut m)?);
+        }
         Format::Json => {
+            let table = partial_velocities(&mut m)?;
+            let ar = &m.model.ar;
+            let text = |xs: &[kane_model::expr::Collected]| -> Vec<String> {
+                xs.iter().map(|x| ar.collected_text(x)).collect()
+            };
+            let mass: Vec<Vec<String>> = p.mass_matrix.iter().map(|r| text(r)).collect();
             let v = serde_json::json!({
-                "coordinates": q, "speeds": u, "kinematics": kin,
+                "coordinates": p.coordinates, "speeds": p.speeds, "kinematics": text(&p.kinematics),
                 "partial_velocities": table.lines().collect::<Vec<_>>(),
-                "mass_matrix": mass, "forcing": forcing,
+                "mass_matrix": mass, "forcing": text(&p.forcing), "equations": text(&p.equations),
             });
             println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
         }
-        _ => {
-            println!("% Kinematic equations");
-            for (qi, k) in q.iter().zip(&kin) {
-                println!("{qi}' = {k}");
-            }
-            println!("\n% Partial velocities and partial angular velocities");
-            print!("{table}");
-            println!("\n% Mass matrix M (M u' = f)");
-            for (i, row) in mass.iter().enumerate() {
-                for (j, x) in row.iter().enumerate() {
-                    println!("M[{},{}] = {x}", i + 1, j + 1);
-                }
-            }
-            println!("\n% Forcing f");
-            for (i, x) in forcing.iter().enumerate() {
-                println!("f[{}] = {x}", i + 1);
-            }
-        }
     }
     Ok(())
+}
+
+/// The partial velocity table of the bodies' frames and mass centres.
+fn partial_velocities(m: &mut LoadedModel) -> Result<String, String> {
+    let frames: Vec<_> = m.model.bodies().iter().map(|b| b.frame).collect();
+    let points: Vec<_> = m.model.bodies().iter().map(|b| b.mass_center).collect();
+    m.model.partial_velocity_table(&frames, &points).map(|t| t.to_string()).map_err(|e| e.to_string())
 }
 
 /// `kane eval`: the equations evaluated at a state.
@@ -281,30 +282,24 @@ fn gen(file: PathBuf, out: Option<PathBuf>, stats: bool) -> Result<(), String> {
     Ok(())
 }
 
-/// `kane compare`: hand-derived equations against the derived ones.
+/// `kane compare`: hand-derived equations against the derived ones, and how they differ.
 fn compare(file: PathBuf, hand: PathBuf) -> Result<(), String> {
     let (src, hand_src) = (read(&file)?, read(&hand)?);
-    let results = lang::compare(&file.display().to_string(), &src, &hand.display().to_string(), &hand_src)
+    let outcome = lang::compare(&file.display().to_string(), &src, &hand.display().to_string(), &hand_src)
         .map_err(|r| r.render())?;
-    let mut differs = false;
-    for c in results {
-        let line = match c.verdict {
-            Equivalence::Proven => "proven equal".to_string(),
-            Equivalence::NumericallyEqual { samples, max_relative_residual, tolerance } => format!(
-                "numerically equal at {samples} random points (largest relative residual {max_relative_residual:.1e}, tolerance {tolerance:.0e})"
-            ),
-            Equivalence::Differs { point, lhs, rhs } => {
-                differs = true;
-                let at: Vec<String> = point.iter().map(|(n, v)| format!("{n} = {v:.6}")).collect();
-                format!("DIFFERS: hand {lhs}, derived {rhs}, residual {:.3e} at {}", lhs - rhs, at.join(", "))
-            }
-            Equivalence::Inconclusive => "inconclusive: no point where both sides are finite".to_string(),
-        };
-        println!("{}: {line}", c.label);
-    }
-    if differs {
+    print!("{outcome}");
+    if outcome.differs() {
         Err("some equations differ".into())
     } else {
         Ok(())
     }
+}
+
+/// `kane show`: one quantity of the model, simplified.
+fn show(file: PathBuf, name: String, frame: Option<String>) -> Result<(), String> {
+    let src = read(&file)?;
+    let text =
+        lang::show(&file.display().to_string(), &src, &name, frame.as_deref()).map_err(|r| r.render())?;
+    println!("{text}");
+    Ok(())
 }

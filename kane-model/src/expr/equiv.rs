@@ -35,6 +35,32 @@ pub enum Equivalence {
     Inconclusive,
 }
 
+/// How one symbol is sampled: the first point takes `centre`, later ones a random value within
+/// `spread` of it (a fraction of `centre` when `relative`, so the sign is kept).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SampleAround {
+    /// The value at the first point (a file's INPUT value, say).
+    pub centre: f64,
+    /// Half-width of the interval sampled around the centre.
+    pub spread: f64,
+    /// Whether `spread` is relative to `centre`.
+    pub relative: bool,
+}
+
+impl SampleAround {
+    fn draw(&self, rng: &mut StdRng, first: bool) -> f64 {
+        if first {
+            return self.centre;
+        }
+        let r: f64 = rng.random_range(-1.0..1.0);
+        if self.relative {
+            self.centre * (1.0 + self.spread * r)
+        } else {
+            self.centre + self.spread * r
+        }
+    }
+}
+
 /// Settings of the numeric part of [`Arena::equivalent`].
 #[derive(Clone, Debug)]
 pub struct EquivalenceConfig {
@@ -46,17 +72,25 @@ pub struct EquivalenceConfig {
     pub range: (f64, f64),
     /// Seed of the sampler, so verdicts are reproducible.
     pub seed: u64,
+    /// Symbols sampled around given values rather than uniformly from `range`.
+    pub around: FxHashMap<SymbolId, SampleAround>,
 }
 
 impl Default for EquivalenceConfig {
     fn default() -> Self {
-        EquivalenceConfig { samples: 64, tolerance: 1e-9, range: (-2.0, 2.0), seed: 0x6b616e65 }
+        EquivalenceConfig {
+            samples: 64,
+            tolerance: 1e-9,
+            range: (-2.0, 2.0),
+            seed: 0x6b616e65,
+            around: FxHashMap::default(),
+        }
     }
 }
 
 impl Arena {
     /// Whether `a` and `b` are equal: [`Equivalence::Proven`] if `a - b` simplifies to 0,
-    /// otherwise compared at random points.
+    /// otherwise compared at random points (see [`EquivalenceConfig::around`]).
     ///
     /// # Example
     /// ```
@@ -90,12 +124,17 @@ impl Arena {
         let (lo, hi) = cfg.range;
         let mut compared = 0;
         let mut worst: f64 = 0.0;
-        for _ in 0..cfg.samples.saturating_mul(10) {
+        for attempt in 0..cfg.samples.saturating_mul(10) {
             if compared == cfg.samples {
                 break;
             }
-            let values: FxHashMap<SymbolId, f64> =
-                syms.iter().map(|s| (*s, rng.random_range(lo..hi))).collect();
+            let values: FxHashMap<SymbolId, f64> = syms
+                .iter()
+                .map(|s| match cfg.around.get(s) {
+                    Some(a) => (*s, a.draw(&mut rng, attempt == 0)),
+                    None => (*s, rng.random_range(lo..hi)),
+                })
+                .collect();
             let Ok(v) = self.eval(&[a, b], |s| values.get(&s).copied()) else { continue };
             compared += 1;
             let rel = (v[0] - v[1]).abs() / v[0].abs().max(v[1].abs()).max(1.0);
@@ -149,5 +188,25 @@ mod tests {
         let rhs = ar.mul(&[two, s, c]).unwrap();
         let r = ar.equivalent(lhs, rhs, &EquivalenceConfig::default()).unwrap();
         assert!(matches!(r, Equivalence::NumericallyEqual { samples: 64, .. }), "{r:?}");
+    }
+
+    #[test]
+    fn samples_around_given_values_first_at_the_centre() {
+        let mut ar = Arena::new();
+        let m = ar.constant("m").unwrap();
+        let ms = ar.as_symbol(m).unwrap();
+        let s = ar.sin(m).unwrap();
+        let mut cfg = EquivalenceConfig::default();
+        cfg.around.insert(ms, SampleAround { centre: 50.0, spread: 0.1, relative: true });
+        let Equivalence::Differs { point, .. } = ar.equivalent(s, m, &cfg).unwrap() else { panic!() };
+        assert_eq!(point[0].1, 50.0);
+        // every later draw stays within 10 % of the centre, so sqrt(m) is always defined
+        let r = ar.sqrt(m).unwrap();
+        let r2 = ar.powi(r, 2).unwrap();
+        let v = ar.equivalent(r2, m, &cfg).unwrap();
+        assert!(
+            matches!(v, Equivalence::Proven | Equivalence::NumericallyEqual { samples: 64, .. }),
+            "{v:?}"
+        );
     }
 }

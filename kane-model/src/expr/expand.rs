@@ -6,6 +6,15 @@ use super::node::{ExprId, Func, Node};
 
 type Res = Result<ExprId, ExprError>;
 
+/// Which of sine and cosine keeps its even powers in a trigonometric canonical form.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum TrigBasis {
+    /// `sin(x)^2` is rewritten as `1 - cos(x)^2`.
+    Cos,
+    /// `cos(x)^2` is rewritten as `1 - sin(x)^2`.
+    Sin,
+}
+
 /// Largest positive integer power of a sum that expansion multiplies out.
 const MAX_EXPANDED_POWER: i64 = 64;
 /// Most terms one expanded product may have; beyond it expansion is refused, not attempted.
@@ -92,19 +101,33 @@ impl Arena {
 
     /// [`Arena::trig_simplify`] over several roots.
     pub fn trig_simplify_many(&mut self, roots: &[ExprId]) -> Result<Vec<ExprId>, ExprError> {
+        self.trig_canonical_many(roots, TrigBasis::Cos)
+    }
+
+    /// The trigonometric canonical form in which even powers of the function other than
+    /// `basis` are eliminated: with [`TrigBasis::Sin`], `cos(x)^2` becomes `1 - sin(x)^2`.
+    pub fn trig_canonical_many(
+        &mut self,
+        roots: &[ExprId],
+        basis: TrigBasis,
+    ) -> Result<Vec<ExprId>, ExprError> {
+        let (gone, kept) = match basis {
+            TrigBasis::Cos => (Func::Sin, Func::Cos),
+            TrigBasis::Sin => (Func::Cos, Func::Sin),
+        };
         let expanded = self.expand_many(roots)?;
         let rewritten = self.map_bottom_up(
             &expanded,
             |_| false,
             |ar, id, kids| {
                 let Node::Pow([b, _]) = *ar.node(id) else { return Ok(None) };
-                let Node::Func(Func::Sin, x) = *ar.node(b) else { return Ok(None) };
+                let Node::Func(f, x) = *ar.node(b) else { return Ok(None) };
                 let Some(n) = ar.as_rational(kids[1]).and_then(|r| r.as_i64()) else { return Ok(None) };
-                if n < 2 {
+                if f != gone || n < 2 {
                     return Ok(None);
                 }
                 let one = ar.one();
-                let c = ar.cos(x)?;
+                let c = ar.func(kept, x)?;
                 let c2 = ar.powi(c, 2)?;
                 let s2 = ar.sub(one, c2)?;
                 let p = ar.powi(s2, n / 2)?;

@@ -6,6 +6,7 @@
 //! [`Arena::func`]); transformations (derivatives, substitution, expansion, trigonometric
 //! simplification) walk the DAG bottom-up and never recurse, so deep expressions are safe.
 
+mod abbrev;
 mod arena;
 mod build;
 mod collect;
@@ -20,14 +21,18 @@ mod node;
 mod number;
 mod print;
 mod tape;
+mod tidy;
 mod traverse;
 
+pub use abbrev::Abbreviations;
 pub use arena::{Arena, Symbol, TIME};
 pub use cse::{Cse, StraightLine};
 pub use diff::TimeDerivative;
-pub use equiv::{Equivalence, EquivalenceConfig};
+pub use equiv::{Equivalence, EquivalenceConfig, SampleAround};
 pub use error::ExprError;
+pub use expand::TrigBasis;
 pub use node::{ExprId, Func, Node, SymbolId, SymbolKind};
 pub use number::{Number, Rational};
 pub(crate) use print::layout::{layout, Prec, Syntax};
 pub use tape::{Op, Tape};
+pub use tidy::{Collected, CollectedTerm};

@@ -16,17 +16,24 @@ mod ast;
 mod check;
 mod compare;
 mod diagnostic;
+mod eoms;
 mod interp;
 mod parser;
+mod present;
+mod session;
+mod show;
 mod to_spec;
 mod token;
 
 pub use ast::{Expr, ExprKind, Stmt, StmtKind};
 pub use check::{check, Checked, OVERRIDE_MARKER};
-pub use compare::{compare, Comparison};
+pub use compare::{compare, Comparison, Outcome, Relation};
 pub use diagnostic::{line_column, Diagnostic, Report, Severity};
+pub use eoms::{printed_eoms, PrintedEoms};
 pub use interp::value::Value;
 pub use interp::{CodeRequest, InputValue, LoadedModel};
+pub use present::Presenter;
+pub use show::show;
 pub use token::Span;
 
 /// Parses a program; every syntax error is reported.

@@ -1,5 +1,6 @@
 //! Printers: plain text and LaTeX, sharing one layout with code generation's lowering.
 
+mod collected;
 mod latex;
 pub(crate) mod layout;
 mod text;
