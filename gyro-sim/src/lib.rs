@@ -7,7 +7,11 @@
 //! [`run`] chains them; [`models`] holds the models compiled into the simulator.
 #![warn(missing_docs)]
 
+pub mod cli;
+pub mod compiled;
 pub mod initial;
+pub mod instant;
+pub mod model_file;
 pub mod models;
 pub mod ode;
 pub mod output;

@@ -22,6 +22,8 @@ pub struct Problem {
     pub title: String,
     /// The model.
     pub model: &'static ModelInfo,
+    /// Where the registry has it (its name, or the model file a scene names).
+    pub model_key: String,
     /// Parameter values, in `model.param_names` order.
     pub params: Vec<f64>,
     /// The initial state at `t = 0`.

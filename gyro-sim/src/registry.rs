@@ -2,33 +2,62 @@
 //! [`GeneratedModel`]); out goes a [`Registry`] that finds each by name with its metadata and
 //! the solver instantiated for it. A user's crate builds its own with [`Registry::with`].
 
+use std::sync::Arc;
+
 use kane_model::runtime::{GeneratedModel, ModelInfo};
 
 use crate::problem::Problem;
 use crate::solve::{solve_model, SolveError};
 use crate::trajectory::Trajectory;
 
+/// How a model's equations run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Engine {
+    /// Compiled Rust, the integrator inlined with it.
+    Compiled,
+    /// The lowered program evaluated directly (no compilation).
+    Instant,
+}
+
+impl Engine {
+    /// Its name in messages (`compiled`, `instant`).
+    pub fn label(self) -> &'static str {
+        match self {
+            Engine::Compiled => "compiled",
+            Engine::Instant => "instant",
+        }
+    }
+}
+
+/// Integrates a problem of one model.
+pub type SolveFn = Arc<dyn Fn(&Problem) -> Result<Trajectory, SolveError> + Send + Sync>;
+/// A vector a model gives (its initial state, its parameter defaults).
+pub type ValuesFn = Arc<dyn Fn() -> Vec<f64> + Send + Sync>;
+
 /// One model: its metadata and what runs it.
-#[derive(Clone, Copy)]
+#[derive(Clone)]
 pub struct ModelEntry {
     /// Names, units, outputs.
     pub info: &'static ModelInfo,
     /// The initial state from the model's INPUT (NaN where none), model units.
-    pub initial_state: fn() -> Vec<f64>,
+    pub initial_state: ValuesFn,
     /// The parameter defaults, in `info.param_names` order (NaN where none).
-    pub default_params: fn() -> Vec<f64>,
+    pub default_params: ValuesFn,
     /// Integrates a problem of this model.
-    pub solve: fn(&Problem) -> Result<Trajectory, SolveError>,
+    pub solve: SolveFn,
+    /// How it runs.
+    pub engine: Engine,
 }
 
 impl ModelEntry {
     /// The entry of `M`.
-    pub fn of<M: GeneratedModel>() -> ModelEntry {
+    pub fn of<M: GeneratedModel + 'static>() -> ModelEntry {
         ModelEntry {
             info: &M::INFO,
-            initial_state: M::initial_state,
-            default_params: default_params::<M>,
-            solve: solve_model::<M>,
+            initial_state: Arc::new(M::initial_state),
+            default_params: Arc::new(default_params::<M>),
+            solve: Arc::new(solve_model::<M>),
+            engine: Engine::Compiled,
         }
     }
 }
@@ -41,7 +70,7 @@ fn default_params<M: GeneratedModel>() -> Vec<f64> {
 /// Models by name.
 #[derive(Clone, Default)]
 pub struct Registry {
-    entries: Vec<ModelEntry>,
+    entries: Vec<(String, ModelEntry)>,
 }
 
 impl Registry {
@@ -56,18 +85,25 @@ impl Registry {
     }
 
     /// This registry with `M` added.
-    pub fn with<M: GeneratedModel>(mut self) -> Registry {
-        self.entries.push(ModelEntry::of::<M>());
+    pub fn with<M: GeneratedModel + 'static>(self) -> Registry {
+        self.with_entry(M::INFO.name, ModelEntry::of::<M>())
+    }
+
+    /// This registry with `entry` found under `key` (a model's name, or the model file a
+    /// scene names); an earlier entry under the same key is replaced.
+    pub fn with_entry(mut self, key: &str, entry: ModelEntry) -> Registry {
+        self.entries.retain(|(k, _)| !k.eq_ignore_ascii_case(key));
+        self.entries.push((key.to_string(), entry));
         self
     }
 
-    /// The model named `name` (case-insensitive).
-    pub fn find(&self, name: &str) -> Option<&ModelEntry> {
-        self.entries.iter().find(|e| e.info.name.eq_ignore_ascii_case(name))
+    /// The model under `key` (case-insensitive).
+    pub fn find(&self, key: &str) -> Option<&ModelEntry> {
+        self.entries.iter().find(|(k, _)| k.eq_ignore_ascii_case(key)).map(|(_, e)| e)
     }
 
-    /// The names of the models.
-    pub fn names(&self) -> Vec<&'static str> {
-        self.entries.iter().map(|e| e.info.name).collect()
+    /// The keys of the models.
+    pub fn names(&self) -> Vec<&str> {
+        self.entries.iter().map(|(k, _)| k.as_str()).collect()
     }
 }

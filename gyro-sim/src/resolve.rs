@@ -27,6 +27,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
     Ok(Problem {
         title: scene.title.clone(),
         model: info,
+        model_key: scene.model.clone(),
         params: parameters(scene, entry)?,
         initial: initial_state(scene, entry)?,
         times: times.clone(),

@@ -5,7 +5,7 @@
 use std::ops::ControlFlow;
 use std::time::Instant;
 
-use kane_model::runtime::GeneratedModel;
+use kane_model::runtime::{GeneratedModel, ModelInfo};
 use thiserror::Error;
 
 use crate::ode::{self, Method, OdeError, Stats, System};
@@ -57,8 +57,8 @@ pub enum SolveError {
 /// Integrates `problem` with the model the registry has under its name.
 pub fn solve(problem: &Problem, registry: &Registry) -> Result<Trajectory, SolveError> {
     let entry = registry
-        .find(problem.model.name)
-        .ok_or_else(|| SolveError::UnknownModel(problem.model.name.into()))?;
+        .find(&problem.model_key)
+        .ok_or_else(|| SolveError::UnknownModel(problem.model_key.clone()))?;
     (entry.solve)(problem)
 }
 
@@ -78,6 +78,24 @@ impl<M: GeneratedModel> ModelSystem<M> {
     /// The parameters.
     pub fn params(&self) -> &M::Params {
         &self.params
+    }
+}
+
+/// A model with its parameters bound: the system the solver integrates, its metadata and its
+/// outputs.
+pub trait BoundModel: System {
+    /// The model's metadata.
+    fn info(&self) -> &'static ModelInfo;
+    /// Output `k` at `(t, y)` (full state) into `out`; `rates` are `u'` when it needs them.
+    fn output(&self, k: usize, t: f64, y: &[f64], rates: &[f64], out: &mut [f64]);
+}
+
+impl<M: GeneratedModel> BoundModel for ModelSystem<M> {
+    fn info(&self) -> &'static ModelInfo {
+        &M::INFO
+    }
+    fn output(&self, k: usize, t: f64, y: &[f64], rates: &[f64], out: &mut [f64]) {
+        M::output(k, t, y, rates, &self.params, out)
     }
 }
 
@@ -143,16 +161,20 @@ pub(crate) struct Integration {
 
 /// Integrates `problem` with the generated model `M`.
 pub fn solve_model<M: GeneratedModel>(problem: &Problem) -> Result<Trajectory, SolveError> {
-    let info = &M::INFO;
     let mut params = M::Params::default();
-    for (name, v) in info.param_names.iter().zip(&problem.params) {
+    for (name, v) in M::INFO.param_names.iter().zip(&problem.params) {
         M::set_param(&mut params, name, *v);
     }
+    solve_bound(problem, &ModelSystem::<M>::new(params))
+}
+
+/// Integrates `problem` with `model` (its parameters already bound).
+pub fn solve_bound<B: BoundModel>(problem: &Problem, full_sys: &B) -> Result<Trajectory, SolveError> {
+    let info = full_sys.info();
     let keep = integrated_states(problem);
-    let full_sys = ModelSystem::<M>::new(params.clone());
-    let sys = Reduced::new(&full_sys, keep.clone());
+    let sys = Reduced::new(full_sys, keep.clone());
     let columns = columns(problem);
-    let integrate_at = |method: Method| integrate::<M>(problem, &sys, &keep, &columns, method);
+    let integrate_at = |method: Method| integrate(problem, &sys, &keep, &columns, method);
     let start = Instant::now();
     let (Integration { stats, rows, plot_rows, y_end, norm_drift }, accuracy) =
         match (problem.accuracy, problem.method) {
@@ -161,10 +183,10 @@ pub fn solve_model<M: GeneratedModel>(problem: &Problem) -> Result<Trajectory, S
         };
     let wall = start.elapsed();
     let t_end = *problem.times.last().unwrap_or(&0.0);
-    let kinetic_energy = kinetic_energy_output::<M>().map(|k| {
+    let kinetic_energy = kinetic_energy_output(info).map(|k| {
         let at = |t: f64, y: &[f64]| {
             let mut out = [0.0];
-            M::output(k, t, y, &[], full_sys.params(), &mut out);
+            full_sys.output(k, t, y, &[], &mut out);
             out[0]
         };
         (at(0.0, &problem.initial), at(t_end, &y_end))
@@ -183,9 +205,9 @@ pub fn solve_model<M: GeneratedModel>(problem: &Problem) -> Result<Trajectory, S
     })
 }
 
-/// The kinetic-energy output of `M`, if it has one that reads no rates.
-fn kinetic_energy_output<M: GeneratedModel>() -> Option<usize> {
-    M::INFO.outputs.iter().position(|o| o.kind == "kinetic_energy" && !o.needs_rates && o.columns.len() == 1)
+/// The kinetic-energy output of a model, if it has one that reads no rates.
+fn kinetic_energy_output(info: &ModelInfo) -> Option<usize> {
+    info.outputs.iter().position(|o| o.kind == "kinetic_energy" && !o.needs_rates && o.columns.len() == 1)
 }
 
 /// The states to integrate: all but the cyclic coordinates that no column reads.
@@ -229,14 +251,14 @@ fn columns(problem: &Problem) -> Vec<Column> {
 }
 
 /// One integration at `method`: the rows written and the full state at the final time.
-fn integrate<M: GeneratedModel>(
+fn integrate<B: BoundModel>(
     problem: &Problem,
-    sys: &Reduced<'_, ModelSystem<M>>,
+    sys: &Reduced<'_, B>,
     keep: &[usize],
     columns: &[Column],
     method: Method,
 ) -> Result<Integration, SolveError> {
-    let info = &M::INFO;
+    let info = sys.inner.info();
     let n = info.state_names.len();
     let mut full_y = vec![0.0; n];
     let mut y_end = problem.initial.clone();
@@ -246,7 +268,6 @@ fn integrate<M: GeneratedModel>(
         problem.picks.iter().any(|p| matches!(p, Pick::Output(k) if info.outputs[*k].needs_rates));
     let mut bad: Option<SolveError> = None;
     let y_start: Vec<f64> = keep.iter().map(|k| problem.initial[*k]).collect();
-    let params = sys_params(sys);
     let all_times = merged(&problem.times, &problem.plot_times);
     let mut plot_rows: Vec<Vec<f64>> = Vec::new();
     let mut next_output = 0;
@@ -268,7 +289,7 @@ fn integrate<M: GeneratedModel>(
                     let width = info.outputs[k].columns.len();
                     let at = row.len();
                     row.resize(at + width, 0.0);
-                    M::output(k, t, &full_y, &dy[info.n_coordinates..], params, &mut row[at..]);
+                    sys.inner.output(k, t, &full_y, &dy[info.n_coordinates..], &mut row[at..]);
                 }
             }
         }
@@ -321,8 +342,4 @@ fn merged(a: &[f64], b: &[f64]) -> Vec<f64> {
     out.sort_by(f64::total_cmp);
     out.dedup();
     out
-}
-
-fn sys_params<'a, M: GeneratedModel>(sys: &'a Reduced<'_, ModelSystem<M>>) -> &'a M::Params {
-    sys.inner.params()
 }

@@ -36,7 +36,13 @@ pub struct Section {
 impl Section {
     /// Runs the section: `read` gives each input's value, `out` receives the results.
     pub fn eval<T: num_traits::Float>(&self, read: impl Fn(Input) -> T, out: &mut [T]) {
-        let mut regs: Vec<T> = Vec::with_capacity(self.ops.len());
+        self.eval_in(read, &mut Vec::with_capacity(self.ops.len()), out)
+    }
+
+    /// [`Section::eval`] with the values kept in `regs` (cleared first, so one buffer serves
+    /// many calls without allocating).
+    pub fn eval_in<T: num_traits::Float>(&self, read: impl Fn(Input) -> T, regs: &mut Vec<T>, out: &mut [T]) {
+        regs.clear();
         for op in &self.ops {
             let r = |v: u32| regs[v as usize];
             let v = match *op {

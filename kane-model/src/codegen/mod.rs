@@ -8,8 +8,10 @@
 
 pub mod ir;
 mod lower;
+mod meta;
 mod names;
 mod print;
+mod program_model;
 
 use proc_macro2::TokenStream;
 use thiserror::Error;
@@ -17,8 +19,10 @@ use thiserror::Error;
 use crate::spec::ModelSpec;
 
 pub use lower::{lower, Lowered};
+pub use meta::{Meta, OutputMeta};
 pub use names::rust_ident;
 pub use print::{print_section, Scalar, SectionStyle};
+pub use program_model::ProgramModel;
 
 /// Why a model cannot be turned into code.
 #[derive(Clone, Debug, PartialEq, Error)]

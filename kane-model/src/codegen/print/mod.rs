@@ -6,5 +6,5 @@ mod module;
 mod outputs;
 mod section;
 
-pub use module::module;
+pub use module::{is_quaternion, module};
 pub use section::{print as print_section, Scalar, SectionStyle};

@@ -27,7 +27,7 @@ pub fn module(spec: &ModelSpec, lowered: &Lowered) -> TokenStream {
     let params_items = params_items(spec, lowered, &param_idents);
     let quaternion: Vec<bool> = spec.outputs.iter().map(|o| is_quaternion(&o.kind)).collect();
     let compute = functions(program, &param_idents, &quaternion);
-    let info = metadata::info(spec, lowered);
+    let info = metadata::info(&super::super::meta::Meta::of(spec, lowered));
     let model_impl = model_impl(spec, lowered, &param_idents);
     quote! {
         /// Number of states: coordinates, then speeds.

@@ -1,0 +1,216 @@
+//! The `gyro-sim` command line: in come the arguments and the models compiled in; out go the
+//! runs, their files and a summary. A scene or a model file (`--model`, or a scene's
+//! `model = "file.al"`) runs on the compiled path (a cached binary with the model compiled in,
+//! run in this one's place) or on the instant path (the lowered program evaluated directly).
+
+mod model_scene;
+mod summary;
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+pub use model_scene::{parse_set, scene_text, ModelRunArgs};
+pub use summary::print_summary;
+
+use crate::model_file::{FileRun, ModelFile};
+use crate::registry::{Engine, ModelEntry, Registry};
+use crate::scene::Scene;
+
+/// Simulate models derived with Kane's method.
+#[derive(Parser)]
+#[command(name = "gyro-sim", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run a scene, or a model file without one: writes DIR/trajectory.csv and the figures,
+    /// prints a summary.
+    Run(RunArgs),
+}
+
+/// `gyro-sim run`.
+#[derive(clap::Args)]
+struct RunArgs {
+    /// The scene file (TOML); or give --model.
+    #[arg(required_unless_present = "model", conflicts_with = "model")]
+    scene: Option<PathBuf>,
+    /// A model file to run without a scene: values from its INPUT lines, times and tolerances
+    /// from TFINAL, INTEGSTP, ABSERR, RELERR, columns from OUTPUT.
+    #[arg(long)]
+    model: Option<PathBuf>,
+    /// NAME=VALUE for a parameter or an initial state, with a unit if wanted ("Q2=30 deg").
+    #[arg(long = "set", value_name = "NAME=VALUE", requires = "model", value_parser = parse_set)]
+    sets: Vec<(String, String)>,
+    /// End time (overrides the file's TFINAL).
+    #[arg(long, requires = "model")]
+    t_final: Option<f64>,
+    /// How a model file's equations run: compiled (cached native code, built once per file
+    /// version) or instant (no compilation; slower per step).
+    #[arg(long, value_enum, default_value = "compiled")]
+    engine: EngineChoice,
+    /// Print the scene a --model run uses (to save and edit) and stop.
+    #[arg(long, requires = "model")]
+    print_scene: bool,
+    /// Output folder.
+    #[arg(long, required_unless_present = "print_scene")]
+    out: Option<PathBuf>,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum EngineChoice {
+    Compiled,
+    Instant,
+}
+
+/// A model file compiled into this binary (the compiled path's cached binaries).
+#[derive(Clone)]
+pub struct CompiledModel {
+    /// Its registry key ([`crate::compiled::registry_key`] of the file's text).
+    pub key: String,
+    /// The compiled model.
+    pub entry: ModelEntry,
+    /// What the file says about a run.
+    pub run: FileRun,
+}
+
+/// Runs the command line with `registry`'s models (and `compiled`, when this binary is a
+/// model file's compiled path).
+pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCode {
+    let Command::Run(args) = Cli::parse().command;
+    match run_command(&args, registry, compiled) {
+        Ok(code) => code,
+        Err(message) => {
+            eprintln!("{}", message.trim_end());
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// `gyro-sim run`: finds the model file if any, takes its path, and runs.
+fn run_command(
+    args: &RunArgs,
+    registry: Registry,
+    compiled: Option<CompiledModel>,
+) -> Result<ExitCode, String> {
+    let scene = match &args.scene {
+        Some(path) => Some(Scene::load(path).map_err(|e| e.to_string())?),
+        None => None,
+    };
+    let file_path = match (&scene, &args.model) {
+        (_, Some(m)) => Some(m.clone()),
+        (Some(s), None) => model_file_of(s),
+        (None, None) => None,
+    };
+    let Some(file_path) = file_path else {
+        let scene = scene.ok_or("give a scene or --model")?;
+        return finish(&scene, &registry, args, None);
+    };
+    let source = std::fs::read_to_string(&file_path)
+        .map_err(|e| format!("{}: cannot read the model file: {e}", file_path.display()))?;
+    let key = crate::compiled::registry_key(&source);
+    let (entry, run, file) = match compiled.filter(|c| c.key == key) {
+        Some(c) => (c.entry, c.run, None),
+        None => {
+            let file = ModelFile::load(&file_path).map_err(|e| e.to_string())?;
+            eprint!("{}", file.warnings);
+            if args.engine == EngineChoice::Compiled && !args.print_scene {
+                return run_compiled(&file);
+            }
+            let entry = crate::instant::instant_entry(file.program.clone());
+            (entry, file.run.clone(), Some(file))
+        }
+    };
+    let scene = match scene {
+        Some(s) => s,
+        None => model_scene(&file_path, &run, &entry, args)?,
+    };
+    if args.print_scene {
+        print!("{}", scene.source);
+        return Ok(ExitCode::SUCCESS);
+    }
+    let registry = registry.with_entry(&scene.model, entry);
+    finish(&scene, &registry, args, file.as_ref())
+}
+
+/// The model file a scene names (`model = "file.al"`, relative to the scene), if it does.
+fn model_file_of(scene: &Scene) -> Option<PathBuf> {
+    if !scene.model.to_ascii_lowercase().ends_with(".al") {
+        return None;
+    }
+    let dir = scene.path.parent().unwrap_or(Path::new("."));
+    Some(dir.join(&scene.model))
+}
+
+/// The scene of a `--model` run.
+fn model_scene(path: &Path, run: &FileRun, entry: &ModelEntry, args: &RunArgs) -> Result<Scene, String> {
+    let model_args = ModelRunArgs { sets: args.sets.clone(), t_final: args.t_final };
+    let text = scene_text(&path.display().to_string(), run, entry.info, &model_args)?;
+    let mut scene = Scene::parse("<command line>", &text).map_err(|e| e.to_string())?;
+    // The model is found under the path as given (not relative to a scene file).
+    scene.path = PathBuf::from("<command line>");
+    Ok(scene)
+}
+
+/// Builds (or finds) the compiled binary and runs it with the same arguments.
+fn run_compiled(file: &ModelFile) -> Result<ExitCode, String> {
+    let (binary, built) = crate::compiled::ensure_binary(file).map_err(|e| e.to_string())?;
+    if built {
+        eprintln!("compiled: {}", binary.display());
+    }
+    let status = std::process::Command::new(&binary)
+        .args(std::env::args_os().skip(1))
+        .status()
+        .map_err(|e| format!("cannot start the compiled model {}: {e}", binary.display()))?;
+    Ok(match status.code() {
+        Some(0) => ExitCode::SUCCESS,
+        Some(c) => ExitCode::from(u8::try_from(c).unwrap_or(1)),
+        None => ExitCode::FAILURE,
+    })
+}
+
+/// Resolves (checking a model file's values for plausibility), runs, writes and summarises.
+fn finish(
+    scene: &Scene,
+    registry: &Registry,
+    args: &RunArgs,
+    file: Option<&ModelFile>,
+) -> Result<ExitCode, String> {
+    let failed = |e: &dyn std::fmt::Display| format!("{}: {e}", scene.path.display());
+    if let Some(file) = file {
+        let problem = crate::resolve::resolve(scene, registry).map_err(|e| e.to_string())?;
+        plausible(file, &problem)?;
+    }
+    let out = args.out.as_deref();
+    let summary = crate::run::run_with(scene, registry, out).map_err(|e| failed(&e))?;
+    print_summary(&scene.title, &summary);
+    let engine = registry.find(&scene.model).map_or(Engine::Compiled, |e| e.engine);
+    println!("model {} ran {}", registry.find(&scene.model).map_or("?", |e| e.info.name), engine.label());
+    Ok(ExitCode::SUCCESS)
+}
+
+/// An error naming the parameter when a run's values are implausible (negative mass, inertia
+/// breaking the triangle inequality, non-unit Euler parameters).
+fn plausible(file: &ModelFile, problem: &crate::problem::Problem) -> Result<(), String> {
+    let info = problem.model;
+    let value = |name: &str| {
+        let param =
+            info.param_names.iter().position(|p| p.eq_ignore_ascii_case(name)).map(|i| problem.params[i]);
+        param.or_else(|| info.state(name).map(|i| problem.initial[i]))
+    };
+    let issues = kane_model::plausibility::plausibility(&file.model, value);
+    match issues.first() {
+        None => Ok(()),
+        Some(i) => Err(format!(
+            "{}: error: implausible value of {}: {}\n  help: change {} (under [parameters] or [initial], or with --set)",
+            file.path.display(),
+            i.parameter,
+            i.message,
+            i.parameter
+        )),
+    }
+}

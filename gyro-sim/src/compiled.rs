@@ -1,0 +1,173 @@
+//! The compiled path: in comes a checked model file; out goes the path of a gyro-sim binary
+//! with that model compiled in (the integrator and the model inlined together, as for the
+//! built-in models). Binaries are cached by the file's content and the tool's identity and built
+//! once, offline, with cargo; a later run of the same file reuses the binary, an edited file
+//! builds a new one.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use thiserror::Error;
+
+use crate::model_file::{FileRun, ModelFile};
+
+/// Why the compiled path cannot run.
+#[derive(Debug, Error)]
+pub enum CompileError {
+    /// No cargo on the PATH.
+    #[error("the compiled path needs a Rust toolchain, and `cargo` was not found: install Rust (https://rustup.rs), or run with --engine instant")]
+    NoToolchain,
+    /// The simulator's sources are not where this binary was built from.
+    #[error("the compiled path builds against the gyro-sim sources at {0}, which are not there: run from the project's checkout, or run with --engine instant")]
+    NoSources(String),
+    /// Writing the crate failed.
+    #[error("cannot write the compiled model's crate in {path}: {reason}")]
+    Io {
+        /// Where.
+        path: String,
+        /// Why.
+        reason: String,
+    },
+    /// cargo failed.
+    #[error("building the compiled model failed (cargo exit {0}); its output is above; --engine instant runs without compiling")]
+    Build(String),
+}
+
+/// FNV-1a of `bytes`, as 16 hex digits: stable across Rust versions and machines.
+pub fn content_hash(bytes: &[u8]) -> String {
+    let h =
+        bytes.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, b| (h ^ u64::from(*b)).wrapping_mul(0x100_0000_01b3));
+    format!("{h:016x}")
+}
+
+/// The key under which a model file's compiled model is registered: its content's hash.
+pub fn registry_key(source: &str) -> String {
+    format!("file:{}", content_hash(source.as_bytes()))
+}
+
+/// This tool's identity (its binary's size and modification time): a rebuilt simulator builds
+/// its models again.
+fn tool_id() -> String {
+    let meta = std::env::current_exe().and_then(std::fs::metadata);
+    let stamp = match meta {
+        Ok(m) => {
+            let modified = m.modified().ok().and_then(|t| t.duration_since(std::time::UNIX_EPOCH).ok());
+            format!("{}-{}-{:?}", env!("CARGO_PKG_VERSION"), m.len(), modified)
+        }
+        Err(_) => env!("CARGO_PKG_VERSION").to_string(),
+    };
+    content_hash(stamp.as_bytes())[..8].to_string()
+}
+
+/// Where compiled models live: `$GYRO_SIM_CACHE`, else `$XDG_CACHE_HOME/gyro-sim`, else
+/// `~/.cache/gyro-sim`.
+pub fn cache_dir() -> PathBuf {
+    if let Some(dir) = std::env::var_os("GYRO_SIM_CACHE") {
+        return PathBuf::from(dir);
+    }
+    let base = std::env::var_os("XDG_CACHE_HOME")
+        .map(PathBuf::from)
+        .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".cache")));
+    base.unwrap_or_else(std::env::temp_dir).join("gyro-sim")
+}
+
+/// Where cargo builds compiled models: `$GYRO_SIM_TARGET_DIR`, else the workspace's own target
+/// folder when there is one (its dependencies are built already), else the cache's.
+fn target_dir() -> PathBuf {
+    if let Some(dir) = std::env::var_os("GYRO_SIM_TARGET_DIR") {
+        return PathBuf::from(dir);
+    }
+    let own = workspace().join("target");
+    if own.is_dir() {
+        own
+    } else {
+        cache_dir().join("target")
+    }
+}
+
+/// The workspace this binary was built from.
+fn workspace() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// The compiled binary for `file`: the cached one, or one built now (cargo's progress shown
+/// on standard error). True in the second value when it was built.
+pub fn ensure_binary(file: &ModelFile) -> Result<(PathBuf, bool), CompileError> {
+    let hash = content_hash(file.source.as_bytes());
+    let crate_name = format!("gyro-model-{}-{}-{}", file.name.replace('_', "-"), &hash[..12], tool_id());
+    let target = target_dir();
+    let binary = target.join("release").join(&crate_name);
+    if binary.is_file() {
+        return Ok((binary, false));
+    }
+    let sources = workspace();
+    if !sources.join("gyro-sim").join("Cargo.toml").is_file() {
+        return Err(CompileError::NoSources(sources.display().to_string()));
+    }
+    let dir = cache_dir().join("models").join(&crate_name);
+    write_crate(&dir, &crate_name, file, &sources)?;
+    eprintln!("compiling the model {} (once per version of the file) with cargo:", file.path.display());
+    let status = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
+        .args(["build", "--release", "--offline", "--manifest-path"])
+        .arg(dir.join("Cargo.toml"))
+        .arg("--target-dir")
+        .arg(&target)
+        .status()
+        .map_err(|_| CompileError::NoToolchain)?;
+    if !status.success() || !binary.is_file() {
+        return Err(CompileError::Build(status.code().map_or("none".into(), |c| c.to_string())));
+    }
+    Ok((binary, true))
+}
+
+/// Writes the crate: the model file, a manifest against the workspace's crates (its lock file
+/// copied, so the build resolves offline to the same versions) and a `main` registering the
+/// model under its content key.
+fn write_crate(dir: &Path, crate_name: &str, file: &ModelFile, sources: &Path) -> Result<(), CompileError> {
+    let io = |e: std::io::Error| CompileError::Io { path: dir.display().to_string(), reason: e.to_string() };
+    std::fs::create_dir_all(dir.join("src")).map_err(io)?;
+    let model_file = format!("{}.al", file.name);
+    std::fs::write(dir.join(&model_file), &file.source).map_err(io)?;
+    let path = |c: &str| format!("{:?}", sources.join(c).display().to_string());
+    let manifest = format!(
+        "[package]\nname = \"{crate_name}\"\nversion = \"0.0.0\"\nedition = \"2021\"\npublish = false\n\n[dependencies]\ngyro-sim = {{ path = {} }}\nkane-derive = {{ path = {} }}\nkane-model = {{ path = {} }}\n\n[profile.release]\ndebug = false\n\n[workspace]\n",
+        path("gyro-sim"),
+        path("kane-derive"),
+        path("kane-model"),
+    );
+    std::fs::write(dir.join("Cargo.toml"), manifest).map_err(io)?;
+    if let Ok(lock) = std::fs::read_to_string(sources.join("Cargo.lock")) {
+        std::fs::write(dir.join("Cargo.lock"), lock).map_err(io)?;
+    }
+    std::fs::write(dir.join("src").join("main.rs"), main_source(file, &model_file)).map_err(io)?;
+    Ok(())
+}
+
+/// The generated crate's `main.rs`.
+fn main_source(file: &ModelFile, model_file: &str) -> String {
+    let FileRun { t_final, step, abserr, relerr, outputs } = &file.run;
+    format!(
+        r#"//! gyro-sim with the model file {path:?} compiled in. Generated by gyro-sim: do not edit.
+
+mod model {{
+    kane_derive::model!({model_file:?});
+}}
+
+fn main() -> std::process::ExitCode {{
+    let run = gyro_sim::model_file::FileRun {{
+        t_final: {t_final:?},
+        step: {step:?},
+        abserr: {abserr:?},
+        relerr: {relerr:?},
+        outputs: vec![{outputs}],
+    }};
+    let entry = gyro_sim::registry::ModelEntry::of::<model::Model>();
+    let key = gyro_sim::compiled::registry_key(include_str!(concat!("../", {model_file:?})));
+    let compiled = gyro_sim::cli::CompiledModel {{ key, entry, run }};
+    gyro_sim::cli::main_with(gyro_sim::registry::Registry::builtin(), Some(compiled))
+}}
+"#,
+        path = file.path.display().to_string(),
+        outputs = outputs.iter().map(|o| format!("{o:?}.to_string()")).collect::<Vec<_>>().join(", "),
+    )
+}

@@ -1,0 +1,120 @@
+//! A model's runtime metadata as plain data: in come a spec and its lowered program; out goes
+//! [`Meta`] (names, units, outputs), which the printer spells as a `ModelInfo` literal and
+//! [`Meta::leak`] turns into a `ModelInfo` at run time.
+
+use crate::runtime::{ModelInfo, OutputInfo};
+use crate::spec::ModelSpec;
+
+use super::lower::Lowered;
+
+/// One output's metadata.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OutputMeta {
+    /// Its name.
+    pub name: String,
+    /// Its unit.
+    pub unit: String,
+    /// Its kind label.
+    pub kind: String,
+    /// Its column names.
+    pub columns: Vec<String>,
+    /// The states it reads.
+    pub reads: Vec<usize>,
+    /// Whether it reads the speed rates.
+    pub needs_rates: bool,
+}
+
+/// The metadata of a model, owned.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Meta {
+    /// The model's name.
+    pub name: String,
+    /// State names, coordinates then speeds.
+    pub states: Vec<String>,
+    /// State units.
+    pub state_units: Vec<String>,
+    /// Number of coordinates.
+    pub n_coordinates: usize,
+    /// Parameter names, in the order the program reads them.
+    pub params: Vec<String>,
+    /// Parameter units.
+    pub param_units: Vec<String>,
+    /// The outputs.
+    pub outputs: Vec<OutputMeta>,
+    /// Coordinates no equation reads.
+    pub cyclic: Vec<usize>,
+    /// Operations per `rhs` call and per evaluation of every output.
+    pub op_counts: (usize, usize),
+}
+
+impl Meta {
+    /// The metadata of `spec` lowered as `lowered`.
+    pub fn of(spec: &ModelSpec, lowered: &Lowered) -> Meta {
+        let names = |ids: &[crate::expr::SymbolId]| -> Vec<String> {
+            ids.iter().map(|s| spec.symbol_name(*s).to_string()).collect()
+        };
+        let units =
+            |names: &[String]| -> Vec<String> { names.iter().map(|s| spec.unit(s).to_string()).collect() };
+        let (states, params) = (names(&lowered.states), names(&lowered.params));
+        let outputs = spec
+            .outputs
+            .iter()
+            .zip(&lowered.program.outputs)
+            .map(|(o, code)| OutputMeta {
+                name: o.name.clone(),
+                unit: o.unit.clone(),
+                kind: o.kind.label().to_string(),
+                columns: o.columns(),
+                reads: code.reads.clone(),
+                needs_rates: code.needs_rates,
+            })
+            .collect();
+        Meta {
+            name: spec.name.clone(),
+            state_units: units(&states),
+            states,
+            n_coordinates: lowered.program.n_coordinates,
+            param_units: units(&params),
+            params,
+            outputs,
+            cyclic: lowered.program.cyclic.clone(),
+            op_counts: lowered.program.op_counts(),
+        }
+    }
+
+    /// A `ModelInfo` for the rest of the process: its strings and lists are leaked (a few
+    /// hundred bytes per model loaded at run time).
+    pub fn leak(&self) -> &'static ModelInfo {
+        let outputs: Vec<OutputInfo> = self
+            .outputs
+            .iter()
+            .map(|o| OutputInfo {
+                name: leak_str(&o.name),
+                unit: leak_str(&o.unit),
+                kind: leak_str(&o.kind),
+                columns: leak_strs(&o.columns),
+                reads: Box::leak(o.reads.clone().into_boxed_slice()),
+                needs_rates: o.needs_rates,
+            })
+            .collect();
+        Box::leak(Box::new(ModelInfo {
+            name: leak_str(&self.name),
+            state_names: leak_strs(&self.states),
+            state_units: leak_strs(&self.state_units),
+            n_coordinates: self.n_coordinates,
+            param_names: leak_strs(&self.params),
+            param_units: leak_strs(&self.param_units),
+            outputs: Box::leak(outputs.into_boxed_slice()),
+            cyclic: Box::leak(self.cyclic.clone().into_boxed_slice()),
+            op_counts: self.op_counts,
+        }))
+    }
+}
+
+fn leak_str(s: &str) -> &'static str {
+    Box::leak(s.to_string().into_boxed_str())
+}
+
+fn leak_strs(v: &[String]) -> &'static [&'static str] {
+    Box::leak(v.iter().map(|s| leak_str(s)).collect::<Vec<_>>().into_boxed_slice())
+}

@@ -1,0 +1,123 @@
+//! The lowered program run as it is, without compiling Rust (the instant path): in comes a
+//! spec; out goes a [`ProgramModel`] that evaluates `derive`, `rhs` and each output from the
+//! same SSA sections the printer spells, so both paths compute the same operations.
+
+use crate::runtime::{quaternion_from_dcm, ModelInfo};
+use crate::spec::ModelSpec;
+
+use super::ir::{Input, Program, Section};
+use super::meta::Meta;
+use super::print::is_quaternion;
+use super::{lower, CodegenError};
+
+/// A model evaluated from its lowered program. Each evaluation takes a scratch buffer `regs`
+/// (one per thread; reused, it saves allocating).
+#[derive(Clone, Debug)]
+pub struct ProgramModel {
+    info: &'static ModelInfo,
+    program: Program,
+    defaults: Vec<f64>,
+    initial: Vec<f64>,
+    quaternion: Vec<bool>,
+}
+
+impl ProgramModel {
+    /// Lowers `spec` (its metadata leaked for the process's lifetime: see [`Meta::leak`]).
+    pub fn new(spec: &mut ModelSpec) -> Result<ProgramModel, CodegenError> {
+        let lowered = lower(spec)?;
+        let meta = Meta::of(spec, &lowered);
+        let default = |name: &String| spec.default_of(name).filter(|v| v.is_finite()).unwrap_or(f64::NAN);
+        Ok(ProgramModel {
+            info: meta.leak(),
+            defaults: meta.params.iter().map(default).collect(),
+            initial: meta.states.iter().map(default).collect(),
+            quaternion: spec.outputs.iter().map(|o| is_quaternion(&o.kind)).collect(),
+            program: lowered.program,
+        })
+    }
+
+    /// The model's metadata.
+    pub fn info(&self) -> &'static ModelInfo {
+        self.info
+    }
+
+    /// The parameter defaults from INPUT, in `info().param_names` order (NaN where none).
+    pub fn default_params(&self) -> Vec<f64> {
+        self.defaults.clone()
+    }
+
+    /// The initial state from INPUT, in radians (NaN where none).
+    pub fn initial_state(&self) -> Vec<f64> {
+        self.initial.clone()
+    }
+
+    /// The parameter-only quantities for `params`.
+    pub fn derive(&self, params: &[f64]) -> Vec<f64> {
+        let mut out = vec![0.0; self.program.derive.results.len()];
+        let read = |input: Input| match input {
+            Input::Param(i) => params[i],
+            _ => f64::NAN,
+        };
+        self.program.derive.eval(read, &mut out);
+        out
+    }
+
+    /// `dy = f(t, y)` with `derived = derive(params)`.
+    pub fn rhs(
+        &self,
+        t: f64,
+        y: &[f64],
+        params: &[f64],
+        derived: &[f64],
+        dy: &mut [f64],
+        regs: &mut Vec<f64>,
+    ) {
+        let at = At { t, y, rates: &[], params, derived };
+        at.run(&self.program.rhs, regs, dy)
+    }
+
+    /// Output `k` at `(t, y)` into `out` (its columns); `rates` are `u'` when it needs them.
+    #[allow(clippy::too_many_arguments)]
+    pub fn output(
+        &self,
+        k: usize,
+        t: f64,
+        y: &[f64],
+        rates: &[f64],
+        params: &[f64],
+        out: &mut [f64],
+        regs: &mut Vec<f64>,
+    ) {
+        let section = &self.program.outputs[k].section;
+        let at = At { t, y, rates, params, derived: &[] };
+        if self.quaternion[k] {
+            let mut dcm = [0.0; 9];
+            at.run(section, regs, &mut dcm);
+            out[..4].copy_from_slice(&quaternion_from_dcm(&dcm));
+        } else {
+            at.run(section, regs, out);
+        }
+    }
+}
+
+/// Where a section is evaluated: the values its inputs read.
+struct At<'a> {
+    t: f64,
+    y: &'a [f64],
+    rates: &'a [f64],
+    params: &'a [f64],
+    derived: &'a [f64],
+}
+
+impl At<'_> {
+    fn run(&self, s: &Section, regs: &mut Vec<f64>, out: &mut [f64]) {
+        let read = |input: Input| match input {
+            Input::Time => self.t,
+            Input::State(i) => self.y[i],
+            Input::Param(i) => self.params[i],
+            Input::Derived(i) => self.derived[i],
+            Input::Rate(i) => self.rates[i],
+        };
+        s.eval_in(read, regs, out)
+    }
+}
