@@ -12,11 +12,14 @@ const SMALLEST_RTOL: f64 = 1e-14;
 
 /// Runs at `tol`, `tol / 100`, ... until two successive runs differ by at most `goal` (relative to
 /// max(1, |value|)); returns the finer run, whose error is well below that difference (the
-/// coarser run's error, to a few percent, for pairs of order 5 and 8).
+/// coarser run's error, to a few percent, for pairs of order 5 and 8). Only the first `compared`
+/// values of each row (the time and the written columns) are compared: columns computed for a
+/// view alone must not change the run written.
 pub(crate) fn refine(
     goal: f64,
     tab: &'static Tableau,
     mut tol: Tolerances,
+    compared: usize,
     integrate_at: impl Fn(Method) -> Result<Integration, SolveError>,
 ) -> Result<(Integration, Option<Accuracy>), SolveError> {
     let mut total = Stats::default();
@@ -37,7 +40,7 @@ pub(crate) fn refine(
         let fine = integrate_at(Method::Adaptive(tab, finer))?;
         add(fine.stats);
         runs += 1;
-        let estimate = largest_difference(&coarse, &fine.rows);
+        let estimate = largest_difference(&coarse, &fine.rows, compared);
         if estimate <= goal {
             let accuracy = Accuracy { goal, estimate, rtol: finer.rtol, atol: finer.atol, runs };
             return Ok((Integration { stats: total, ..fine }, Some(accuracy)));
@@ -47,11 +50,12 @@ pub(crate) fn refine(
     }
 }
 
-/// The largest difference of two runs' rows relative to max(1, |value|).
-fn largest_difference(a: &[Vec<f64>], b: &[Vec<f64>]) -> f64 {
+/// The largest difference of two runs' rows (their values 1..`compared`) relative to
+/// max(1, |value|).
+fn largest_difference(a: &[Vec<f64>], b: &[Vec<f64>], compared: usize) -> f64 {
     let mut worst: f64 = 0.0;
     for (ra, rb) in a.iter().zip(b) {
-        for (x, y) in ra[1..].iter().zip(&rb[1..]) {
+        for (x, y) in ra[1..compared].iter().zip(&rb[1..compared]) {
             worst = worst.max((x - y).abs() / y.abs().max(1.0));
         }
     }

@@ -178,7 +178,11 @@ pub fn solve_bound<B: BoundModel>(problem: &Problem, full_sys: &B) -> Result<Tra
     let start = Instant::now();
     let (Integration { stats, rows, plot_rows, y_end, norm_drift }, accuracy) =
         match (problem.accuracy, problem.method) {
-            (Some(goal), Method::Adaptive(tab, tol)) => refine(goal, tab, tol, integrate_at)?,
+            (Some(goal), Method::Adaptive(tab, tol)) => {
+                // The time and the written columns: view-only columns come after them.
+                let compared = 1 + columns.iter().filter(|c| !c.hidden).count();
+                refine(goal, tab, tol, compared, integrate_at)?
+            }
             _ => (integrate_at(problem.method)?, None),
         };
     let wall = start.elapsed();

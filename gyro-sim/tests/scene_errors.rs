@@ -95,3 +95,21 @@ fn view_columns_are_computed_but_not_written() {
     let page = std::fs::read_to_string(dir.join("view.html")).unwrap();
     assert!(page.contains("\"A_D_11\""), "the view carries the rotor's direction cosines");
 }
+
+/// Columns a view reads that the CSV does not ask for are not part of the accuracy estimate: the
+/// loops preset refines its tolerances (accuracy = 1e-8) the same with and without its view.
+#[test]
+fn a_view_does_not_change_the_refined_run() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/ejs/loops.toml");
+    let with_view = Scene::load(std::path::Path::new(path)).unwrap();
+    assert!(with_view.view.is_some(), "loops has a [view] reading L, omega and N");
+    let without = Scene { view: None, ..with_view.clone() };
+    let a = run(&with_view, None).unwrap().trajectory;
+    let b = run(&without, None).unwrap().trajectory;
+    assert!(a.columns.iter().any(|c| c.hidden) && !b.columns.iter().any(|c| c.hidden));
+    assert_eq!((a.stats.steps, a.stats.rhs_evals), (b.stats.steps, b.stats.rhs_evals));
+    let (ra, rb) = (a.accuracy.unwrap(), b.accuracy.unwrap());
+    assert_eq!((ra.runs, ra.rtol, ra.estimate), (rb.runs, rb.rtol, rb.estimate));
+    let written = 1 + b.columns.len();
+    assert!(a.rows.iter().zip(&b.rows).all(|(x, y)| x[..written] == y[..]));
+}
