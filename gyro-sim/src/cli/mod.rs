@@ -56,6 +56,10 @@ struct RunArgs {
     /// Print the scene a --model run uses (to save and edit) and stop.
     #[arg(long, requires = "model")]
     print_scene: bool,
+    /// Integrate this many times more and print the median and the least wall time (a
+    /// quick timing; files are written once).
+    #[arg(long, default_value_t = 0)]
+    repeat: usize,
     /// Output folder.
     #[arg(long, required_unless_present = "print_scene")]
     out: Option<PathBuf>,
@@ -190,7 +194,23 @@ fn finish(
     print_summary(&scene.title, &summary);
     let engine = registry.find(&scene.model).map_or(Engine::Compiled, |e| e.engine);
     println!("model {} ran {}", registry.find(&scene.model).map_or("?", |e| e.info.name), engine.label());
+    if args.repeat > 0 {
+        print_timing(scene, registry, args.repeat)?;
+    }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Integrates `times` more times and prints the median and least wall time.
+fn print_timing(scene: &Scene, registry: &Registry, times: usize) -> Result<(), String> {
+    let problem = crate::resolve::resolve(scene, registry).map_err(|e| e.to_string())?;
+    let mut walls = Vec::with_capacity(times);
+    for _ in 0..times {
+        let t = crate::solve::solve(&problem, registry).map_err(|e| e.to_string())?;
+        walls.push(t.wall.as_secs_f64() * 1e3);
+    }
+    walls.sort_by(f64::total_cmp);
+    println!("wall time over {times} more runs: median {:.4} ms, least {:.4} ms", walls[times / 2], walls[0]);
+    Ok(())
 }
 
 /// An error naming the parameter when a run's values are implausible (negative mass, inertia

@@ -1,0 +1,151 @@
+//! A user's own model file, run as a user would with the `gyro-sim` command: `--model` without
+//! a scene and scenes naming a file, on the instant path (the lowered program evaluated) and on
+//! the compiled path (a cached binary, built once per file version). The instant path equals
+//! the built-in compiled gimbal; a variant gimbal (rotor offset, gravity, flipped axis) runs;
+//! files that do not exist, do not check, or values that are implausible are errors.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const PAPER: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/gimbal_gyroscope.al");
+const VARIANT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/variant_gimbal.al");
+
+/// A fresh folder for one test.
+fn folder(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("model_files").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// `gyro-sim run ARGS`, with the compiled models cached in `cache`.
+fn gyro_sim(args: &[&str], cache: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_gyro-sim"))
+        .arg("run")
+        .args(args)
+        .env("GYRO_SIM_CACHE", cache.join("cache"))
+        .env("GYRO_SIM_TARGET_DIR", Path::new(env!("CARGO_TARGET_TMPDIR")).join("compiled-models"))
+        .output()
+        .unwrap()
+}
+
+fn text(o: &Output) -> String {
+    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
+}
+
+/// The CSV's rows as numbers.
+fn rows(dir: &Path) -> Vec<Vec<f64>> {
+    let csv = std::fs::read_to_string(dir.join("trajectory.csv")).unwrap();
+    csv.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect()
+}
+
+#[test]
+fn the_instant_path_equals_the_built_in_model() {
+    let dir = folder("instant_vs_builtin");
+    let scene = dir.join("trial.toml");
+    let body = "t_final = 2.0\noutput_step = 0.1\noutputs = [\"Q1\", \"Q2\", \"U1\", \"U2\", \"U3\", \"AP\"]\n[integrator]\nmethod = \"dop853\"\nrtol = 1e-10\natol = 1e-10\n[parameters]\nY = 10.0\nZ = 10.0\n[initial]\nU3 = \"100 rad/s\"\n";
+    std::fs::write(&scene, format!("model = \"gimbal_gyroscope\"\n{body}")).unwrap();
+    let built_in = gyro_sim(&[scene.to_str().unwrap(), "--out", dir.join("a").to_str().unwrap()], &dir);
+    assert!(built_in.status.success(), "{}", text(&built_in));
+    std::fs::write(&scene, format!("model = {PAPER:?}\n{body}")).unwrap();
+    let b_dir = dir.join("b");
+    let args = [scene.to_str().unwrap(), "--engine", "instant", "--out", b_dir.to_str().unwrap()];
+    let instant = gyro_sim(&args, &dir);
+    assert!(instant.status.success(), "{}", text(&instant));
+    assert!(text(&instant).contains("model gimbal_gyroscope ran instant"), "{}", text(&instant));
+    let (a, b) = (rows(&dir.join("a")), rows(&dir.join("b")));
+    assert_eq!(a.len(), 21);
+    let worst = a.iter().flatten().zip(b.iter().flatten()).map(|(x, y)| (x - y).abs() / x.abs().max(1.0));
+    let worst = worst.fold(0.0, f64::max);
+    assert!(worst < 1e-12, "instant vs built-in: {worst:e}");
+}
+
+#[test]
+fn a_variant_runs_in_one_command_with_its_file_settings_and_sets() {
+    let dir = folder("variant");
+    let out = dir.join("out");
+    let run = gyro_sim(
+        &[
+            "--model",
+            VARIANT,
+            "--engine",
+            "instant",
+            "--set",
+            "OFF=0.1",
+            "--t-final",
+            "1",
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert!(run.status.success(), "{}", text(&run));
+    let r = rows(&out);
+    // INTEGSTP 0.05 to the asked t-final; OUTPUT columns (T, the states, AP, the frames).
+    assert_eq!(r.len(), 21);
+    assert_eq!(r[20][0], 1.0);
+    let header = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
+    assert!(header
+        .starts_with("t,q1_deg,q2_deg,q3_deg,u1_rad_per_s,u2_rad_per_s,u3_rad_per_s,ap_m_per_s2,a_b_11"));
+    assert!(r.iter().flatten().all(|v| v.is_finite()));
+    // Gravity on the offset rotor turns the outer gimbal: U1 leaves zero.
+    assert!(r[20][4].abs() > 1e-3, "U1 at 1 s: {}", r[20][4]);
+    let printed = gyro_sim(&["--model", VARIANT, "--set", "OFF=0.1", "--print-scene"], &dir);
+    assert!(text(&printed).contains("\"OFF\" = 0.1"), "{}", text(&printed));
+}
+
+#[test]
+fn missing_inconsistent_and_implausible_models_are_errors() {
+    let dir = folder("errors");
+    let out = dir.join("out");
+    let out = out.to_str().unwrap();
+    let scene = dir.join("scene.toml");
+    std::fs::write(&scene, "model = \"nowhere.al\"\nt_final = 1.0\noutput_step = 0.1\n").unwrap();
+    let e = text(&gyro_sim(&[scene.to_str().unwrap(), "--out", out], &dir));
+    assert!(e.contains("nowhere.al: cannot read the model file"), "{e}");
+    // The offset-rotor trap: the paper's A_DO_A> = 0> kept while DO moves off O.
+    let paper = std::fs::read_to_string(PAPER).unwrap();
+    let trap = dir.join("trap.al");
+    std::fs::write(&trap, paper.replace("P_O_DO> = 0>", "P_O_DO> = 0.1*D2>")).unwrap();
+    std::fs::write(&scene, "model = \"trap.al\"\nt_final = 1.0\noutput_step = 0.1\n").unwrap();
+    let run = gyro_sim(&[scene.to_str().unwrap(), "--engine", "instant", "--out", out], &dir);
+    let e = text(&run);
+    assert!(!run.status.success());
+    assert!(e.contains("trap.al:") && e.contains("error: `A_DO_A> = 0>` contradicts"), "{e}");
+    assert!(e.contains("`P_O_DO> = 0.1*D2>` implies the other value"), "{e}");
+    let run = gyro_sim(&["--model", VARIANT, "--engine", "instant", "--set", "M3=-50", "--out", out], &dir);
+    let e = text(&run);
+    assert!(!run.status.success() && e.contains("error: implausible value of M3"), "{e}");
+    let e =
+        text(&gyro_sim(&["--model", VARIANT, "--engine", "instant", "--set", "MASS=1", "--out", out], &dir));
+    assert!(e.contains("--set MASS: variant_gimbal has no parameter or state `MASS`"), "{e}");
+}
+
+#[test]
+fn the_compiled_path_builds_once_per_file_version() {
+    let dir = folder("compiled");
+    let model = dir.join("my_gimbal.al");
+    std::fs::copy(VARIANT, &model).unwrap();
+    let out = dir.join("out");
+    let args = ["--model", model.to_str().unwrap(), "--t-final", "1", "--out", out.to_str().unwrap()];
+    let first = gyro_sim(&args, &dir);
+    assert!(first.status.success(), "{}", text(&first));
+    assert!(text(&first).contains("compiling the model"), "{}", text(&first));
+    assert!(text(&first).contains("model my_gimbal ran compiled"), "{}", text(&first));
+    let compiled_rows = rows(&out);
+    let again = gyro_sim(&args, &dir);
+    assert!(again.status.success() && !text(&again).contains("compiling"), "{}", text(&again));
+    let instant = gyro_sim(&[&args[..], &["--engine", "instant"]].concat(), &dir);
+    assert!(instant.status.success(), "{}", text(&instant));
+    let instant_rows = rows(&out);
+    let worst = compiled_rows.iter().flatten().zip(instant_rows.iter().flatten());
+    let worst = worst.map(|(x, y)| (x - y).abs() / x.abs().max(1.0)).fold(0.0, f64::max);
+    assert!(worst < 1e-12, "compiled vs instant {worst:e}");
+    // An edit builds exactly once more.
+    let edited = std::fs::read_to_string(&model).unwrap().replace("OFF = 0.05", "OFF = 0.08");
+    std::fs::write(&model, edited).unwrap();
+    let after_edit = gyro_sim(&args, &dir);
+    assert!(after_edit.status.success() && text(&after_edit).contains("compiling"), "{}", text(&after_edit));
+    let settled = gyro_sim(&args, &dir);
+    assert!(settled.status.success() && !text(&settled).contains("compiling"), "{}", text(&settled));
+}
