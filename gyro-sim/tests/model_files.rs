@@ -113,9 +113,12 @@ fn missing_inconsistent_and_implausible_models_are_errors() {
     assert!(!run.status.success());
     assert!(e.contains("trap.al:") && e.contains("error: `A_DO_A> = 0>` contradicts"), "{e}");
     assert!(e.contains("`P_O_DO> = 0.1*D2>` implies the other value"), "{e}");
-    let run = gyro_sim(&["--model", VARIANT, "--engine", "instant", "--set", "M3=-50", "--out", out], &dir);
-    let e = text(&run);
-    assert!(!run.status.success() && e.contains("error: implausible value of M3"), "{e}");
+    for engine in ["instant", "compiled"] {
+        let run = gyro_sim(&["--model", VARIANT, "--engine", engine, "--set", "M3=-50", "--out", out], &dir);
+        let e = text(&run);
+        assert!(!run.status.success() && e.contains("error: implausible value of M3"), "{engine}: {e}");
+        assert!(!e.contains("compiling"), "checked before anything is built: {e}");
+    }
     let e =
         text(&gyro_sim(&["--model", VARIANT, "--engine", "instant", "--set", "MASS=1", "--out", out], &dir));
     assert!(e.contains("--set MASS: variant_gimbal has no parameter or state `MASS`"), "{e}");
@@ -148,4 +151,27 @@ fn the_compiled_path_builds_once_per_file_version() {
     assert!(after_edit.status.success() && text(&after_edit).contains("compiling"), "{}", text(&after_edit));
     let settled = gyro_sim(&args, &dir);
     assert!(settled.status.success() && !text(&settled).contains("compiling"), "{}", text(&settled));
+}
+
+#[test]
+fn without_a_toolchain_the_compiled_path_says_so() {
+    let dir = folder("no_toolchain");
+    let model = dir.join("lonely.al");
+    // Content no other test builds, so no cached binary exists for it.
+    let text_of = std::fs::read_to_string(VARIANT).unwrap() + "% no toolchain here\n";
+    std::fs::write(&model, text_of).unwrap();
+    let run = Command::new(env!("CARGO_BIN_EXE_gyro-sim"))
+        .args(["run", "--model", model.to_str().unwrap(), "--out", dir.join("out").to_str().unwrap()])
+        .env("GYRO_SIM_CACHE", dir.join("cache"))
+        .env("GYRO_SIM_TARGET_DIR", dir.join("target"))
+        .env_remove("CARGO")
+        .env("PATH", dir.join("empty"))
+        .output()
+        .unwrap();
+    let e = text(&run);
+    assert!(!run.status.success(), "{e}");
+    assert!(
+        e.contains("needs a Rust toolchain, and `cargo` was not found") && e.contains("--engine instant"),
+        "{e}"
+    );
 }

@@ -112,7 +112,7 @@ fn run_command(
     };
     let Some(file_path) = file_path else {
         let scene = scene.ok_or("give a scene or --model")?;
-        return finish(&scene, &registry, args, None);
+        return finish(&scene, &registry, args);
     };
     let source = std::fs::read_to_string(&file_path)
         .map_err(|e| format!("{}: cannot read the model file: {e}", file_path.display()))?;
@@ -122,9 +122,6 @@ fn run_command(
         None => {
             let file = ModelFile::load(&file_path).map_err(|e| e.to_string())?;
             eprint!("{}", file.warnings);
-            if args.engine == EngineChoice::Compiled && !args.print_scene {
-                return run_compiled(&file);
-            }
             let entry = crate::instant::instant_entry(file.program.clone());
             (entry, file.run.clone(), Some(file))
         }
@@ -138,7 +135,14 @@ fn run_command(
         return Ok(ExitCode::SUCCESS);
     }
     let registry = registry.with_entry(&scene.model, entry);
-    finish(&scene, &registry, args, file.as_ref())
+    if let Some(file) = &file {
+        let problem = crate::resolve::resolve(&scene, &registry).map_err(|e| e.to_string())?;
+        plausible(file, &problem)?;
+        if args.engine == EngineChoice::Compiled {
+            return run_compiled(file);
+        }
+    }
+    finish(&scene, &registry, args)
 }
 
 /// The model file a scene names (`model = "file.al"`, relative to the scene), if it does.
@@ -177,18 +181,9 @@ fn run_compiled(file: &ModelFile) -> Result<ExitCode, String> {
     })
 }
 
-/// Resolves (checking a model file's values for plausibility), runs, writes and summarises.
-fn finish(
-    scene: &Scene,
-    registry: &Registry,
-    args: &RunArgs,
-    file: Option<&ModelFile>,
-) -> Result<ExitCode, String> {
+/// Runs, writes and summarises.
+fn finish(scene: &Scene, registry: &Registry, args: &RunArgs) -> Result<ExitCode, String> {
     let failed = |e: &dyn std::fmt::Display| format!("{}: {e}", scene.path.display());
-    if let Some(file) = file {
-        let problem = crate::resolve::resolve(scene, registry).map_err(|e| e.to_string())?;
-        plausible(file, &problem)?;
-    }
     let out = args.out.as_deref();
     let summary = crate::run::run_with(scene, registry, out).map_err(|e| failed(&e))?;
     print_summary(&scene.title, &summary);
