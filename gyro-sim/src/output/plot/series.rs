@@ -13,16 +13,21 @@ use super::{pretty_unit, register_font};
 
 /// An angle whose range exceeds this many degrees gets a panel of its own.
 const SPIN_RANGE_DEG: f64 = 1800.0;
+/// Panels per row of the figure.
+const PER_ROW: usize = 3;
 
 /// Writes the time-series plot of `table` to `path` (atomically).
 pub fn write_plot(table: &Table, path: &Path) -> Result<(), String> {
     register_font();
     let panels = panels(table);
     write_atomically(path, |tmp| {
-        let root = BitMapBackend::new(tmp, (600 * panels.len().max(1) as u32, 450)).into_drawing_area();
+        let n = panels.len().max(1);
+        let (across, down) = (n.min(PER_ROW), n.div_ceil(PER_ROW));
+        let size = (600 * across as u32, 450 * down as u32 + 30);
+        let root = BitMapBackend::new(tmp, size).into_drawing_area();
         root.fill(&WHITE).map_err(|e| e.to_string())?;
         let root = root.titled(&table.title, ("sans-serif", 22)).map_err(|e| e.to_string())?;
-        let areas = root.split_evenly((1, panels.len().max(1)));
+        let areas = root.split_evenly((down, across));
         for (area, p) in areas.iter().zip(&panels) {
             panel::draw(area, p)?;
         }
@@ -60,20 +65,48 @@ fn panels(table: &Table) -> Vec<Panel<'_>> {
         }
     }
     for unit in units {
-        groups.push(rest.iter().copied().filter(|c| cols[*c].unit == unit).collect());
+        let same: Vec<usize> = rest.iter().copied().filter(|c| cols[*c].unit == unit).collect();
+        groups.extend(by_vector(table, same));
     }
     groups.into_iter().map(|g| panel_of(table, g)).collect()
+}
+
+/// Columns of one unit split into a group per vector (`L_N1`, `L_N2`, `L_N3`) and one for the
+/// rest, in order of first appearance.
+fn by_vector(table: &Table, columns: Vec<usize>) -> Vec<Vec<usize>> {
+    let base = |c: usize| vector_component(&table.columns[c].label).map(|(b, _)| b.to_string());
+    let mut groups: Vec<(Option<String>, Vec<usize>)> = Vec::new();
+    for c in columns {
+        let family = base(c).filter(|b| (0..table.columns.len()).filter(|o| base(*o).as_ref() == Some(b)).count() == 3);
+        match groups.iter_mut().find(|(f, _)| *f == family) {
+            Some((_, g)) => g.push(c),
+            None => groups.push((family, vec![c])),
+        }
+    }
+    groups.into_iter().map(|(_, g)| g).collect()
+}
+
+/// `L_N1` -> (`L`, `N`): a vector output's name and frame, from its component's column.
+fn vector_component(label: &str) -> Option<(&str, &str)> {
+    let (base, suffix) = label.rsplit_once('_')?;
+    let (frame, digit) = suffix.split_at(suffix.len().checked_sub(1)?);
+    let is_frame = !frame.is_empty() && frame.chars().all(|c| c.is_ascii_alphabetic());
+    (is_frame && matches!(digit, "1" | "2" | "3") && !base.is_empty()).then_some((base, frame))
 }
 
 /// A panel of columns `g`: the y title names the quantity (or "angle", "rate") and the unit.
 fn panel_of(table: &Table, g: Vec<usize>) -> Panel<'_> {
     let cols = &table.columns;
     let unit = pretty_unit(&cols[g[0]].unit);
-    let quantity = match g.as_slice() {
-        [c] => cols[*c].label.clone(),
+    let vector = vector_component(&cols[g[0]].label).filter(|(b, _)| {
+        g.len() == 3 && g.iter().all(|c| vector_component(&cols[*c].label).is_some_and(|(o, _)| o == *b))
+    });
+    let quantity = match (g.as_slice(), vector) {
+        ([c], _) => cols[*c].label.clone(),
+        (_, Some((base, frame))) => format!("{base}, {frame} axes"),
         _ if cols[g[0]].angle => "angle".to_string(),
         _ if unit.contains("/s") => "rate".to_string(),
-        _ => g.iter().map(|c| cols[*c].label.as_str()).collect::<Vec<_>>().join(", "),
+        _ => "value".to_string(),
     };
     let y_title = if unit.is_empty() { quantity } else { format!("{quantity} ({unit})") };
     Panel {
@@ -81,5 +114,19 @@ fn panel_of(table: &Table, g: Vec<usize>) -> Panel<'_> {
         series: g.iter().map(|c| (cols[*c].label.clone(), c + 1)).collect(),
         x_title: "t (s)".to_string(),
         y_title,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::vector_component;
+
+    #[test]
+    fn vector_components_are_recognised_by_name() {
+        assert_eq!(vector_component("L_N1"), Some(("L", "N")));
+        assert_eq!(vector_component("OMEGA_N3"), Some(("OMEGA", "N")));
+        assert_eq!(vector_component("A_D_23"), None);
+        assert_eq!(vector_component("L3"), None);
+        assert_eq!(vector_component("_N1"), None);
     }
 }
