@@ -2,7 +2,8 @@
 //! both lines (unless marked `% override`), and implausible INPUT values are warnings naming the
 //! parameter and its INPUT line; through the library and through the `kane` command.
 
-use std::process::Command;
+mod common;
+use common::kane;
 
 use kane_model::lang::{self, Severity};
 
@@ -22,15 +23,6 @@ fn offset_gimbal() -> String {
 /// The 1-based line of the first line starting with `start`.
 fn line_of(src: &str, start: &str) -> usize {
     src.lines().position(|l| l.starts_with(start)).expect("line present") + 1
-}
-
-fn kane(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_kane")).args(args).output().expect("run kane");
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
 }
 
 #[test]

@@ -1,20 +1,12 @@
 //! The `kane` command end to end: check, eval (against the hand-derived gimbal), compare, and
 //! errors that name the file, line and column.
 
-use std::process::Command;
+mod common;
+use common::kane;
 
 const GIMBAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/models/gimbal_gyroscope.al");
 const HAND: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/gimbal_hand.al");
 const HAND_WRONG: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/gimbal_hand_wrong.al");
-
-fn kane(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_kane")).args(args).output().expect("run kane");
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
 
 #[test]
 fn check_summarises_the_gimbal() {

@@ -1,21 +1,13 @@
 //! `kane compare` saying how hand equations differ, `kane show`, and `kane eoms` simplified,
 //! end to end through the built binary.
 
-use std::process::Command;
+mod common;
+use common::kane;
 
 const GIMBAL: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/models/gimbal_gyroscope.al");
 
 fn data(name: &str) -> String {
     format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"))
-}
-
-fn kane(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_kane")).args(args).output().expect("run kane");
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
 }
 
 #[test]

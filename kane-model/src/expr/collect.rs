@@ -47,32 +47,9 @@ impl Arena {
         // 2. Canonical form in the state.
         let canonical = self.trig_simplify(masked)?;
         // 3. Group the terms by their state-dependent factors.
-        let terms: Vec<ExprId> = match self.node(canonical) {
-            Node::Sum(t) => t.to_vec(),
-            _ => vec![canonical],
-        };
-        let mut groups: Vec<(ExprId, Vec<ExprId>)> = Vec::new();
-        for t in terms {
-            let factors: Vec<ExprId> = match self.node(t) {
-                Node::Product(f) => f.to_vec(),
-                _ => vec![t],
-            };
-            let (mut coeff, mut state) = (Vec::new(), Vec::new());
-            for f in factors {
-                let free = self.free_symbols(&[f]);
-                if free.iter().all(|s| is_parameter(*s) || stand_in_syms.contains(s)) {
-                    coeff.push(f);
-                } else {
-                    state.push(f);
-                }
-            }
-            let key = self.mul(&state)?;
-            let c = self.mul(&coeff)?;
-            match groups.iter_mut().find(|(k, _)| *k == key) {
-                Some((_, cs)) => cs.push(c),
-                None => groups.push((key, vec![c])),
-            }
-        }
+        let groups = self.group_terms(canonical, &|free: &[SymbolId]| {
+            free.iter().all(|s| is_parameter(*s) || stand_in_syms.contains(s))
+        })?;
         let mut out = Vec::with_capacity(groups.len());
         for (key, cs) in groups {
             let c = self.add(&cs)?;
@@ -113,5 +90,44 @@ mod tests {
         let su = ar.mul(&[coeff, s, u]).unwrap();
         let expected = ar.add(&[su, m]).unwrap();
         assert_eq!(r, expected, "{}", ar.to_text(r));
+    }
+}
+
+impl Arena {
+    /// The terms of the sum `e` grouped by their state part: each term split into the factors
+    /// whose free symbols `is_coefficient` accepts (multiplied into a coefficient) and the rest
+    /// (the key); one `(key, coefficients)` per key, in order of first appearance.
+    pub(crate) fn group_terms(
+        &mut self,
+        e: ExprId,
+        is_coefficient: &impl Fn(&[SymbolId]) -> bool,
+    ) -> Result<Vec<(ExprId, Vec<ExprId>)>, ExprError> {
+        let terms: Vec<ExprId> = match self.node(e) {
+            Node::Sum(t) => t.to_vec(),
+            _ if self.is_zero(e) => Vec::new(),
+            _ => vec![e],
+        };
+        let mut groups: Vec<(ExprId, Vec<ExprId>)> = Vec::new();
+        for t in terms {
+            let factors: Vec<ExprId> = match self.node(t) {
+                Node::Product(f) => f.to_vec(),
+                _ => vec![t],
+            };
+            let (mut coeff, mut state) = (Vec::new(), Vec::new());
+            for f in factors {
+                if is_coefficient(&self.free_symbols(&[f])) {
+                    coeff.push(f);
+                } else {
+                    state.push(f);
+                }
+            }
+            let key = self.mul(&state)?;
+            let c = self.mul(&coeff)?;
+            match groups.iter_mut().find(|(k, _)| *k == key) {
+                Some((_, cs)) => cs.push(c),
+                None => groups.push((key, vec![c])),
+            }
+        }
+        Ok(groups)
     }
 }

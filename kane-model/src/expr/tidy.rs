@@ -108,32 +108,8 @@ impl Arena {
         names: &Abbreviations,
     ) -> Result<Collected, ExprError> {
         let canonical = self.trig_canonical_many(&[e], basis)?[0];
-        let summands: Vec<ExprId> = match self.node(canonical) {
-            Node::Sum(t) => t.to_vec(),
-            _ if self.is_zero(canonical) => Vec::new(),
-            _ => vec![canonical],
-        };
-        let mut groups: Vec<(ExprId, Vec<ExprId>)> = Vec::new();
-        for t in summands {
-            let factors: Vec<ExprId> = match self.node(t) {
-                Node::Product(f) => f.to_vec(),
-                _ => vec![t],
-            };
-            let (mut coeff, mut state) = (Vec::new(), Vec::new());
-            for f in factors {
-                if self.free_symbols(&[f]).into_iter().all(is_parameter) {
-                    coeff.push(f);
-                } else {
-                    state.push(f);
-                }
-            }
-            let key = self.mul(&state)?;
-            let c = self.mul(&coeff)?;
-            match groups.iter_mut().find(|(k, _)| *k == key) {
-                Some((_, cs)) => cs.push(c),
-                None => groups.push((key, vec![c])),
-            }
-        }
+        let groups =
+            self.group_terms(canonical, &|free: &[SymbolId]| free.iter().copied().all(is_parameter))?;
         let mut pairs = Vec::with_capacity(groups.len());
         for (key, cs) in groups {
             let c = self.add(&cs)?;

@@ -77,7 +77,8 @@ fn by_vector(table: &Table, columns: Vec<usize>) -> Vec<Vec<usize>> {
     let base = |c: usize| vector_component(&table.columns[c].label).map(|(b, _)| b.to_string());
     let mut groups: Vec<(Option<String>, Vec<usize>)> = Vec::new();
     for c in columns {
-        let family = base(c).filter(|b| (0..table.columns.len()).filter(|o| base(*o).as_ref() == Some(b)).count() == 3);
+        let family = base(c)
+            .filter(|b| (0..table.columns.len()).filter(|o| base(*o).as_ref() == Some(b)).count() == 3);
         match groups.iter_mut().find(|(f, _)| *f == family) {
             Some((_, g)) => g.push(c),
             None => groups.push((family, vec![c])),
