@@ -24,3 +24,4 @@ pub mod scene;
 pub mod solve;
 pub mod trajectory;
 pub mod unit_norm;
+pub mod work_precision;

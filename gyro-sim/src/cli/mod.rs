@@ -3,6 +3,7 @@
 //! `model = "file.al"`) runs on the compiled path (a cached binary with the model compiled in,
 //! run in this one's place) or on the instant path (the lowered program evaluated directly).
 
+mod bench;
 mod model_scene;
 mod summary;
 
@@ -31,6 +32,23 @@ enum Command {
     /// Run a scene, or a model file without one: writes DIR/trajectory.csv and the figures,
     /// prints a summary.
     Run(RunArgs),
+    /// Work against precision: every method over a range of tolerances (fixed-step methods,
+    /// steps) against a tight reference run, timed interleaved; writes
+    /// DIR/work_precision.csv and DIR/work_precision.png and prints the table.
+    Bench(BenchArgs),
+}
+
+/// `gyro-sim bench`.
+#[derive(clap::Args)]
+struct BenchArgs {
+    /// The scene file (TOML) of a built-in model.
+    scene: PathBuf,
+    /// Timed runs per configuration (the median is reported).
+    #[arg(long, default_value_t = 5)]
+    repeats: usize,
+    /// Output folder.
+    #[arg(long)]
+    out: PathBuf,
 }
 
 /// `gyro-sim run`.
@@ -85,8 +103,11 @@ pub struct CompiledModel {
 /// Runs the command line with `registry`'s models (and `compiled`, when this binary is a
 /// model file's compiled path).
 pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCode {
-    let Command::Run(args) = Cli::parse().command;
-    match run_command(&args, registry, compiled) {
+    let result = match Cli::parse().command {
+        Command::Run(args) => run_command(&args, registry, compiled),
+        Command::Bench(args) => bench::bench_command(&args.scene, args.repeats, &args.out, &registry),
+    };
+    match result {
         Ok(code) => code,
         Err(message) => {
             eprintln!("{}", message.trim_end());

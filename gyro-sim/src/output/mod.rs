@@ -7,7 +7,7 @@ mod view;
 mod write;
 
 pub use csv_file::write_csv;
-pub use plot::{write_elevation, write_plot, write_trace};
+pub use plot::{write_elevation, write_plot, write_trace, write_work_precision};
 pub use view::{write_view, ArrowView, BodyView, Orientation, Shape, TraceView, ViewError, ViewSpec};
 pub use write::{column_name, display_table, write, WriteError, Written};
 

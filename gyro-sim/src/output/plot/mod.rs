@@ -6,6 +6,7 @@ mod elevation;
 mod panel;
 mod series;
 mod trace;
+mod work_precision;
 
 use std::sync::Once;
 
@@ -15,6 +16,7 @@ use plotters::style::FontStyle;
 pub use elevation::write_elevation;
 pub use series::write_plot;
 pub use trace::write_trace;
+pub use work_precision::write_work_precision;
 
 static FONT: Once = Once::new();
 
