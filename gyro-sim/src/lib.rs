@@ -22,6 +22,7 @@ pub mod resolve;
 pub mod run;
 pub mod scene;
 pub mod solve;
+pub mod sweep;
 pub mod trajectory;
 pub mod unit_norm;
 pub mod work_precision;

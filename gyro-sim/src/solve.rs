@@ -228,7 +228,7 @@ fn integrated_states(problem: &Problem) -> Vec<usize> {
 }
 
 /// The columns the picks write (those past `written_picks` hidden).
-fn columns(problem: &Problem) -> Vec<Column> {
+pub(crate) fn columns(problem: &Problem) -> Vec<Column> {
     let info = problem.model;
     let mut out = Vec::new();
     for (n, p) in problem.picks.iter().enumerate() {

@@ -6,6 +6,7 @@
 mod bench;
 mod model_scene;
 mod summary;
+mod sweep;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -36,6 +37,42 @@ enum Command {
     /// steps) against a tight reference run, timed interleaved; writes
     /// DIR/work_precision.csv and DIR/work_precision.png and prints the table.
     Bench(BenchArgs),
+    /// A parameter sweep: the scene once per member of a grid (`--vary NAME=START:STOP:N`) or a
+    /// Latin-hypercube sample (`--vary NAME=START:STOP --samples N --seed S`), in parallel;
+    /// writes DIR/sweep.csv (one row per member) and DIR/timing.csv; resumes what a killed run
+    /// left; `--shard K/N` (or a Slurm array task) runs a disjoint slice.
+    Sweep(SweepCli),
+    /// Joins shard folders' sweep.csv into DIR/sweep.csv, in member order.
+    SweepMerge {
+        /// Output folder.
+        #[arg(long)]
+        out: PathBuf,
+        /// The shards' --out folders.
+        #[arg(required = true)]
+        shards: Vec<PathBuf>,
+    },
+}
+
+/// `gyro-sim sweep`.
+#[derive(clap::Args)]
+struct SweepCli {
+    /// The scene file (TOML).
+    scene: PathBuf,
+    /// NAME=START:STOP[:N] [UNIT], repeated: a parameter or initial state and its range.
+    #[arg(long, required = true, value_parser = crate::sweep::parse_range)]
+    vary: Vec<crate::sweep::Range>,
+    /// Latin-hypercube samples over the ranges (without it, a grid of N points per range).
+    #[arg(long)]
+    samples: Option<usize>,
+    /// The sample's seed.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// This run's slice, K/N (K from 1); defaults to the Slurm array task when set.
+    #[arg(long)]
+    shard: Option<String>,
+    /// Output folder.
+    #[arg(long)]
+    out: PathBuf,
 }
 
 /// `gyro-sim bench`.
@@ -106,6 +143,18 @@ pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCod
     let result = match Cli::parse().command {
         Command::Run(args) => run_command(&args, registry, compiled),
         Command::Bench(args) => bench::bench_command(&args.scene, args.repeats, &args.out, &registry),
+        Command::Sweep(a) => {
+            let args = sweep::SweepArgs {
+                scene: &a.scene,
+                vary: &a.vary,
+                samples: a.samples,
+                seed: a.seed,
+                shard: a.shard.as_deref(),
+                out: &a.out,
+            };
+            sweep::sweep_command(&args, &registry)
+        }
+        Command::SweepMerge { out, shards } => sweep::merge_command(&out, &shards),
     };
     match result {
         Ok(code) => code,
@@ -164,6 +213,14 @@ fn run_command(
         }
     }
     finish(&scene, &registry, args)
+}
+
+/// `registry` with the model file `scene` names, if it names one, on the instant engine.
+fn with_file_model(scene: &Scene, registry: Registry) -> Result<Registry, String> {
+    let Some(path) = model_file_of(scene) else { return Ok(registry) };
+    let file = ModelFile::load(&path).map_err(|e| e.to_string())?;
+    eprint!("{}", file.warnings);
+    Ok(registry.with_entry(&scene.model, crate::instant::instant_entry(file.program.clone())))
 }
 
 /// The model file a scene names (`model = "file.al"`, relative to the scene), if it does.

@@ -1,0 +1,121 @@
+//! Parameter sweeps: in come a scene, the ranges to vary and the members to run (a grid or a
+//! Latin-hypercube sample, optionally one shard of them); out go one row per member (the varied
+//! values, a status that is `ok` or the named failure, the final state, the minimum and maximum
+//! of each written column, the cost) and its wall time kept apart, so that the rows depend on
+//! the inputs alone. Members run in parallel; one member's failure is its row, never the end.
+
+mod plan;
+pub mod table;
+
+use std::time::Instant;
+
+use rayon::prelude::*;
+
+pub use plan::{grid, latin_hypercube, parse_range, Member, Range};
+pub use table::{merge, read_rows, write_rows, SweepRow};
+
+use crate::registry::Registry;
+use crate::scene::{Scene, Value};
+
+/// The members of shard `k` of `n` (0-based): those whose index is `k` modulo `n`.
+pub fn shard(members: Vec<Member>, k: usize, n: usize) -> Vec<Member> {
+    members.into_iter().filter(|m| m.index % n.max(1) == k).collect()
+}
+
+/// The column names of a sweep's rows after the member index and the varied names: the
+/// written columns' final, min and max values, in display units.
+pub fn value_columns(scene: &Scene, registry: &Registry) -> Result<Vec<String>, String> {
+    let problem = crate::resolve::resolve(scene, registry).map_err(|e| e.to_string())?;
+    let shown: Vec<String> = crate::solve::columns(&problem)
+        .iter()
+        .filter(|c| !c.hidden)
+        .map(|c| crate::output::column_name(&c.name, &c.unit))
+        .collect();
+    let mut out = Vec::with_capacity(3 * shown.len());
+    for what in ["final", "min", "max"] {
+        out.extend(shown.iter().map(|c| format!("{what}_{c}")));
+    }
+    Ok(out)
+}
+
+/// Runs `members` of `scene` varied over `ranges`, in parallel, calling `done` after each; the
+/// rows in member order, each with its wall time in milliseconds.
+pub fn run_members(
+    scene: &Scene,
+    ranges: &[Range],
+    members: &[Member],
+    registry: &Registry,
+    done: &(dyn Fn() + Sync),
+) -> Vec<(SweepRow, f64)> {
+    let mut rows: Vec<(SweepRow, f64)> = members
+        .par_iter()
+        .map(|m| {
+            let start = Instant::now();
+            let row = run_member(scene, ranges, m, registry);
+            done();
+            (row, start.elapsed().as_secs_f64() * 1e3)
+        })
+        .collect();
+    rows.sort_by_key(|(r, _)| r.member);
+    rows
+}
+
+/// One member: the scene with its values, resolved and solved.
+fn run_member(scene: &Scene, ranges: &[Range], m: &Member, registry: &Registry) -> SweepRow {
+    let varied: Vec<f64> = m.values.iter().map(|v| v.number).collect();
+    let failed = |why: String| SweepRow {
+        member: m.index,
+        varied: varied.clone(),
+        status: why,
+        values: Vec::new(),
+        steps: 0,
+        rhs_evals: 0,
+    };
+    let member_scene = with_values(scene, ranges, &m.values, registry);
+    let problem = match crate::resolve::resolve(&member_scene, registry) {
+        Ok(p) => p,
+        Err(e) => return failed(one_line(&e.to_string())),
+    };
+    let trajectory = match crate::solve::solve(&problem, registry) {
+        Ok(t) => t,
+        Err(e) => return failed(one_line(&e.to_string())),
+    };
+    let table = crate::output::display_table(&trajectory);
+    let n = table.columns.len();
+    let last = table.rows.last().map(|r| r[1..].to_vec()).unwrap_or_else(|| vec![f64::NAN; n]);
+    let mut lo = vec![f64::INFINITY; n];
+    let mut hi = vec![f64::NEG_INFINITY; n];
+    for r in &table.rows {
+        for (k, v) in r[1..].iter().enumerate() {
+            lo[k] = lo[k].min(*v);
+            hi[k] = hi[k].max(*v);
+        }
+    }
+    let values = [last, lo, hi].concat();
+    SweepRow {
+        member: m.index,
+        varied,
+        status: "ok".into(),
+        values,
+        steps: trajectory.stats.steps,
+        rhs_evals: trajectory.stats.rhs_evals,
+    }
+}
+
+/// `scene` with each range's value set: a state's under `[initial]`, anything else under
+/// `[parameters]` (replacing what the scene gave).
+fn with_values(scene: &Scene, ranges: &[Range], values: &[Value], registry: &Registry) -> Scene {
+    let mut s = scene.clone();
+    let is_state = |name: &str| registry.find(&scene.model).is_some_and(|e| e.info.state(name).is_some());
+    for (r, v) in ranges.iter().zip(values) {
+        let table = if is_state(&r.name) { &mut s.initial } else { &mut s.parameters };
+        table.retain(|(n, _, _)| !n.eq_ignore_ascii_case(&r.name));
+        table.push((r.name.clone(), v.clone(), 0..0));
+    }
+    s
+}
+
+/// An error message on one line (for a CSV cell).
+fn one_line(message: &str) -> String {
+    message.lines().map(str::trim).filter(|l| !l.is_empty()).collect::<Vec<_>>().join(" / ")
+}
