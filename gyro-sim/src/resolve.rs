@@ -7,7 +7,7 @@ use kane_model::runtime::ModelInfo;
 
 use crate::initial::{norm_error, TopStart, UNIT_NORM_TOLERANCE};
 use crate::ode::{Method, Tolerances};
-use crate::problem::{output_times, plot_times, Pick, Problem};
+use crate::problem::{output_times, plot_times, too_many_rows, Pick, Problem};
 use crate::registry::{ModelEntry, Registry};
 use crate::scene::{Axle, Scene, SceneError, Value};
 
@@ -21,6 +21,10 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
         )
     })?;
     let info = entry.info;
+    // A scene built in code, not parsed, has had no check of its grid.
+    if let Some((what, help)) = too_many_rows(scene.t_final, scene.output_step) {
+        return Err(scene.error_at(0..0, what, &help));
+    }
     let times = output_times(scene.t_final, scene.output_step);
     let method = method(scene);
     let written = picks(scene, info)?;

@@ -379,6 +379,9 @@ impl Text<'_> {
                 "give a positive step no longer than t_final",
             ));
         }
+        if let Some((what, help)) = crate::problem::too_many_rows(*t_final.get_ref(), *step.get_ref()) {
+            return Err(self.err(step.span(), what, &help));
+        }
         Ok((t_final.into_inner(), step.into_inner()))
     }
 }

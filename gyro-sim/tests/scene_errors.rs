@@ -113,3 +113,23 @@ fn a_view_does_not_change_the_refined_run() {
     let written = 1 + b.columns.len();
     assert!(a.rows.iter().zip(&b.rows).all(|(x, y)| x[..written] == y[..]));
 }
+
+/// Output grids too large to hold are refused before anything is allocated, at `output_step`,
+/// saying how to go on (issue 14: `t_final = 1e300` panicked, `output_step = 1e-9` tried 40 GB).
+#[test]
+fn output_grids_too_large_are_refused_up_front() {
+    let grid = |t_final: &str, step: &str| {
+        error(&format!("model = \"gimbal_gyroscope\"\nt_final = {t_final}\noutput_step = {step}\n"))
+    };
+    let e = grid("1e300", "0.1");
+    assert!(e.starts_with("bad.toml:3:15: error: t_final = 1e300 with output_step = 0.1 makes"), "{e}");
+    assert!(e.contains("more than the 10000000 allowed"), "{e}");
+    assert!(e.contains("help: raise output_step to at least") && e.contains("shorten t_final"), "{e}");
+    let e = grid("100.0", "1e-9");
+    assert!(e.starts_with("bad.toml:3:15: error: t_final = 100 with output_step = 1e-9 makes 1.000e11"), "{e}");
+    let e = grid("1e8", "1.0");
+    assert!(e.contains("1.000e8 output rows"), "{e}");
+    // A grid at the limit's scale but under it is accepted (parsed; not run here).
+    let ok = "model = \"gimbal_gyroscope\"\nt_final = 1e6\noutput_step = 0.5\n";
+    assert!(Scene::parse("ok.toml", ok).is_ok());
+}
