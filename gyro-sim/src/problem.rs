@@ -35,6 +35,8 @@ pub struct Problem {
     pub plot_times: Vec<f64>,
     /// The method and its tolerances or step.
     pub method: Method,
+    /// Most accepted steps of one integration.
+    pub max_steps: usize,
     /// The largest error asked of the trajectory (tolerances refined until it is met).
     pub accuracy: Option<f64>,
     /// The columns, in order: the first `written_picks` are written to the CSV and the

@@ -41,6 +41,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
             Vec::new()
         },
         method,
+        max_steps: scene.integrator.max_steps,
         accuracy: scene.integrator.accuracy,
         written_picks: written.len(),
         picks: with_view_picks(scene, info, written)?,
