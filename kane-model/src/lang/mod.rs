@@ -22,6 +22,7 @@ mod parser;
 mod present;
 mod session;
 mod show;
+mod sum_tree;
 mod to_spec;
 mod token;
 
