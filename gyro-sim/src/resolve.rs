@@ -3,6 +3,7 @@
 //! motion converted to Euler parameters and body rates by [`crate::initial`]), or an error at the
 //! scene's line and column.
 
+use kane_model::lang::units::normalised;
 use kane_model::runtime::ModelInfo;
 
 use crate::initial::{norm_error, TopStart, UNIT_NORM_TOLERANCE};
@@ -282,18 +283,18 @@ fn in_model_units(
     model_unit: &str,
     span: &std::ops::Range<usize>,
 ) -> Result<f64, SceneError> {
-    let mu = model_unit.to_ascii_uppercase();
-    let given = v.unit.as_deref().map(|u| u.to_ascii_uppercase().replace(' ', ""));
+    // Compared regardless of case and spacing, SEC as S (`10 n * m` is in N*M).
+    let mu = normalised(model_unit);
+    let given = v.unit.as_deref().map(normalised);
     let deg = std::f64::consts::PI / 180.0;
-    let same = |m: &str, u: &str| m.replace("SEC", "S") == u.replace("SEC", "S");
     Ok(match (mu.as_str(), given.as_deref()) {
         ("DEG", None | Some("DEG")) => v.number * deg,
         ("DEG" | "RAD", Some("RAD")) | ("RAD", None) => v.number,
         ("RAD", Some("DEG")) => v.number * deg,
-        ("RAD/SEC", None | Some("RAD/S" | "RAD/SEC")) => v.number,
-        ("RAD/SEC", Some("DEG/S" | "DEG/SEC")) => v.number * deg,
+        ("RAD/S", None | Some("RAD/S")) => v.number,
+        ("RAD/S", Some("DEG/S")) => v.number * deg,
         (_, None) => v.number,
-        (m, Some(u)) if same(m, u) => v.number,
+        (m, Some(u)) if m == u => v.number,
         (_, Some(u)) => {
             let shown = if mu.is_empty() { "no unit" } else { model_unit };
             return Err(scene.error_at(
