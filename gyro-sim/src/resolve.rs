@@ -3,11 +3,12 @@
 //! motion converted to Euler parameters and body rates by [`crate::initial`]), or an error at the
 //! scene's line and column.
 
+use kane_model::lang::units::normalised;
 use kane_model::runtime::ModelInfo;
 
 use crate::initial::{norm_error, TopStart, UNIT_NORM_TOLERANCE};
 use crate::ode::{Method, Tolerances};
-use crate::problem::{output_times, plot_times, Pick, Problem};
+use crate::problem::{output_times, plot_times, too_many_rows, Pick, Problem};
 use crate::registry::{ModelEntry, Registry};
 use crate::scene::{Axle, Scene, SceneError, Value};
 
@@ -21,6 +22,10 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
         )
     })?;
     let info = entry.info;
+    // A scene built in code, not parsed, has had no check of its grid.
+    if let Some((what, help)) = too_many_rows(scene.t_final, scene.output_step) {
+        return Err(scene.error_at(0..0, what, &help));
+    }
     let times = output_times(scene.t_final, scene.output_step);
     let method = method(scene);
     let written = picks(scene, info)?;
@@ -37,6 +42,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
             Vec::new()
         },
         method,
+        max_steps: scene.integrator.max_steps,
         accuracy: scene.integrator.accuracy,
         written_picks: written.len(),
         picks: with_view_picks(scene, info, written)?,
@@ -277,18 +283,18 @@ fn in_model_units(
     model_unit: &str,
     span: &std::ops::Range<usize>,
 ) -> Result<f64, SceneError> {
-    let mu = model_unit.to_ascii_uppercase();
-    let given = v.unit.as_deref().map(|u| u.to_ascii_uppercase().replace(' ', ""));
+    // Compared regardless of case and spacing, SEC as S (`10 n * m` is in N*M).
+    let mu = normalised(model_unit);
+    let given = v.unit.as_deref().map(normalised);
     let deg = std::f64::consts::PI / 180.0;
-    let same = |m: &str, u: &str| m.replace("SEC", "S") == u.replace("SEC", "S");
     Ok(match (mu.as_str(), given.as_deref()) {
         ("DEG", None | Some("DEG")) => v.number * deg,
         ("DEG" | "RAD", Some("RAD")) | ("RAD", None) => v.number,
         ("RAD", Some("DEG")) => v.number * deg,
-        ("RAD/SEC", None | Some("RAD/S" | "RAD/SEC")) => v.number,
-        ("RAD/SEC", Some("DEG/S" | "DEG/SEC")) => v.number * deg,
+        ("RAD/S", None | Some("RAD/S")) => v.number,
+        ("RAD/S", Some("DEG/S")) => v.number * deg,
         (_, None) => v.number,
-        (m, Some(u)) if same(m, u) => v.number,
+        (m, Some(u)) if m == u => v.number,
         (_, Some(u)) => {
             let shown = if mu.is_empty() { "no unit" } else { model_unit };
             return Err(scene.error_at(

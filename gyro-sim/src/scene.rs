@@ -101,6 +101,9 @@ pub struct Integrator {
     /// The accuracy asked of the trajectory (largest error relative to max(1, |value|)),
     /// reached by refining the tolerances until two runs agree to it (adaptive methods).
     pub accuracy: Option<f64>,
+    /// Most accepted steps of one integration (`max_steps`, default
+    /// [`crate::ode::DEFAULT_MAX_STEPS`]).
+    pub max_steps: usize,
 }
 
 /// A scene that cannot be used: where and why, and what to do.
@@ -162,6 +165,7 @@ struct IntegratorFile {
     atol: Option<Spanned<f64>>,
     step: Option<Spanned<f64>>,
     accuracy: Option<Spanned<f64>>,
+    max_steps: Option<Spanned<i64>>,
 }
 
 fn line_col(src: &str, offset: usize) -> (usize, usize) {
@@ -204,7 +208,12 @@ impl Text<'_> {
     }
 
     /// The integrator table: a known method, positive tolerances, accuracy only if adaptive.
-    fn integrator(&self, integ: Option<IntegratorFile>, output_step: f64) -> Result<Integrator, SceneError> {
+    fn integrator(
+        &self,
+        integ: Option<IntegratorFile>,
+        t_final: f64,
+        output_step: f64,
+    ) -> Result<Integrator, SceneError> {
         let integ = integ.unwrap_or_default();
         let method = integ.method.as_ref().map_or("dopri5".to_string(), |m| m.get_ref().to_ascii_lowercase());
         let Some(info) = crate::ode::by_name(&method) else {
@@ -228,13 +237,61 @@ impl Text<'_> {
         };
         // Without tolerances, an accuracy asked is where the refinement starts.
         let default_tol = accuracy.unwrap_or(1e-9);
+        let step = self.positive(&integ.step, output_step / 10.0, "step")?;
+        let max_steps = self.max_steps(&integ.max_steps)?;
+        if !info.adaptive {
+            self.fixed_steps_fit(&integ, step, t_final, max_steps)?;
+        }
         Ok(Integrator {
             method,
             rtol: self.positive(&integ.rtol, default_tol, "rtol")?,
             atol: self.positive(&integ.atol, default_tol, "atol")?,
-            step: self.positive(&integ.step, output_step / 10.0, "step")?,
+            step,
             accuracy,
+            max_steps,
         })
+    }
+
+    /// `max_steps`: a positive whole number, [`crate::ode::DEFAULT_MAX_STEPS`] when absent.
+    fn max_steps(&self, v: &Option<Spanned<i64>>) -> Result<usize, SceneError> {
+        match v {
+            Some(n) if *n.get_ref() < 1 => Err(self.err(
+                n.span(),
+                format!("max_steps must be at least 1, not {}", n.get_ref()),
+                &format!(
+                    "give the most steps one integration may take (default {})",
+                    crate::ode::DEFAULT_MAX_STEPS
+                ),
+            )),
+            Some(n) => Ok(usize::try_from(*n.get_ref()).unwrap_or(usize::MAX)),
+            None => Ok(crate::ode::DEFAULT_MAX_STEPS),
+        }
+    }
+
+    /// An error at `step` (or the method) when a fixed-step method would need more than
+    /// `max_steps` steps to reach `t_final`.
+    fn fixed_steps_fit(
+        &self,
+        integ: &IntegratorFile,
+        step: f64,
+        t_final: f64,
+        max_steps: usize,
+    ) -> Result<(), SceneError> {
+        let needed = (t_final / step).ceil();
+        if needed <= max_steps as f64 {
+            return Ok(());
+        }
+        let span = match (&integ.step, &integ.max_steps, &integ.method) {
+            (Some(s), _, _) => s.span(),
+            (None, Some(m), _) => m.span(),
+            (None, None, Some(m)) => m.span(),
+            (None, None, None) => 0..0,
+        };
+        Err(self.err(
+            span,
+            format!("step = {step:e} needs {needed:.3e} steps to reach t_final = {t_final}, more than max_steps = {max_steps}"),
+            &format!("raise step to at least {:.3e}, raise max_steps under [integrator], or shorten t_final", t_final / max_steps as f64),
+        ))
     }
 
     /// A table of numbers with optional units (`"30 deg"`).
@@ -379,6 +436,9 @@ impl Text<'_> {
                 "give a positive step no longer than t_final",
             ));
         }
+        if let Some((what, help)) = crate::problem::too_many_rows(*t_final.get_ref(), *step.get_ref()) {
+            return Err(self.err(step.span(), what, &help));
+        }
         Ok((t_final.into_inner(), step.into_inner()))
     }
 }
@@ -419,7 +479,7 @@ impl Scene {
             text.err(
                 e.span().unwrap_or(0..0),
                 e.message().to_string(),
-                "keys are title, model, t_final, output_step, outputs, [integrator], [parameters], [initial], [axle] (tilt, spin, precession, nutation, quaternion, rates), [view], plot_points",
+                "keys are title, model, t_final, output_step, outputs, [integrator] (method, rtol, atol, step, accuracy, max_steps), [parameters], [initial], [axle] (tilt, spin, precession, nutation, quaternion, rates), [view], plot_points",
             )
         })?;
         let model = raw.model.ok_or_else(|| {
@@ -430,7 +490,7 @@ impl Scene {
             )
         })?;
         let (t_final, output_step) = text.times(raw.t_final, raw.output_step)?;
-        let integrator = text.integrator(raw.integrator, output_step)?;
+        let integrator = text.integrator(raw.integrator, t_final, output_step)?;
         let outputs =
             raw.outputs.unwrap_or_default().into_iter().map(|o| (o.get_ref().clone(), o.span())).collect();
         Ok(Scene {

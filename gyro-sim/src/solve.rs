@@ -277,40 +277,41 @@ fn integrate<B: BoundModel>(
     let mut next_output = 0;
     let groups = reduced_groups(&problem.unit_norms, keep);
     let held = UnitNorm::new(sys, &groups, norm_threshold(method));
-    let result = ode::integrate(&held, 0.0, &y_start, &all_times, method, |t, y_red| {
-        sys.expand(y_red, &mut full_y);
-        normalise(&problem.unit_norms, &mut full_y);
-        y_end.copy_from_slice(&full_y);
-        if needs_rates {
-            sys.inner.rhs(t, &full_y, &mut dy);
-        }
-        let mut row = Vec::with_capacity(columns.len() + 1);
-        row.push(t);
-        for p in &problem.picks {
-            match *p {
-                Pick::State(i) => row.push(full_y[i]),
-                Pick::Output(k) => {
-                    let width = info.outputs[k].columns.len();
-                    let at = row.len();
-                    row.resize(at + width, 0.0);
-                    sys.inner.output(k, t, &full_y, &dy[info.n_coordinates..], &mut row[at..]);
+    let result =
+        ode::integrate_limited(&held, 0.0, &y_start, &all_times, method, problem.max_steps, |t, y_red| {
+            sys.expand(y_red, &mut full_y);
+            normalise(&problem.unit_norms, &mut full_y);
+            y_end.copy_from_slice(&full_y);
+            if needs_rates {
+                sys.inner.rhs(t, &full_y, &mut dy);
+            }
+            let mut row = Vec::with_capacity(columns.len() + 1);
+            row.push(t);
+            for p in &problem.picks {
+                match *p {
+                    Pick::State(i) => row.push(full_y[i]),
+                    Pick::Output(k) => {
+                        let width = info.outputs[k].columns.len();
+                        let at = row.len();
+                        row.resize(at + width, 0.0);
+                        sys.inner.output(k, t, &full_y, &dy[info.n_coordinates..], &mut row[at..]);
+                    }
                 }
             }
-        }
-        if let Some(j) = row.iter().position(|v| !v.is_finite()) {
-            let name = columns[j - 1].name.clone();
-            bad = Some(SolveError::NonFiniteOutput { name, time: t, value: row[j] });
-            return ControlFlow::Break(());
-        }
-        if !problem.plot_times.is_empty() {
-            plot_rows.push(row.clone());
-        }
-        if problem.times.get(next_output) == Some(&t) {
-            next_output += 1;
-            rows.push(row);
-        }
-        ControlFlow::Continue(())
-    });
+            if let Some(j) = row.iter().position(|v| !v.is_finite()) {
+                let name = columns[j - 1].name.clone();
+                bad = Some(SolveError::NonFiniteOutput { name, time: t, value: row[j] });
+                return ControlFlow::Break(());
+            }
+            if !problem.plot_times.is_empty() {
+                plot_rows.push(row.clone());
+            }
+            if problem.times.get(next_output) == Some(&t) {
+                next_output += 1;
+                rows.push(row);
+            }
+            ControlFlow::Continue(())
+        });
     let stats = result.map_err(|e| match e {
         OdeError::NonFinite { time, index, value } => {
             SolveError::NonFiniteState { name: info.state_names[keep[index]].to_string(), time, value }

@@ -5,7 +5,8 @@
 use std::ops::ControlFlow;
 
 use gyro_sim::ode::{
-    by_name, integrate, tableau, ErkStepper, Method, OdeError, StopReason, System, Tolerances,
+    by_name, integrate, integrate_limited, tableau, ErkStepper, Method, OdeError, StopReason, System,
+    Tolerances,
 };
 
 /// y1' = y2, y2' = -y1: y = (sin t, cos t).
@@ -327,4 +328,42 @@ fn steppers_check_dimensions_and_the_start() {
         any.step().unwrap();
     }
     assert_eq!(sized.y(), any.y());
+}
+
+/// The step limit holds inside every stepping loop: a fixed step far smaller than the output
+/// interval stops after `max_steps` steps, before the first output time (it used to be checked
+/// only between output times, so a tiny step ran for ~35 minutes), and so does an adaptive run.
+#[test]
+fn the_step_limit_stops_inside_an_output_interval() {
+    let never = |_: f64, _: &[f64]| -> ControlFlow<()> { panic!("no output time is reached") };
+    let rk4 = Method::Fixed(&tableau::RK4, 1e-9);
+    let r = integrate_limited(&Oscillator, 0.0, &[0.0, 1.0], &[1.0], rk4, 1000, never);
+    match r {
+        Err(e @ OdeError::TooManySteps { time, max: 1000 }) => {
+            assert!((time - 1e-6).abs() < 1e-12, "stopped at {time}");
+            let text = e.to_string();
+            assert!(text.contains("after 1000 steps") && text.contains("raise max_steps"), "{text}");
+            assert!(text.contains("loosen rtol and atol") && text.contains("raise step"), "{text}");
+        }
+        other => panic!("expected the step limit, got {other:?}"),
+    }
+    let tight = Method::Adaptive(&tableau::DOPRI5, Tolerances { rtol: 1e-12, atol: 1e-12 });
+    let r = integrate_limited(&Oscillator, 0.0, &[0.0, 1.0], &[100.0], tight, 50, never);
+    assert!(matches!(r, Err(OdeError::TooManySteps { max: 50, .. })), "{r:?}");
+    // The stepper alone: exactly the limit is allowed, one more is not.
+    let mut stepper =
+        ErkStepper::new(&Oscillator, 0.0, &[0.0, 1.0], Method::Fixed(&tableau::RK4, 0.1)).unwrap();
+    stepper.set_max_steps(3);
+    for _ in 0..3 {
+        stepper.step().unwrap();
+    }
+    assert!(matches!(stepper.step(), Err(OdeError::TooManySteps { max: 3, .. })));
+}
+
+/// A fixed step too small to move the time is a step-size underflow, not an endless loop.
+#[test]
+fn a_fixed_step_below_the_time_resolution_underflows() {
+    let rk4 = Method::Fixed(&tableau::RK4, 1e-30);
+    let r = integrate(&Oscillator, 1.0, &[0.0, 1.0], &[2.0], rk4, |_, _| ControlFlow::Continue(()));
+    assert!(matches!(r, Err(OdeError::StepSizeUnderflow { time, .. }) if time == 1.0), "{r:?}");
 }

@@ -113,3 +113,71 @@ fn a_view_does_not_change_the_refined_run() {
     let written = 1 + b.columns.len();
     assert!(a.rows.iter().zip(&b.rows).all(|(x, y)| x[..written] == y[..]));
 }
+
+/// Output grids too large to hold are refused before anything is allocated, at `output_step`,
+/// saying how to go on (issue 14: `t_final = 1e300` panicked, `output_step = 1e-9` tried 40 GB).
+#[test]
+fn output_grids_too_large_are_refused_up_front() {
+    let grid = |t_final: &str, step: &str| {
+        error(&format!("model = \"gimbal_gyroscope\"\nt_final = {t_final}\noutput_step = {step}\n"))
+    };
+    let e = grid("1e300", "0.1");
+    assert!(e.starts_with("bad.toml:3:15: error: t_final = 1e300 with output_step = 0.1 makes"), "{e}");
+    assert!(e.contains("more than the 10000000 allowed"), "{e}");
+    assert!(e.contains("help: raise output_step to at least") && e.contains("shorten t_final"), "{e}");
+    let e = grid("100.0", "1e-9");
+    assert!(
+        e.starts_with("bad.toml:3:15: error: t_final = 100 with output_step = 1e-9 makes 1.000e11"),
+        "{e}"
+    );
+    let e = grid("1e8", "1.0");
+    assert!(e.contains("1.000e8 output rows"), "{e}");
+    // A grid at the limit's scale but under it is accepted (parsed; not run here).
+    let ok = "model = \"gimbal_gyroscope\"\nt_final = 1e6\noutput_step = 0.5\n";
+    assert!(Scene::parse("ok.toml", ok).is_ok());
+}
+
+/// `max_steps` under [integrator]: a positive whole number; a fixed step needing more steps than
+/// it allows is refused at `step`; an adaptive run reaching it stops saying where and how to go on.
+#[test]
+fn max_steps_is_a_scene_key_and_reaching_it_says_how_to_go_on() {
+    let base = "model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[integrator]\n";
+    let e = error(&format!("{base}max_steps = 0\n"));
+    assert!(e.starts_with("bad.toml:5:13: error: max_steps must be at least 1, not 0"), "{e}");
+    let e = error(&format!("{base}method = \"rk4\"\nstep = 1e-9\n"));
+    assert!(e.starts_with("bad.toml:6:8: error: step = 1e-9 needs 1.000e9 steps"), "{e}");
+    assert!(e.contains("more than max_steps = 10000000") && e.contains("help: raise step"), "{e}");
+    let e = error(&format!("{base}method = \"rk4\"\nstep = 0.001\nmax_steps = 100\n"));
+    assert!(e.starts_with("bad.toml:6:8: error: step = 1e-3 needs 1.000e3 steps"), "{e}");
+    let e = error(&format!("{base}method = \"dop853\"\nrtol = 1e-12\natol = 1e-12\nmax_steps = 5\n"));
+    assert!(e.contains("integration failed: stopped at t = "), "{e}");
+    assert!(
+        e.contains("after 5 steps, the step limit")
+            && e.contains("help: raise max_steps under [integrator] (now 5)"),
+        "{e}"
+    );
+    // Enough steps: the run completes.
+    let ok = format!("{base}method = \"rk4\"\nstep = 0.01\nmax_steps = 100\n");
+    let scene = Scene::parse("ok.toml", &ok).unwrap();
+    assert_eq!(scene.integrator.max_steps, 100);
+    let summary = run(&scene, None).unwrap();
+    assert_eq!(summary.trajectory.stats.steps, 100);
+}
+
+/// A value's unit is compared with the model's `UNITS` regardless of case and spacing: the
+/// gimbal says `UNITS Y = N*M`, so `"10 N*m"`, `"10 n * m"` and `"10 N m"` are all 10 N*M.
+#[test]
+fn units_compare_regardless_of_case_and_spacing() {
+    let registry = gyro_sim::registry::Registry::builtin();
+    for unit in ["N*m", "n * m", "N m", "N*M"] {
+        let text = format!("model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[parameters]\nY = \"10 {unit}\"\n");
+        let scene = Scene::parse("units.toml", &text).unwrap();
+        let problem = gyro_sim::resolve::resolve(&scene, &registry).unwrap_or_else(|e| panic!("{unit}: {e}"));
+        let y = problem.model.param_names.iter().position(|p| *p == "Y").unwrap();
+        assert_eq!(problem.params[y], 10.0, "{unit}");
+    }
+    let e = error(
+        "model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[parameters]\nY = \"10 Nm\"\n",
+    );
+    assert!(e.starts_with("bad.toml:5:5: error: `Y` is in N*M, not NM"), "{e}");
+}

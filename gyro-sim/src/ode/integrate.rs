@@ -6,11 +6,12 @@
 
 use std::ops::ControlFlow;
 
-use super::stepper::{ErkStepper, Stats, StopReason};
+use super::stepper::{ErkStepper, Stats, StopReason, DEFAULT_MAX_STEPS};
 use super::{Method, OdeError, System};
 
 /// Integrates from `(t0, y0)` through the increasing output `times` (none before `t0`), calling
 /// `out(t, y)` at each; `ControlFlow::Break` stops early, which is no error. The cost so far.
+/// At most [`DEFAULT_MAX_STEPS`] steps.
 pub fn integrate<S: System + ?Sized>(
     sys: &S,
     t0: f64,
@@ -19,29 +20,52 @@ pub fn integrate<S: System + ?Sized>(
     method: Method,
     out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
 ) -> Result<Stats, OdeError> {
-    match sys.dim() {
-        1 => integrate_n::<S, 1>(sys, t0, y0, times, method, out),
-        2 => integrate_n::<S, 2>(sys, t0, y0, times, method, out),
-        3 => integrate_n::<S, 3>(sys, t0, y0, times, method, out),
-        4 => integrate_n::<S, 4>(sys, t0, y0, times, method, out),
-        5 => integrate_n::<S, 5>(sys, t0, y0, times, method, out),
-        6 => integrate_n::<S, 6>(sys, t0, y0, times, method, out),
-        7 => integrate_n::<S, 7>(sys, t0, y0, times, method, out),
-        8 => integrate_n::<S, 8>(sys, t0, y0, times, method, out),
-        _ => integrate_n::<S, 0>(sys, t0, y0, times, method, out),
-    }
+    integrate_limited(sys, t0, y0, times, method, DEFAULT_MAX_STEPS, out)
 }
 
-/// [`integrate`] with the dimension `N` fixed at compile time (0: any).
-fn integrate_n<S: System + ?Sized, const N: usize>(
+/// [`integrate`] with at most `max_steps` accepted steps (then [`OdeError::TooManySteps`]).
+pub fn integrate_limited<S: System + ?Sized>(
     sys: &S,
     t0: f64,
     y0: &[f64],
     times: &[f64],
     method: Method,
+    max_steps: usize,
+    out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
+) -> Result<Stats, OdeError> {
+    let limits = Limits { method, max_steps };
+    match sys.dim() {
+        1 => integrate_n::<S, 1>(sys, t0, y0, times, limits, out),
+        2 => integrate_n::<S, 2>(sys, t0, y0, times, limits, out),
+        3 => integrate_n::<S, 3>(sys, t0, y0, times, limits, out),
+        4 => integrate_n::<S, 4>(sys, t0, y0, times, limits, out),
+        5 => integrate_n::<S, 5>(sys, t0, y0, times, limits, out),
+        6 => integrate_n::<S, 6>(sys, t0, y0, times, limits, out),
+        7 => integrate_n::<S, 7>(sys, t0, y0, times, limits, out),
+        8 => integrate_n::<S, 8>(sys, t0, y0, times, limits, out),
+        _ => integrate_n::<S, 0>(sys, t0, y0, times, limits, out),
+    }
+}
+
+/// The method and the step limit.
+#[derive(Clone, Copy)]
+struct Limits {
+    method: Method,
+    max_steps: usize,
+}
+
+/// [`integrate_limited`] with the dimension `N` fixed at compile time (0: any).
+fn integrate_n<S: System + ?Sized, const N: usize>(
+    sys: &S,
+    t0: f64,
+    y0: &[f64],
+    times: &[f64],
+    limits: Limits,
     mut out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
 ) -> Result<Stats, OdeError> {
+    let method = limits.method;
     let mut stepper = ErkStepper::<S, N>::new_sized(sys, t0, y0, method)?;
+    stepper.set_max_steps(limits.max_steps);
     let Some(&t_end) = times.last() else { return Ok(stepper.stats()) };
     stepper.set_horizon(t_end);
     // Fixed steps land on every output time, so the step between two is at most the one asked.
@@ -106,10 +130,11 @@ mod tests {
                     rows.push(y.to_vec());
                     ControlFlow::Continue(())
                 };
+                let limits = Limits { method, max_steps: DEFAULT_MAX_STEPS };
                 let stats = if fixed {
-                    integrate_n::<_, 4>(&Pendulums, 0.0, &y0, &times, method, record)
+                    integrate_n::<_, 4>(&Pendulums, 0.0, &y0, &times, limits, record)
                 } else {
-                    integrate_n::<_, 0>(&Pendulums, 0.0, &y0, &times, method, record)
+                    integrate_n::<_, 0>(&Pendulums, 0.0, &y0, &times, limits, record)
                 };
                 (stats.unwrap(), rows)
             };

@@ -17,9 +17,9 @@ mod stepper;
 pub mod tableau;
 
 pub use dense::{DenseOutput, DenseRounding};
-pub use integrate::integrate;
+pub use integrate::{integrate, integrate_limited};
 pub use methods::{by_name, default_method, methods_help, Method, MethodInfo, Tolerances, METHODS};
-pub use stepper::{ErkStepper, Stats, StopReason};
+pub use stepper::{ErkStepper, Stats, StopReason, DEFAULT_MAX_STEPS};
 use thiserror::Error;
 
 /// A system `y' = f(t, y)` of fixed dimension; integrators only call `rhs`.
@@ -58,7 +58,7 @@ pub enum OdeError {
         step: f64,
     },
     /// More steps than allowed.
-    #[error("more than {max} steps before t = {time}")]
+    #[error("stopped at t = {time} after {max} steps, the step limit\n  help: raise max_steps under [integrator] (now {max}), or let the method take longer steps: loosen rtol and atol (adaptive methods) or raise step (fixed-step methods), or shorten t_final")]
     TooManySteps {
         /// Where it stopped.
         time: f64,

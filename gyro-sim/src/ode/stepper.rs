@@ -13,8 +13,8 @@ use super::dense::{DenseCache, StepData};
 use super::stages::Work;
 use super::{Method, OdeError, System, Tolerances};
 
-/// Most steps a stepper takes.
-const MAX_STEPS: usize = 10_000_000;
+/// Most accepted steps a stepper takes unless told otherwise ([`ErkStepper::set_max_steps`]).
+pub const DEFAULT_MAX_STEPS: usize = 10_000_000;
 
 /// What integration cost.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -64,6 +64,8 @@ pub struct ErkStepper<'a, S: System + ?Sized, const N: usize = 0> {
     stop: Option<f64>,
     horizon: Option<f64>,
     plan: FixedPlan,
+    /// Most accepted steps; the next one after them is an error.
+    max_steps: usize,
     /// The tableau has a continuous extension.
     dense_output: bool,
     dense: RefCell<DenseCache>,
@@ -113,6 +115,7 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
             stop: None,
             horizon: None,
             plan: FixedPlan::default(),
+            max_steps: DEFAULT_MAX_STEPS,
             dense_output: tab.dense.is_some(),
             dense: RefCell::new(DenseCache::new(n, tab.dense.as_ref())),
             dense_evals: Cell::new(0),
@@ -131,6 +134,12 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
     /// way there (without a horizon, than the way to the stop time). No effect after that step.
     pub fn set_horizon(&mut self, t_end: f64) {
         self.horizon = Some(t_end);
+    }
+
+    /// At most `max` accepted steps in all: [`ErkStepper::step`] fails with
+    /// [`OdeError::TooManySteps`] before taking one more.
+    pub fn set_max_steps(&mut self, max: usize) {
+        self.max_steps = max;
     }
 
     /// The current time.
@@ -164,6 +173,7 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
         if self.stop.is_some_and(|stop| self.t >= stop) {
             return Ok(StopReason::StopTimeReached);
         }
+        self.check_step_limit()?;
         if self.work.sys.project(&mut self.y) {
             check_finite(self.t, &self.y)?;
             self.work.restart(self.t, &self.y);
@@ -222,7 +232,6 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
     /// smaller.
     #[inline(always)]
     fn adaptive_step(&mut self, tol: Tolerances) -> Result<StopReason, OdeError> {
-        self.check_step_limit()?;
         if self.work.stats.steps == 0 {
             // The first step: Hairer's estimate, now bounded by the span to integrate.
             if let Some(end) = self.horizon.or(self.stop) {
@@ -240,12 +249,11 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
     }
 
     /// A fixed step: of size `step` without a stop time; toward one, the rest of the way divided
-    /// evenly into the fewest steps no longer than `step`, planned when the stop time is set
-    /// (the step limit is checked then, as for a run of steps between two output times).
+    /// evenly into the fewest steps no longer than `step`. An error for a step too small to move
+    /// the time.
     #[inline(always)]
     fn fixed_step(&mut self, step: f64) -> Result<StopReason, OdeError> {
         if self.plan.left == 0 {
-            self.check_step_limit()?;
             self.plan = match self.stop {
                 Some(stop) => {
                     let count = ((stop - self.t) / step - 1e-9).ceil().max(1.0);
@@ -255,6 +263,9 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
             };
         }
         let h = self.plan.h;
+        if self.t + h <= self.t {
+            return Err(OdeError::StepSizeUnderflow { time: self.t, step: h });
+        }
         let lands = match self.stop {
             Some(stop) if self.plan.left == 1 => Some(stop),
             _ => None,
@@ -268,9 +279,11 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
         Ok(if lands.is_some() { StopReason::StopTimeReached } else { StopReason::StepTaken })
     }
 
+    /// An error when the steps taken are already the most allowed.
+    #[inline(always)]
     fn check_step_limit(&self) -> Result<(), OdeError> {
-        if self.work.stats.steps >= MAX_STEPS {
-            return Err(OdeError::TooManySteps { time: self.t, max: MAX_STEPS });
+        if self.work.stats.steps >= self.max_steps {
+            return Err(OdeError::TooManySteps { time: self.t, max: self.max_steps });
         }
         Ok(())
     }

@@ -22,8 +22,10 @@ mod parser;
 mod present;
 mod session;
 mod show;
+mod sum_tree;
 mod to_spec;
 mod token;
+pub mod units;
 
 pub use ast::{Expr, ExprKind, Stmt, StmtKind};
 pub use check::{check, Checked, OVERRIDE_MARKER};

@@ -3,7 +3,13 @@
 
 use super::ast::{AssignOp, BinOp, DeclItem, DeclKind, Expr, ExprKind, InputItem, Stmt, StmtKind, Target};
 use super::diagnostic::Diagnostic;
+use super::sum_tree;
 use super::token::{lex, Span, Tok, Token};
+
+/// Deepest nesting an expression may have: parentheses, brackets, function calls, unary signs,
+/// powers and the factors of one product each count one level. Evaluating deeper expressions
+/// would overflow the stack; long sums do not count (they are balanced, see [`sum_tree`]).
+pub const MAX_NESTING: usize = 256;
 
 /// Parses a whole program; returns the statements and every syntax error found.
 pub fn parse(src: &str) -> (Vec<Stmt>, Vec<Diagnostic>) {
@@ -26,7 +32,7 @@ pub fn parse(src: &str) -> (Vec<Stmt>, Vec<Diagnostic>) {
                 // A statement with a bad character is reported once, for that character.
                 let (from, to) = (line[0].span.start, t.span.start);
                 if !bad_lines.iter().any(|b| (from..=to).contains(b)) {
-                    let mut p = Parser { toks: &line, pos: 0, src };
+                    let mut p = Parser { toks: &line, pos: 0, src, depth: 0 };
                     match p.statement() {
                         Ok(s) => stmts.push(s),
                         Err(e) => errors.push(e),
@@ -46,6 +52,8 @@ struct Parser<'a> {
     toks: &'a [Token],
     pos: usize,
     src: &'a str,
+    /// How deeply the expression being read is nested so far.
+    depth: usize,
 }
 
 type PResult<T> = Result<T, Diagnostic>;
@@ -421,24 +429,46 @@ impl<'a> Parser<'a> {
         Ok(e)
     }
 
+    /// `f` one nesting level deeper; an error at the current token past [`MAX_NESTING`].
+    fn nested<T>(&mut self, f: impl FnOnce(&mut Self) -> PResult<T>) -> PResult<T> {
+        if self.depth >= MAX_NESTING {
+            return Err(self.too_deep());
+        }
+        self.depth += 1;
+        let out = f(self);
+        self.depth -= 1;
+        out
+    }
+
+    /// The error at the token just read (the parenthesis, sign or operator that went too deep).
+    fn too_deep(&self) -> Diagnostic {
+        let at = self.pos.checked_sub(1).map_or_else(|| self.span_here(), |i| self.toks[i].span.clone());
+        Diagnostic::error(
+            at,
+            format!("this expression is nested more than {MAX_NESTING} levels deep"),
+        )
+        .with_help("parentheses, brackets, calls, signs, powers and the factors of one product each count a level: name parts of the expression in assignments of their own (X1 = ..., then X = X1*...)")
+    }
+
     fn expr(&mut self) -> PResult<Expr> {
-        let start = self.start();
-        let mut lhs = self.term()?;
+        let first = self.term()?;
+        let mut rest = Vec::new();
         loop {
             let op = if self.eat('+') {
                 BinOp::Add
             } else if self.eat('-') {
                 BinOp::Sub
             } else {
-                return Ok(lhs);
+                return Ok(sum_tree::sum(first, rest));
             };
-            let rhs = self.term()?;
-            lhs = Expr { kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)), span: start..self.end() };
+            rest.push((op, self.term()?));
         }
     }
 
+    /// Factors `a * b / c`, left-deep: each factor after the first is a level of nesting.
     fn term(&mut self) -> PResult<Expr> {
         let start = self.start();
+        let outer = self.depth;
         let mut lhs = self.unary()?;
         loop {
             let op = if self.eat('*') {
@@ -446,8 +476,14 @@ impl<'a> Parser<'a> {
             } else if self.eat('/') {
                 BinOp::Div
             } else {
+                self.depth = outer;
                 return Ok(lhs);
             };
+            if self.depth >= MAX_NESTING {
+                self.depth = outer;
+                return Err(self.too_deep());
+            }
+            self.depth += 1;
             let rhs = self.unary()?;
             lhs = Expr { kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)), span: start..self.end() };
         }
@@ -456,11 +492,11 @@ impl<'a> Parser<'a> {
     fn unary(&mut self) -> PResult<Expr> {
         let start = self.start();
         if self.eat('-') {
-            let e = self.unary()?;
+            let e = self.nested(Self::unary)?;
             return Ok(Expr { kind: ExprKind::Neg(Box::new(e)), span: start..self.end() });
         }
         if self.eat('+') {
-            return self.unary();
+            return self.nested(Self::unary);
         }
         self.power()
     }
@@ -469,7 +505,7 @@ impl<'a> Parser<'a> {
         let start = self.start();
         let base = self.primary()?;
         if self.eat('^') {
-            let exp = self.unary()?;
+            let exp = self.nested(Self::unary)?;
             return Ok(Expr {
                 kind: ExprKind::Binary(BinOp::Pow, Box::new(base), Box::new(exp)),
                 span: start..self.end(),
@@ -491,12 +527,12 @@ impl<'a> Parser<'a> {
                 let (name, suffix) = (text.clone(), *suffix);
                 self.pos += 1;
                 if suffix == 0 && self.eat('(') {
-                    let args = if self.is_punct(')') { Vec::new() } else { self.args()? };
+                    let args = if self.is_punct(')') { Vec::new() } else { self.nested(Self::args)? };
                     self.expect(')', &format!("to close the arguments of {name}"))?;
                     return Ok(Expr { kind: ExprKind::Call { name, args }, span: start..self.end() });
                 }
                 if suffix == 0 && self.eat('[') {
-                    let args = self.args()?;
+                    let args = self.nested(Self::args)?;
                     self.expect(']', "to close the index")?;
                     return Ok(Expr { kind: ExprKind::Index { name, args }, span: start..self.end() });
                 }
@@ -505,7 +541,7 @@ impl<'a> Parser<'a> {
             }
             Some(Tok::Punct('(')) => {
                 self.pos += 1;
-                let e = self.expr()?;
+                let e = self.nested(Self::expr)?;
                 self.expect(')', "to close the parenthesis")?;
                 Ok(Expr { kind: e.kind, span: start..self.end() })
             }
@@ -513,7 +549,7 @@ impl<'a> Parser<'a> {
                 self.pos += 1;
                 let mut rows = vec![Vec::new()];
                 loop {
-                    let e = self.expr()?;
+                    let e = self.nested(Self::expr)?;
                     if let Some(r) = rows.last_mut() {
                         r.push(e);
                     }

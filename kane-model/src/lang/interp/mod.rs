@@ -15,7 +15,7 @@ mod functions;
 mod inertia;
 mod mass_fns;
 mod matrix_fns;
-mod names;
+pub(crate) mod names;
 mod orientation;
 mod prepare;
 mod scalar_fns;

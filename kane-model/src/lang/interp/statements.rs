@@ -7,6 +7,7 @@
 use super::super::ast::{DeclItem, DeclKind, Expr, InputItem, Stmt, StmtKind};
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
+use super::super::units::{unit_expression, unit_word};
 use super::{entity_key, is_degrees, At, Binding, CodeRequest, IResult, InputValue, Interpreter};
 
 impl Interpreter {
@@ -24,13 +25,16 @@ impl Interpreter {
             StmtKind::Setting { name, on } => self.setting(name, *on, &s.span),
             StmtKind::Units(items) => {
                 for (name, _, e) in items {
-                    self.units.insert(name.to_ascii_uppercase(), unit_text(e));
+                    self.units.insert(name.to_ascii_uppercase(), unit_expression(e)?);
                 }
                 Ok(())
             }
             StmtKind::Input(items) => self.input(items),
             StmtKind::Output(items) => {
-                for (n, _, u) in items {
+                for (n, span, u) in items {
+                    if let Some(u) = u {
+                        unit_word(u, span)?;
+                    }
                     self.outputs.push((n.clone(), u.clone()));
                 }
                 Ok(())
@@ -88,6 +92,9 @@ impl Interpreter {
     /// `INPUT a = value [unit], ...`: values kept in internal units (degrees become radians).
     fn input(&mut self, items: &[InputItem]) -> IResult<()> {
         for item in items {
+            if let Some(u) = &item.unit {
+                unit_word(u, &item.span)?;
+            }
             let v = self.number(&item.value)?;
             let name = format!("{}{}", item.name, "'".repeat(item.primes as usize));
             let in_degrees = item.unit.as_deref() == Some("DEG")
@@ -160,24 +167,4 @@ fn expand_ranges(name: &str, ranges: &[(i64, i64)]) -> Vec<String> {
         out = out.iter().flat_map(|p| (lo..=hi).map(move |i| format!("{p}{i}"))).collect();
     }
     out
-}
-
-/// The text of a unit expression (`N*m`, `RAD/SEC`), upper-cased.
-fn unit_text(e: &Expr) -> String {
-    use super::super::ast::{BinOp, ExprKind};
-    match &e.kind {
-        ExprKind::Name { name, .. } => name.to_ascii_uppercase(),
-        ExprKind::Number { value, .. } => format!("{value}"),
-        ExprKind::Binary(op, a, b) => {
-            let o = match op {
-                BinOp::Mul => "*",
-                BinOp::Div => "/",
-                BinOp::Pow => "^",
-                BinOp::Add => "+",
-                BinOp::Sub => "-",
-            };
-            format!("{}{o}{}", unit_text(a), unit_text(b))
-        }
-        _ => String::new(),
-    }
 }

@@ -1,0 +1,52 @@
+//! Units in model files (issue 14): an unknown unit in UNITS, INPUT or OUTPUT is an error at its
+//! place naming it, with the nearest known unit and the list of known ones; unit expressions
+//! keep their grouping.
+
+use kane_model::lang;
+
+const GIMBAL: &str = include_str!("../models/gimbal_gyroscope.al");
+
+fn errors(src: &str) -> String {
+    match lang::load("units.al", src) {
+        Ok(_) => panic!("expected an error"),
+        Err(report) => report.to_string(),
+    }
+}
+
+fn line_of(src: &str, start: &str) -> usize {
+    src.lines().position(|l| l.starts_with(start)).expect("line present") + 1
+}
+
+#[test]
+fn unknown_units_in_the_gimbal_are_named_with_the_known_ones() {
+    let src = GIMBAL.replace("UNITS Q1 = DEG,", "UNITS Q1 = DGE,").replace("T = SEC,", "T = SCE,");
+    let e = errors(&src);
+    let (time, angle) = (line_of(&src, "UNITS M1"), line_of(&src, "UNITS Q1"));
+    assert!(e.contains(&format!("units.al:{time}:38: error: unknown unit `SCE`")), "{e}");
+    assert!(e.contains(&format!("units.al:{angle}:12: error: unknown unit `DGE`")), "{e}");
+    assert!(e.contains("did you mean `SEC`?") && e.contains("did you mean `DEG`?"), "{e}");
+    assert!(e.contains("known units: M, CM, MM") && e.contains("RAD, DEG"), "{e}");
+}
+
+#[test]
+fn units_of_input_and_output_and_inside_expressions_are_checked() {
+    let e = errors("CONSTANTS K\nINPUT K = 3 DGE\n");
+    assert!(e.starts_with("units.al:2:7: error: unknown unit `DGE`"), "{e}");
+    let e = errors("CONSTANTS K\nOUTPUT K FOO\n");
+    assert!(e.starts_with("units.al:2:8: error: unknown unit `FOO`"), "{e}");
+    let e = errors("CONSTANTS K\nUNITS K = N*MM/SCE^2\n");
+    assert!(e.starts_with("units.al:2:16: error: unknown unit `SCE`"), "{e}");
+    let e = errors("CONSTANTS K\nUNITS K = N + M\n");
+    assert!(e.starts_with("units.al:2:11: error: this is not a unit"), "{e}");
+}
+
+#[test]
+fn known_units_load_with_their_grouping() {
+    let loaded =
+        lang::load("units.al", "CONSTANTS A, B, C\nUNITS A = n*m, B = M/(SEC*SEC), C = RAD/SEC^2\n").unwrap();
+    let units = loaded.units;
+    assert_eq!(units["A"], "N*M");
+    assert_eq!(units["B"], "M/(SEC*SEC)");
+    assert_eq!(units["C"], "RAD/SEC^2");
+    assert!(lang::load("gimbal.al", GIMBAL).is_ok());
+}
