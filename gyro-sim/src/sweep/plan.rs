@@ -131,8 +131,7 @@ mod tests {
     fn latin_hypercube_uses_every_stratum_once_and_repeats_from_its_seed() {
         let ranges = [parse_range("A=0:1").unwrap(), parse_range("B=-5:5").unwrap()];
         let s = latin_hypercube(&ranges, 8, 7);
-        for d in 0..2 {
-            let r = &ranges[d];
+        for (d, r) in ranges.iter().enumerate() {
             let mut strata: Vec<usize> = s
                 .iter()
                 .map(|m| ((m.values[d].number - r.start) / (r.stop - r.start) * 8.0) as usize)

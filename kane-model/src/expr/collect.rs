@@ -61,38 +61,6 @@ impl Arena {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn collects_by_state_monomial_and_keeps_parameters_whole() {
-        let mut ar = Arena::new();
-        let [m, l, a] = ["m", "l", "a"].map(|n| ar.constant(n).unwrap());
-        let q = ar.variable("q").unwrap();
-        let u = ar.variable("u").unwrap();
-        let s = ar.sin(q).unwrap();
-        let c = ar.cos(q).unwrap();
-        let la = ar.sub(l, a).unwrap();
-        let la2 = ar.powi(la, 2).unwrap();
-        // m (l - a)^2 s u + a s u + m (s^2 + c^2) => (m (l - a)^2 + a) s u + m
-        let t1 = ar.mul(&[m, la2, s, u]).unwrap();
-        let t2 = ar.mul(&[a, s, u]).unwrap();
-        let s2 = ar.powi(s, 2).unwrap();
-        let c2 = ar.powi(c, 2).unwrap();
-        let pyth = ar.add(&[s2, c2]).unwrap();
-        let t3 = ar.mul(&[m, pyth]).unwrap();
-        let e = ar.add(&[t1, t2, t3]).unwrap();
-        let params = [m, l, a].map(|x| ar.as_symbol(x).unwrap());
-        let r = ar.collect_state(e, |s| params.contains(&s)).unwrap();
-        let coeff = ar.mul(&[m, la2]).unwrap();
-        let coeff = ar.add(&[coeff, a]).unwrap();
-        let su = ar.mul(&[coeff, s, u]).unwrap();
-        let expected = ar.add(&[su, m]).unwrap();
-        assert_eq!(r, expected, "{}", ar.to_text(r));
-    }
-}
-
 impl Arena {
     /// The terms of the sum `e` grouped by their state part: each term split into the factors
     /// whose free symbols `is_coefficient` accepts (multiplied into a coefficient) and the rest
@@ -129,5 +97,37 @@ impl Arena {
             }
         }
         Ok(groups)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn collects_by_state_monomial_and_keeps_parameters_whole() {
+        let mut ar = Arena::new();
+        let [m, l, a] = ["m", "l", "a"].map(|n| ar.constant(n).unwrap());
+        let q = ar.variable("q").unwrap();
+        let u = ar.variable("u").unwrap();
+        let s = ar.sin(q).unwrap();
+        let c = ar.cos(q).unwrap();
+        let la = ar.sub(l, a).unwrap();
+        let la2 = ar.powi(la, 2).unwrap();
+        // m (l - a)^2 s u + a s u + m (s^2 + c^2) => (m (l - a)^2 + a) s u + m
+        let t1 = ar.mul(&[m, la2, s, u]).unwrap();
+        let t2 = ar.mul(&[a, s, u]).unwrap();
+        let s2 = ar.powi(s, 2).unwrap();
+        let c2 = ar.powi(c, 2).unwrap();
+        let pyth = ar.add(&[s2, c2]).unwrap();
+        let t3 = ar.mul(&[m, pyth]).unwrap();
+        let e = ar.add(&[t1, t2, t3]).unwrap();
+        let params = [m, l, a].map(|x| ar.as_symbol(x).unwrap());
+        let r = ar.collect_state(e, |s| params.contains(&s)).unwrap();
+        let coeff = ar.mul(&[m, la2]).unwrap();
+        let coeff = ar.add(&[coeff, a]).unwrap();
+        let su = ar.mul(&[coeff, s, u]).unwrap();
+        let expected = ar.add(&[su, m]).unwrap();
+        assert_eq!(r, expected, "{}", ar.to_text(r));
     }
 }
