@@ -191,116 +191,12 @@ impl<'a> Parser<'a> {
             return Ok(StmtKind::Declare { kind, items });
         }
         match word.as_str() {
-            "MASS" if !matches!(next, Some(Tok::Punct('('))) => {
-                self.pos += 1;
-                let mut out = Vec::new();
-                loop {
-                    let (n, _, span) = self.name()?;
-                    self.expect('=', "after the body or particle name in MASS")?;
-                    out.push((n, span, self.expr()?));
-                    if !self.eat(',') {
-                        break;
-                    }
-                }
-                Ok(StmtKind::Mass(out))
-            }
-            "INERTIA" if !matches!(next, Some(Tok::Punct('('))) => {
-                self.pos += 1;
-                let (body, _, body_span) = self.name()?;
-                // INERTIA B(frame), ...: an optional frame or point in parentheses is not supported.
-                if self.is_punct('(') {
-                    return Err(Diagnostic::error(
-                        self.span_here(),
-                        "INERTIA with a point or frame in parentheses is not supported",
-                    )
-                    .with_help(
-                        "give the central moments in the body's own frame: INERTIA B, I11, I22, I33",
-                    ));
-                }
-                let mut args = Vec::new();
-                while self.eat(',') {
-                    args.push(self.expr()?);
-                }
-                Ok(StmtKind::Inertia { body, body_span, args })
-            }
-            "UNITS" | "UNITSYSTEM" if word == "UNITS" => {
-                self.pos += 1;
-                let mut out = Vec::new();
-                loop {
-                    let (n, _, span) = self.name()?;
-                    self.primes();
-                    self.expect('=', "after the name in UNITS")?;
-                    out.push((n, span, self.expr()?));
-                    if !self.eat(',') {
-                        break;
-                    }
-                }
-                Ok(StmtKind::Units(out))
-            }
-            "INPUT" => {
-                self.pos += 1;
-                let mut out = Vec::new();
-                loop {
-                    let start = self.start();
-                    let (n, _, _) = self.name()?;
-                    let primes = self.primes();
-                    self.expect('=', "after the name in INPUT")?;
-                    let value = self.expr()?;
-                    let unit = match self.peek() {
-                        Some(Tok::Name { text, .. }) => {
-                            self.pos += 1;
-                            Some(text.to_ascii_uppercase())
-                        }
-                        _ => None,
-                    };
-                    out.push(InputItem { name: n, primes, value, unit, span: start..self.end() });
-                    if !self.eat(',') {
-                        break;
-                    }
-                }
-                Ok(StmtKind::Input(out))
-            }
-            "OUTPUT" => {
-                self.pos += 1;
-                let mut out = Vec::new();
-                loop {
-                    let (n, _, span) = self.name()?;
-                    let p = self.primes();
-                    let n = format!("{n}{}", "'".repeat(p as usize));
-                    let unit = match self.peek() {
-                        Some(Tok::Name { text, .. }) => {
-                            self.pos += 1;
-                            Some(text.to_ascii_uppercase())
-                        }
-                        _ => None,
-                    };
-                    out.push((n, span, unit));
-                    if !self.eat(',') {
-                        break;
-                    }
-                }
-                Ok(StmtKind::Output(out))
-            }
-            "CODE" => {
-                self.pos += 1;
-                let (kind, _, _) = self.name()?;
-                let mut args = Vec::new();
-                if self.eat('(') {
-                    if !self.is_punct(')') {
-                        args = self.args()?;
-                    }
-                    self.expect(')', "to close the CODE arguments")?;
-                }
-                let file = if self.at_end() {
-                    String::new()
-                } else {
-                    let from = self.toks[self.pos].span.start;
-                    let to = self.toks[self.toks.len() - 1].span.end;
-                    self.pos = self.toks.len();
-                    self.src[from..to].trim().to_string()
-                };
-                Ok(StmtKind::Code { kind: kind.to_ascii_uppercase(), args, file })
-            }
+            "MASS" if !matches!(next, Some(Tok::Punct('('))) => self.mass_stmt(),
+            "INERTIA" if !matches!(next, Some(Tok::Punct('('))) => self.inertia_stmt(),
+            "UNITS" | "UNITSYSTEM" if word == "UNITS" => self.units_stmt(),
+            "INPUT" => self.input_stmt(),
+            "OUTPUT" => self.output_stmt(),
+            "CODE" => self.code_stmt(),
             _ => {
                 if let Some(Tok::Name { text: on, suffix: 0 }) = next {
                     let v = on.to_ascii_uppercase();
@@ -312,6 +208,126 @@ impl<'a> Parser<'a> {
                 self.assignment_or_expr()
             }
         }
+    }
+
+    /// `MASS B = m, ...`.
+    fn mass_stmt(&mut self) -> PResult<StmtKind> {
+        self.pos += 1;
+        let mut out = Vec::new();
+        loop {
+            let (n, _, span) = self.name()?;
+            self.expect('=', "after the body or particle name in MASS")?;
+            out.push((n, span, self.expr()?));
+            if !self.eat(',') {
+                break;
+            }
+        }
+        Ok(StmtKind::Mass(out))
+    }
+
+    /// `INERTIA B, I11, I22, I33[, I12, I23, I31]`.
+    fn inertia_stmt(&mut self) -> PResult<StmtKind> {
+        self.pos += 1;
+        let (body, _, body_span) = self.name()?;
+        // INERTIA B(frame), ...: an optional frame or point in parentheses is not supported.
+        if self.is_punct('(') {
+            return Err(Diagnostic::error(
+                self.span_here(),
+                "INERTIA with a point or frame in parentheses is not supported",
+            )
+            .with_help("give the central moments in the body's own frame: INERTIA B, I11, I22, I33"));
+        }
+        let mut args = Vec::new();
+        while self.eat(',') {
+            args.push(self.expr()?);
+        }
+        Ok(StmtKind::Inertia { body, body_span, args })
+    }
+
+    /// `UNITS NAME = unit, ...`.
+    fn units_stmt(&mut self) -> PResult<StmtKind> {
+        self.pos += 1;
+        let mut out = Vec::new();
+        loop {
+            let (n, _, span) = self.name()?;
+            self.primes();
+            self.expect('=', "after the name in UNITS")?;
+            out.push((n, span, self.expr()?));
+            if !self.eat(',') {
+                break;
+            }
+        }
+        Ok(StmtKind::Units(out))
+    }
+
+    /// `INPUT NAME = value [UNIT], ...`.
+    fn input_stmt(&mut self) -> PResult<StmtKind> {
+        self.pos += 1;
+        let mut out = Vec::new();
+        loop {
+            let start = self.start();
+            let (n, _, _) = self.name()?;
+            let primes = self.primes();
+            self.expect('=', "after the name in INPUT")?;
+            let value = self.expr()?;
+            let unit = match self.peek() {
+                Some(Tok::Name { text, .. }) => {
+                    self.pos += 1;
+                    Some(text.to_ascii_uppercase())
+                }
+                _ => None,
+            };
+            out.push(InputItem { name: n, primes, value, unit, span: start..self.end() });
+            if !self.eat(',') {
+                break;
+            }
+        }
+        Ok(StmtKind::Input(out))
+    }
+
+    /// `OUTPUT NAME [UNIT], ...`.
+    fn output_stmt(&mut self) -> PResult<StmtKind> {
+        self.pos += 1;
+        let mut out = Vec::new();
+        loop {
+            let (n, _, span) = self.name()?;
+            let p = self.primes();
+            let n = format!("{n}{}", "'".repeat(p as usize));
+            let unit = match self.peek() {
+                Some(Tok::Name { text, .. }) => {
+                    self.pos += 1;
+                    Some(text.to_ascii_uppercase())
+                }
+                _ => None,
+            };
+            out.push((n, span, unit));
+            if !self.eat(',') {
+                break;
+            }
+        }
+        Ok(StmtKind::Output(out))
+    }
+
+    /// `CODE KIND(args) FILE`.
+    fn code_stmt(&mut self) -> PResult<StmtKind> {
+        self.pos += 1;
+        let (kind, _, _) = self.name()?;
+        let mut args = Vec::new();
+        if self.eat('(') {
+            if !self.is_punct(')') {
+                args = self.args()?;
+            }
+            self.expect(')', "to close the CODE arguments")?;
+        }
+        let file = if self.at_end() {
+            String::new()
+        } else {
+            let from = self.toks[self.pos].span.start;
+            let to = self.toks[self.toks.len() - 1].span.end;
+            self.pos = self.toks.len();
+            self.src[from..to].trim().to_string()
+        };
+        Ok(StmtKind::Code { kind: kind.to_ascii_uppercase(), args, file })
     }
 
     fn decl_items(&mut self) -> PResult<Vec<DeclItem>> {
