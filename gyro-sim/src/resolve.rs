@@ -80,11 +80,7 @@ fn parameters(scene: &Scene, entry: &ModelEntry) -> Result<Vec<f64>, SceneError>
         values[i] = in_model_units(scene, name, v, info.param_units[i], span)?;
     }
     if let Some(i) = values.iter().position(|v| !v.is_finite()) {
-        return Err(scene.error_at(
-            0..0,
-            format!("parameter `{}` has no value", info.param_names[i]),
-            "set it under [parameters] (the model file's INPUT gives none)",
-        ));
+        return Err(without_value(scene, "parameter", info.param_names[i], values[i], "[parameters]"));
     }
     Ok(values)
 }
@@ -107,13 +103,26 @@ fn initial_state(scene: &Scene, entry: &ModelEntry) -> Result<Vec<f64>, SceneErr
         apply_axle(scene, axle, info, &mut y)?;
     }
     if let Some(i) = y.iter().position(|v| !v.is_finite()) {
-        return Err(scene.error_at(
-            0..0,
-            format!("state `{}` has no initial value", info.state_names[i]),
-            "set it under [initial]",
-        ));
+        return Err(without_value(scene, "state", info.state_names[i], y[i], "[initial]"));
     }
     Ok(y)
+}
+
+/// The error for a parameter or state (`what`) whose value from the model is not finite (the
+/// scene's own values were checked when it was parsed): it names the model the value came
+/// from, at the scene's `model` key, and says where to set one (`table`).
+fn without_value(scene: &Scene, what: &str, name: &str, value: f64, table: &str) -> SceneError {
+    let origin = if scene.model.to_ascii_lowercase().ends_with(".al") {
+        format!("the model file {} gives it no INPUT value", scene.model)
+    } else {
+        format!("the model {} has no default for it", scene.model)
+    };
+    let problem = if value.is_nan() { "has no value".to_string() } else { format!("is {value}") };
+    scene.error_at(
+        scene.model_span.clone(),
+        format!("{what} `{name}` {problem}: {origin}, and the scene sets none"),
+        &format!("set it under {table} ({name} = ...), or give it on the model file's INPUT line"),
+    )
 }
 
 /// The state groups held at unit norm: `[axle]`'s Euler parameters.

@@ -44,11 +44,6 @@ pub fn run(scene: &Scene, out_dir: Option<&Path>) -> Result<RunSummary, RunError
 pub fn run_with(scene: &Scene, registry: &Registry, out_dir: Option<&Path>) -> Result<RunSummary, RunError> {
     let problem = resolve(scene, registry)?;
     let trajectory = solve(&problem, registry)?;
-    let mut written = out_dir.map(|dir| output::write(&trajectory, dir)).transpose()?;
-    if let (Some(view), Some(dir), Some(w)) = (&scene.view, out_dir, written.as_mut()) {
-        let path = dir.join("view.html");
-        output::write_view(&trajectory, view, &path)?;
-        w.figures.push(path);
-    }
+    let written = out_dir.map(|dir| output::write_set(&trajectory, scene.view.as_ref(), dir)).transpose()?;
     Ok(RunSummary { trajectory, written })
 }

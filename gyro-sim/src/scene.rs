@@ -301,24 +301,34 @@ impl Text<'_> {
     ) -> Result<Vec<(String, Value, Span)>, SceneError> {
         let mut out = Vec::new();
         for (k, v) in table.unwrap_or_default() {
-            out.push((k.get_ref().clone(), self.value(&v)?, v.span()));
+            out.push((k.get_ref().clone(), self.value(k.get_ref(), &v)?, v.span()));
         }
         Ok(out)
     }
 
-    /// A number with an optional unit (`"30 deg"`).
-    fn value(&self, v: &Spanned<toml::Value>) -> Result<Value, SceneError> {
+    /// The finite number `key` is given, with an optional unit (`"30 deg"`).
+    fn value(&self, key: &str, v: &Spanned<toml::Value>) -> Result<Value, SceneError> {
         let span = v.span();
-        match v.get_ref() {
-            toml::Value::Float(x) => Ok(Value { number: *x, unit: None }),
-            toml::Value::Integer(i) => Ok(Value { number: *i as f64, unit: None }),
-            toml::Value::String(s) => self.with_unit(s, span),
-            other => Err(self.err(
+        let value = match v.get_ref() {
+            toml::Value::Float(x) => Value { number: *x, unit: None },
+            toml::Value::Integer(i) => Value { number: *i as f64, unit: None },
+            toml::Value::String(s) => self.with_unit(s, span.clone())?,
+            other => {
+                return Err(self.err(
+                    span,
+                    format!("`{other}` is not a number"),
+                    "write a number, or a string like \"30 deg\"",
+                ))
+            }
+        };
+        if !value.number.is_finite() {
+            return Err(self.err(
                 span,
-                format!("`{other}` is not a number"),
-                "write a number, or a string like \"30 deg\"",
-            )),
+                format!("`{key}` is {}, not a finite number", value.number),
+                &format!("give {key} a finite value (NaN and infinity are not values)"),
+            ));
         }
+        Ok(value)
     }
 
     /// The `[axle]` table: `quaternion` names four states, `rates` three; spin, precession and
@@ -353,13 +363,14 @@ impl Text<'_> {
                 "add quaternion = [\"E4\", \"E1\", \"E2\", \"E3\"] (the model's Euler-parameter states, scalar first, body -> space)",
             ));
         }
-        let value =
-            |v: Option<Spanned<toml::Value>>| v.map(|v| self.value(&v).map(|x| (x, v.span()))).transpose();
+        let value = |key: &str, v: Option<Spanned<toml::Value>>| {
+            v.map(|v| self.value(key, &v).map(|x| (x, v.span()))).transpose()
+        };
         let out = Axle {
-            tilt: value(a.tilt)?,
-            spin: value(a.spin)?,
-            precession: value(a.precession)?,
-            nutation: value(a.nutation)?,
+            tilt: value("tilt", a.tilt)?,
+            spin: value("spin", a.spin)?,
+            precession: value("precession", a.precession)?,
+            nutation: value("nutation", a.nutation)?,
             quaternion,
             rates,
             quaternion_span,

@@ -181,3 +181,43 @@ fn units_compare_regardless_of_case_and_spacing() {
     );
     assert!(e.starts_with("bad.toml:5:5: error: `Y` is in N*M, not NM"), "{e}");
 }
+
+/// NaN and infinite values in a scene are refused at the key (they used to reach the model and
+/// be reported as "has no value" at line 1:1).
+#[test]
+fn nan_and_infinite_values_are_refused_at_their_key() {
+    let head = "model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n";
+    let e = error(&format!("{head}[parameters]\nY = nan\n"));
+    assert!(e.starts_with("bad.toml:5:5: error: `Y` is NaN, not a finite number"), "{e}");
+    assert!(e.contains("help: give Y a finite value"), "{e}");
+    let e = error(&format!("{head}[initial]\nU3 = -inf\n"));
+    assert!(e.starts_with("bad.toml:5:6: error: `U3` is -inf, not a finite number"), "{e}");
+    let e = error(&format!("{head}[parameters]\nZ = \"inf N*m\"\n"));
+    assert!(e.starts_with("bad.toml:5:5: error: `Z` is inf, not a finite number"), "{e}");
+}
+
+/// A parameter the model file gives no INPUT value is named with where its value should have
+/// come from, at the scene's `model` key.
+#[test]
+fn a_parameter_without_a_value_names_the_model_file() {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("no_input_value");
+    std::fs::create_dir_all(&dir).unwrap();
+    let gimbal = include_str!("../../kane-model/models/gimbal_gyroscope.al");
+    let model: String =
+        gimbal.lines().filter(|l| !l.starts_with("INPUT M1")).map(|l| format!("{l}\n")).collect();
+    std::fs::write(dir.join("no_m1.al"), model).unwrap();
+    std::fs::write(dir.join("scene.toml"), "model = \"no_m1.al\"\nt_final = 0.1\noutput_step = 0.05\n")
+        .unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_gyro-sim"))
+        .args(["run", "scene.toml", "--engine", "instant", "--out", "out"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stderr).to_string() + &String::from_utf8_lossy(&out.stdout);
+    assert!(!out.status.success(), "{text}");
+    assert!(
+        text.contains("scene.toml:1:9: error: parameter `M1` has no value: the model file no_m1.al gives it no INPUT value, and the scene sets none"),
+        "{text}"
+    );
+    assert!(text.contains("help: set it under [parameters] (M1 = ...)"), "{text}");
+}

@@ -159,3 +159,69 @@ fn the_kane_command_fails_on_a_contradiction_and_prints_warnings() {
     assert!(err.contains("implausible value of M"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Deleting `Q2' = U2` from the gimbal used to check: Q2 silently became a generalized speed.
+/// Now it is an error naming Q2 at the SIMPROT that turns C with it (issue 14).
+#[test]
+fn a_coordinate_without_a_kinematic_equation_is_an_error() {
+    let gimbal = model("gimbal_gyroscope.al");
+    let src: String =
+        gimbal.lines().filter(|l| !l.starts_with("Q2' = U2")).map(|l| format!("{l}\n")).collect();
+    assert_eq!(src.lines().count() + 1, gimbal.lines().count());
+    let report = match lang::check("gimbal.al", &src) {
+        Err(r) => r,
+        Ok(c) => panic!("checked without Q2' = U2: {:?}", c.model.equations.map(|e| e.speeds.len())),
+    };
+    let text = report.to_string();
+    let line = line_of(&src, "SIMPROT(B, C, -1, Q2)");
+    assert!(
+        text.contains(&format!("gimbal.al:{line}:1: error: Q2 orients C but has no kinematic equation")),
+        "{text}"
+    );
+    assert!(text.contains("add Q2' = <a speed> before KANE()"), "{text}");
+    // A point placed by a variable without one is named too.
+    let src = "NEWTONIAN N\nPOINTS O, P\nPARTICLES R\nVARIABLES X', U'\nCONSTANTS M\nP_O_R> = X*N1>\nV_O_N> = 0>\nV_R_N> = DT(P_O_R>)\nMASS R = M\nZERO = FR() + FRSTAR()\nKANE()\n";
+    let text = match lang::check("slide.al", src) {
+        Err(r) => r.to_string(),
+        Ok(_) => panic!("checked without X' = U"),
+    };
+    assert!(text.contains("slide.al:6:1: error: X places R from O but has no kinematic equation"), "{text}");
+}
+
+/// A load line given twice adds up: a warning naming both lines (issue 14).
+#[test]
+fn a_load_given_twice_is_a_warning_naming_both_lines() {
+    let gimbal = model("gimbal_gyroscope.al");
+    let torque = gimbal.lines().find(|l| l.starts_with("TORQUE_B>")).unwrap();
+    let src = gimbal.replace(torque, &format!("{torque}\nTORQUE_B> = Y*A2>"));
+    let first = line_of(&src, "TORQUE_B>");
+    let checked = lang::check("gimbal.al", &src).unwrap_or_else(|r| panic!("{r}"));
+    let text = checked.warnings.to_string();
+    assert!(
+        text.contains(&format!(
+            "gimbal.al:{}:1: warning: TORQUE_B> is given on line {first} and again on line {} (the same load statement): the two add up",
+            first + 1,
+            first + 1
+        )),
+        "{text}"
+    );
+    assert!(text.contains(&format!("gimbal.al:{first}:1: note: TORQUE_B> first given here")), "{text}");
+    // The same FORCE command twice, and a force assigned twice with different values.
+    let base = "NEWTONIAN N\nPOINTS O\nPARTICLES P\nVARIABLES X', U'\nCONSTANTS M, F\nX' = U\nP_O_P> = X*N1>\nV_O_N> = 0>\nV_P_N> = DT(P_O_P>)\nMASS P = M\n";
+    for (loads, what) in [
+        ("FORCE(P, F*N1>)\nFORCE(P, F*N1>)\n", "the same load statement"),
+        ("FORCE_P> = F*N1>\nFORCE_P> = 2*F*N1>\n", "a second assignment of the load"),
+    ] {
+        let src = format!("{base}{loads}ZERO = FR() + FRSTAR()\nKANE()\n");
+        let text = lang::check("slide.al", &src).unwrap_or_else(|r| panic!("{r}")).warnings.to_string();
+        assert!(
+            text.contains(&format!(
+                "slide.al:12:1: warning: FORCE_P> is given on line 11 and again on line 12 ({what})"
+            )),
+            "{text}"
+        );
+    }
+    // Forces on two points, or a FORCE command adding a different force, are no warning.
+    let src = format!("{base}FORCE(P, F*N1>)\nFORCE(P, M*N1>)\nZERO = FR() + FRSTAR()\nKANE()\n");
+    assert!(lang::check("slide.al", &src).unwrap().warnings.diagnostics.is_empty());
+}

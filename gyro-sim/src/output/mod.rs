@@ -1,15 +1,17 @@
 //! Results: in comes a trajectory; out go a CSV and a plot in display units, never
-//! half-written.
+//! half-written, and put in place as one set (see `set`).
 
 mod csv_file;
 mod plot;
+mod set;
 mod view;
 mod write;
 
 pub use csv_file::write_csv;
 pub use plot::{write_elevation, write_plot, write_trace, write_work_precision};
+pub use set::SET_FILES;
 pub use view::{write_view, ArrowView, BodyView, Orientation, Shape, TraceView, ViewError, ViewSpec};
-pub use write::{column_name, display_table, write, WriteError, Written};
+pub use write::{column_name, display_table, write, write_set, WriteError, Written};
 
 /// One column of results.
 #[derive(Clone, Debug)]
@@ -52,14 +54,15 @@ impl Table {
     }
 }
 
-/// Writes `bytes` to `path` through a temporary file in the same folder and a rename.
+/// Writes `path` through a temporary file in the same folder, named for this process and call,
+/// and a rename.
 pub(crate) fn write_atomically(
     path: &std::path::Path,
     write: impl FnOnce(&std::path::Path) -> Result<(), String>,
 ) -> Result<(), String> {
     // The temporary keeps the real extension last: encoders choose the format from it.
     let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("output");
-    let tmp = path.with_file_name(format!(".partial-{name}"));
+    let tmp = path.with_file_name(set::unique_temporary(name));
     let result =
         write(&tmp).and_then(|_| std::fs::rename(&tmp, path).map_err(|e| format!("{}: {e}", path.display())));
     if result.is_err() {

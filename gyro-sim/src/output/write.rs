@@ -6,7 +6,8 @@ use std::path::{Path, PathBuf};
 
 use thiserror::Error;
 
-use super::{write_csv, write_elevation, write_plot, write_trace, Column, Table};
+use super::set::Staging;
+use super::{write_csv, write_elevation, write_plot, write_trace, write_view, Column, Table, ViewSpec};
 use crate::trajectory::Trajectory;
 
 /// Why results could not be written.
@@ -36,25 +37,37 @@ pub struct Written {
     pub figures: Vec<PathBuf>,
 }
 
-/// Writes `trajectory` into `dir` (made if missing): the CSV and the plot, each atomically.
+/// Writes `trajectory` into `dir` (made if missing): the CSV and the plots, as one set.
 pub fn write(trajectory: &Trajectory, dir: &Path) -> Result<Written, WriteError> {
-    std::fs::create_dir_all(dir)
-        .map_err(|e| WriteError::Folder { path: dir.to_path_buf(), message: e.to_string() })?;
+    write_set(trajectory, None, dir)
+}
+
+/// Writes `trajectory` into `dir` (made if missing): the CSV, the plots and, with `view`, the
+/// 3-D view, staged and then put in place together (files of an earlier set this one lacks are
+/// removed); on an error the folder keeps its earlier set.
+pub fn write_set(
+    trajectory: &Trajectory,
+    view: Option<&ViewSpec>,
+    dir: &Path,
+) -> Result<Written, WriteError> {
+    let folder = |message: String| WriteError::Folder { path: dir.to_path_buf(), message };
+    let staging = Staging::new(dir).map_err(folder)?;
     let table = display_table(trajectory);
-    let csv = dir.join("trajectory.csv");
-    write_csv(&table, &csv).map_err(WriteError::File)?;
-    let plot = dir.join("trajectory.png");
-    write_plot(&table, &plot).map_err(WriteError::File)?;
+    write_csv(&table, &staging.path("trajectory.csv")).map_err(WriteError::File)?;
+    write_plot(&table, &staging.path("trajectory.png")).map_err(WriteError::File)?;
     let mut figures = Vec::new();
-    let elevation = dir.join("elevation.png");
-    if write_elevation(&table, &elevation).map_err(WriteError::File)? {
-        figures.push(elevation);
+    if write_elevation(&table, &staging.path("elevation.png")).map_err(WriteError::File)? {
+        figures.push(dir.join("elevation.png"));
     }
-    let trace = dir.join("axle_trace.png");
-    if write_trace(&table, &trace).map_err(WriteError::File)? {
-        figures.push(trace);
+    if write_trace(&table, &staging.path("axle_trace.png")).map_err(WriteError::File)? {
+        figures.push(dir.join("axle_trace.png"));
     }
-    Ok(Written { csv, plot, figures })
+    if let Some(view) = view {
+        write_view(trajectory, view, &staging.path("view.html"))?;
+        figures.push(dir.join("view.html"));
+    }
+    staging.commit().map_err(WriteError::File)?;
+    Ok(Written { csv: dir.join("trajectory.csv"), plot: dir.join("trajectory.png"), figures })
 }
 
 /// The trajectory in display units, with CSV headers naming them.

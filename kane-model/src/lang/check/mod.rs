@@ -1,11 +1,14 @@
 //! `kane check`: a model file loaded, then checked for contradictions between the kinematics it
-//! assigns and the kinematics its positions and orientations imply (errors), and for physically
-//! implausible INPUT values (warnings).
+//! assigns and the kinematics its positions and orientations imply (errors), for coordinates
+//! without a kinematic equation (errors), and for loads given twice and physically implausible
+//! INPUT values (warnings).
 //!
 //! In: a file name and its source. Out: the loaded model with its warnings, or a report of every
 //! error (with the warnings).
 
 mod consistency;
+mod coordinates;
+mod loads;
 mod marker;
 mod warnings;
 mod zero;
@@ -29,6 +32,8 @@ pub struct Checked {
 pub fn check(file: &str, source: &str) -> Result<Checked, Report> {
     let mut model = super::load(file, source)?;
     let mut diagnostics = consistency::consistency(&mut model, source);
+    diagnostics.extend(coordinates::coordinates_without_kinematics(&model));
+    diagnostics.extend(loads::repeated_loads(&model, source));
     diagnostics.extend(warnings::input_warnings(&model));
     diagnostics.sort_by_key(|d| d.span.start);
     let report = Report { file: file.to_string(), source: source.to_string(), diagnostics };

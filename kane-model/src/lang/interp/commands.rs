@@ -111,6 +111,7 @@ impl Interpreter {
         if upper == "FORCE" {
             let p = self.point_arg(on)?;
             self.add_to_force(p, &v, false, &e.span)?;
+            self.record_load(format!("FORCE_{}>", self.model.point_name(p)), &e.span, false);
             if let Some(from) = from {
                 let q = self.point_arg(from)?;
                 self.add_to_force(q, &v, true, &e.span)?;
@@ -118,12 +119,18 @@ impl Interpreter {
         } else {
             let f = self.frame_arg(on)?;
             self.add_to_torque(f, &v, false, &e.span)?;
+            self.record_load(format!("TORQUE_{}>", self.model.frame_name(f)), &e.span, false);
             if let Some(from) = from {
                 let g = self.frame_arg(from)?;
                 self.add_to_torque(g, &v, true, &e.span)?;
             }
         }
         Ok(())
+    }
+
+    /// Records a statement adding to the load `name` (for the duplicate-load check).
+    pub(crate) fn record_load(&mut self, name: String, span: &Span, assigned: bool) {
+        self.sources.loads.push(super::sources::LoadSource { name, span: span.clone(), assigned });
     }
 
     /// The resultant force at `p` plus `v` (minus `v` with `negate`).

@@ -32,7 +32,7 @@ use crate::mechanics::{BodyId, FrameId, KaneEquations, Model, ParticleId, PointI
 use super::ast::{Expr, Stmt};
 use super::diagnostic::Diagnostic;
 use super::token::Span;
-pub(crate) use sources::Sources;
+pub(crate) use sources::{LoadSource, Sources};
 use value::Value;
 
 /// What a name stands for.

@@ -169,8 +169,14 @@ impl Interpreter {
             // An angular acceleration set by name is a definition, kept as a value.
             (Builtin::AngularAcceleration(..), Value::Vector(_)) => return Ok(false),
             // Assigning a load again adds to it, as SymPy's reading of Autolev does.
-            (Builtin::Force(p), Value::Vector(f)) => self.add_to_force(p, f, false, span)?,
-            (Builtin::Torque(fr), Value::Vector(t)) => self.add_to_torque(fr, t, false, span)?,
+            (Builtin::Force(p), Value::Vector(f)) => {
+                self.add_to_force(p, f, false, span)?;
+                self.record_load(format!("FORCE_{}>", self.model.point_name(p)), span, true);
+            }
+            (Builtin::Torque(fr), Value::Vector(t)) => {
+                self.add_to_torque(fr, t, false, span)?;
+                self.record_load(format!("TORQUE_{}>", self.model.frame_name(fr)), span, true);
+            }
             (_, other) => {
                 return Err(Diagnostic::error(
                     span.clone(),

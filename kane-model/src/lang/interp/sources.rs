@@ -25,6 +25,20 @@ pub(crate) struct Sources {
     pub(crate) orientations: FxHashMap<FrameId, Span>,
     /// MASS items and INERTIA statements, by upper-cased body or particle name.
     pub(crate) inertial: FxHashMap<String, Span>,
+    /// Every load given, in order: `FORCE_P>` / `TORQUE_B>` and where (assignments, and the
+    /// FORCE and TORQUE commands).
+    pub(crate) loads: Vec<LoadSource>,
+}
+
+/// One statement adding to a load.
+#[derive(Clone, Debug)]
+pub(crate) struct LoadSource {
+    /// The load, as an assignment names it: `FORCE_P>` or `TORQUE_B>`.
+    pub(crate) name: String,
+    /// Where.
+    pub(crate) span: Span,
+    /// An assignment (`TORQUE_B> = ...`), not a FORCE or TORQUE command.
+    pub(crate) assigned: bool,
 }
 
 impl Sources {

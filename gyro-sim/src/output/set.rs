@@ -1,0 +1,98 @@
+//! Output sets: a run's files (CSV, figures, view) are written into a staging folder of their
+//! own inside the output folder, named for the process and a counter, and then put in place
+//! together under the folder's lock, the files of an earlier set that this one lacks removed.
+//! Concurrent runs into one folder never share a temporary name and never interleave their
+//! renames; a run that fails while writing leaves the previous set as it was.
+
+use std::fs::{self, File};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// The files a run may put in its folder.
+pub const SET_FILES: &[&str] =
+    &["trajectory.csv", "trajectory.png", "elevation.png", "axle_trace.png", "view.html"];
+
+/// The lock file that serialises putting sets in place.
+const LOCK_FILE: &str = ".gyro-sim.lock";
+
+static COUNTER: AtomicU64 = AtomicU64::new(0);
+
+/// `.partial-{pid}-{n}-{name}`: a name no other process, and no other call here, uses.
+pub(crate) fn unique_temporary(name: &str) -> String {
+    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+    format!(".partial-{}-{n}-{name}", std::process::id())
+}
+
+/// Files staged for a folder; removed unless [`Staging::commit`] put them in place.
+pub(crate) struct Staging {
+    dir: PathBuf,
+    stage: PathBuf,
+    committed: bool,
+}
+
+impl Staging {
+    /// A new staging folder inside `dir` (both made as needed).
+    pub(crate) fn new(dir: &Path) -> Result<Staging, String> {
+        let stage = dir.join(unique_temporary("set"));
+        fs::create_dir_all(&stage).map_err(|e| format!("{}: {e}", stage.display()))?;
+        Ok(Staging { dir: dir.to_path_buf(), stage, committed: false })
+    }
+
+    /// Where to write the file that will be `dir/name`.
+    pub(crate) fn path(&self, name: &str) -> PathBuf {
+        self.stage.join(name)
+    }
+
+    /// Puts every staged file in place under the folder's lock and removes the set files it
+    /// lacks, so the folder holds one run's set.
+    pub(crate) fn commit(mut self) -> Result<(), String> {
+        let fail = |p: &Path, e: std::io::Error| format!("{}: {e}", p.display());
+        let lock_path = self.dir.join(LOCK_FILE);
+        let lock = File::create(&lock_path).map_err(|e| fail(&lock_path, e))?;
+        lock.lock().map_err(|e| fail(&lock_path, e))?;
+        for name in SET_FILES {
+            let (staged, target) = (self.stage.join(name), self.dir.join(name));
+            if staged.exists() {
+                fs::rename(&staged, &target).map_err(|e| fail(&target, e))?;
+            } else if target.exists() {
+                fs::remove_file(&target).map_err(|e| fail(&target, e))?;
+            }
+        }
+        self.committed = true;
+        let _ = fs::remove_dir_all(&self.stage);
+        Ok(())
+    }
+}
+
+impl Drop for Staging {
+    fn drop(&mut self) {
+        if !self.committed {
+            let _ = fs::remove_dir_all(&self.stage);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn temporaries_are_unique_and_an_uncommitted_set_leaves_nothing() {
+        assert_ne!(unique_temporary("a.csv"), unique_temporary("a.csv"));
+        assert!(unique_temporary("a.csv").starts_with(&format!(".partial-{}-", std::process::id())));
+        let dir = std::env::temp_dir().join(format!("gyro-sim-set-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("trajectory.csv"), "old").unwrap();
+        let staging = Staging::new(&dir).unwrap();
+        std::fs::write(staging.path("trajectory.csv"), "new").unwrap();
+        drop(staging);
+        let names: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
+        assert_eq!(names, ["trajectory.csv"]);
+        assert_eq!(std::fs::read_to_string(dir.join("trajectory.csv")).unwrap(), "old");
+        let staging = Staging::new(&dir).unwrap();
+        std::fs::write(staging.path("trajectory.csv"), "new").unwrap();
+        staging.commit().unwrap();
+        assert_eq!(std::fs::read_to_string(dir.join("trajectory.csv")).unwrap(), "new");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
