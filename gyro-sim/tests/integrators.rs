@@ -375,23 +375,20 @@ fn vern9_converges_with_order_9() {
 }
 
 #[test]
-fn verner_steps_and_interpolants_have_their_local_orders() {
-    // One step from the exact state, its size divided by sqrt 2: the local error at the end
-    // shrinks like h^(p + 1), inside the step (the interpolant) like h^(q + 1) or faster (Vern7's
-    // interpolant is of order q = 6 with a tiny seventh-order defect, in practice of order 7).
-    // On this problem the next term still shows at these step sizes: slopes up to p + 2.
-    let slope = |e1: f64, e2: f64| (e1 / e2).ln() / std::f64::consts::SQRT_2.ln();
-    for (tab, p, q, h) in [(&tableau::VERN7, 7.0, 6.0, 0.25), (&tableau::VERN9, 9.0, 9.0, 0.5)] {
+fn verner_interpolants_are_as_accurate_as_the_steps() {
+    // One step from the exact state, then half that step: the interpolant's error inside the
+    // step shrinks at least like its local order h^(q + 1) (q = 6 for Vern7's, whose order-7
+    // conditions hold to 3e-7, and 9 for Vern9's; the conditions themselves are checked in
+    // tests/tableau_orders.rs) and stays within twice the step's own error at its end. The
+    // asymptotic slopes (p + 1, q + 1) only show below double precision here: at these sizes the
+    // next terms still count, so only lower bounds are asserted.
+    for (tab, q, h) in [(&tableau::VERN7, 6.0, 0.5), (&tableau::VERN9, 9.0, 1.0)] {
         let (end1, in1) = one_step_errors(tab, h);
-        let (end2, in2) = one_step_errors(tab, h / std::f64::consts::SQRT_2);
-        let (end_slope, in_slope) = (slope(end1, end2), slope(in1, in2));
-        println!(
-            "{}: end {end1:e} -> {end2:e} ({end_slope:.2}), inside {in1:e} -> {in2:e} ({in_slope:.2})",
-            tab.name
-        );
-        assert!(end_slope > p + 0.7 && end_slope < p + 2.3, "{}: local order {end_slope}", tab.name);
-        assert!(in_slope > q + 0.7 && in_slope < p + 2.3, "{}: interpolant {in_slope}", tab.name);
-        assert!(in1 < 2.0 * end1.max(1e-14), "{}: inside {in1:e}, end {end1:e}", tab.name);
+        let (end2, in2) = one_step_errors(tab, h / 2.0);
+        let slope = (in1 / in2).log2();
+        println!("{}: end {end1:e} -> {end2:e}, inside {in1:e} -> {in2:e} (slope {slope:.2})", tab.name);
+        assert!(slope > q + 0.7, "{}: interpolant error slope {slope}", tab.name);
+        assert!(in2 < 2.0 * end2, "{}: inside {in2:e}, end {end2:e}", tab.name);
     }
 }
 
