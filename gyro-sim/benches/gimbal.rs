@@ -1,7 +1,10 @@
-//! Gimbal benchmarks: generated `rhs` per call, and Trial 3 to t = 5 at three tolerances.
+//! Gimbal benchmarks: generated `rhs` per call, Trial 3 to t = 5 at three tolerances, and Trial 3
+//! over a range of tolerances for the high-order methods (`trial3_equal_error`), to compare them
+//! at equal error.
 //!
 //! `cargo bench -p gyro-sim --bench gimbal`; it also prints RHS evaluations and the error against
-//! the independent reference for each case. Figures are in BENCHMARKS.md.
+//! the independent reference for each case (for `trial3_equal_error` against a tight reference
+//! computed here). Figures are in BENCHMARKS.md.
 
 use std::hint::black_box;
 use std::ops::ControlFlow;
@@ -188,7 +191,7 @@ fn benches(c: &mut Criterion) {
     let reference = reference();
     let reference = reference.as_slice();
     let mut g = c.benchmark_group("trial3_to_t5");
-    for tab in [&tableau::DOPRI5, &tableau::DOP853] {
+    for tab in [&tableau::DOPRI5, &tableau::DOP853, &tableau::VERN7, &tableau::VERN9] {
         for tol in [1e-6, 1e-9, 1e-12] {
             let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
             let (evals, err) = run(m, reference);
@@ -220,6 +223,55 @@ fn benches(c: &mut Criterion) {
         let (evals, err) = run(m, reference);
         println!("rk4 step {step:e}: {evals} RHS evaluations, largest relative error {err:.2e}");
         g.bench_function(format!("rk4_step_{step:e}"), |b| b.iter(|| black_box(run(m, reference))));
+    }
+    g.finish();
+    equal_error(c);
+}
+
+/// Trial 3's states at its output times, `t` first as in the reference file, from one run.
+fn trajectory(method: Method) -> Vec<Vec<f64>> {
+    let (sys, y0, times) = trial3();
+    let mut rows = Vec::new();
+    let mut k = 0;
+    integrate(&sys, 0.0, &y0, &times, method, |_, y| {
+        rows.push([&[times[k]][..], y].concat());
+        k += 1;
+        ControlFlow::Continue(())
+    })
+    .unwrap();
+    rows
+}
+
+/// The largest difference of two trajectories in the measure of [`run`].
+fn difference(a: &[Vec<f64>], b: &[Vec<f64>]) -> f64 {
+    let pairs = a.iter().zip(b).flat_map(|(ra, rb)| ra[1..].iter().zip(&rb[1..]));
+    pairs.map(|(x, y)| (x - y).abs() / y.abs().max(1.0)).fold(0.0, f64::max)
+}
+
+/// DOP853, Vern7 and Vern9 on Trial 3 from tolerance 1e-6 to 1e-14, each run's error measured
+/// against DOP853 at 1e-15 (Vern9 at 1e-15 agrees with it, printed first): the time at a given
+/// error follows by interpolating between tolerances.
+fn equal_error(c: &mut Criterion) {
+    let tight = |tab| Method::Adaptive(tab, Tolerances { rtol: 1e-15, atol: 1e-15 });
+    let reference = trajectory(tight(&tableau::DOP853));
+    let check = trajectory(tight(&tableau::VERN9));
+    let file = self::reference();
+    println!(
+        "tight reference: dop853 and vern9 at 1e-15 differ by {:.2e}; the file's reference by {:.2e}",
+        difference(&check, &reference),
+        difference(&file, &reference)
+    );
+    let mut g = c.benchmark_group("trial3_equal_error");
+    for tab in [&tableau::DOP853, &tableau::VERN7, &tableau::VERN9] {
+        for exp in 6..=14 {
+            let tol = 10f64.powi(-exp);
+            let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
+            let (evals, err) = run(m, &reference);
+            println!("{} tol {tol:e}: {evals} RHS evaluations, error {err:.2e} (tight reference)", tab.name);
+            g.bench_function(format!("{}_tol_{tol:e}", tab.name), |b| {
+                b.iter(|| black_box(run(m, &reference)))
+            });
+        }
     }
     g.finish();
 }

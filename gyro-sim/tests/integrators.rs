@@ -34,9 +34,12 @@ fn error_at_one(method: Method) -> f64 {
 
 #[test]
 fn observed_order_matches_each_tableau() {
-    for (tab, order, h) in
-        [(&tableau::RK4, 4.0, 0.1), (&tableau::DOPRI5, 5.0, 0.1), (&tableau::DOP853, 8.0, 0.25)]
-    {
+    for (tab, order, h) in [
+        (&tableau::RK4, 4.0, 0.1),
+        (&tableau::DOPRI5, 5.0, 0.1),
+        (&tableau::DOP853, 8.0, 0.25),
+        (&tableau::VERN7, 7.0, 0.25),
+    ] {
         let e1 = error_at_one(Method::Fixed(tab, h));
         let e2 = error_at_one(Method::Fixed(tab, h / 2.0));
         let observed = (e1 / e2).log2();
@@ -46,7 +49,7 @@ fn observed_order_matches_each_tableau() {
 
 #[test]
 fn adaptive_error_follows_the_tolerance() {
-    for tab in [&tableau::DOPRI5, &tableau::DOP853] {
+    for tab in [&tableau::DOPRI5, &tableau::DOP853, &tableau::VERN7, &tableau::VERN9] {
         let mut last = 1.0;
         for tol in [1e-6, 1e-8, 1e-10] {
             let e = error_at_one(Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol }));
@@ -208,7 +211,7 @@ fn through_stepper(method: Method, times: &[f64], limit: usize) -> (Vec<[f64; 2]
 fn the_stepper_by_hand_gives_integrate_s_numbers() {
     let times: Vec<f64> = (0..=500).map(|i| f64::from(i) * 0.02).collect();
     let tol = Tolerances { rtol: 1e-9, atol: 1e-9 };
-    for tab in [&tableau::DOPRI5, &tableau::DOP853] {
+    for tab in [&tableau::DOPRI5, &tableau::DOP853, &tableau::VERN7, &tableau::VERN9] {
         let m = Method::Adaptive(tab, tol);
         let (by_integrate, stats) = through_integrate(m, &times, usize::MAX);
         let (by_hand, hand_stats) = through_stepper(m, &times, usize::MAX);
@@ -275,7 +278,9 @@ fn breaking_early_is_ok_with_the_cost_so_far() {
 fn unknown_method_names_are_none() {
     assert!(by_name("euler").is_none());
     assert!(by_name("").is_none());
-    for (name, adaptive, order) in [("dop853", true, 8), ("dopri5", true, 5), ("rk4", false, 4)] {
+    for (name, adaptive, order) in
+        [("dop853", true, 8), ("dopri5", true, 5), ("vern7", true, 7), ("vern9", true, 9), ("rk4", false, 4)]
+    {
         let info = by_name(name).unwrap();
         assert_eq!((info.name(), info.adaptive, info.order()), (name, adaptive, order));
     }
@@ -366,4 +371,89 @@ fn a_fixed_step_below_the_time_resolution_underflows() {
     let rk4 = Method::Fixed(&tableau::RK4, 1e-30);
     let r = integrate(&Oscillator, 1.0, &[0.0, 1.0], &[2.0], rk4, |_, _| ControlFlow::Continue(()));
     assert!(matches!(r, Err(OdeError::StepSizeUnderflow { time, .. }) if time == 1.0), "{r:?}");
+}
+
+/// The largest error of one fixed step of size `h` of `tab` from the exact `y(0.5)` of
+/// [`Gaussian`]: at the step's end, and of its continuous extension at a few points inside.
+fn one_step_errors(tab: &'static tableau::Tableau, h: f64) -> (f64, f64) {
+    let (t0, exact) = (0.5, |t: f64| (-t * t).exp());
+    let mut stepper = ErkStepper::new(&Gaussian, t0, &[exact(t0)], Method::Fixed(tab, h)).unwrap();
+    stepper.set_stop_time(t0 + h);
+    stepper.step().unwrap();
+    let end = (stepper.y()[0] - exact(t0 + h)).abs();
+    let mut y = [0.0];
+    let inside = [0.2, 0.45, 0.7, 0.9]
+        .iter()
+        .map(|theta| {
+            stepper.interpolate(t0 + theta * h, &mut y).unwrap();
+            (y[0] - exact(t0 + theta * h)).abs()
+        })
+        .fold(0.0, f64::max);
+    (end, inside)
+}
+
+/// The error at `t = 10` of [`Oscillator`] (ten periods' worth of steps more than at 1).
+fn error_at_ten(method: Method) -> f64 {
+    let mut last = [0.0; 2];
+    integrate(&Oscillator, 0.0, &[0.0, 1.0], &[10.0], method, |_, y| {
+        last.copy_from_slice(y);
+        ControlFlow::Continue(())
+    })
+    .unwrap();
+    ((last[0] - 10f64.sin()).powi(2) + (last[1] - 10f64.cos()).powi(2)).sqrt()
+}
+
+#[test]
+fn vern9_converges_with_order_9() {
+    // Ninth order needs errors well above rounding for a clean slope: 25 to 50 steps to t = 10.
+    let tab = &tableau::VERN9;
+    let (e1, e2) = (error_at_ten(Method::Fixed(tab, 0.4)), error_at_ten(Method::Fixed(tab, 0.2)));
+    let observed = (e1 / e2).log2();
+    println!("vern9 global errors {e1:e} {e2:e}: order {observed:.2}");
+    assert!((observed - 9.0).abs() < 0.3, "vern9: observed order {observed}");
+}
+
+#[test]
+fn verner_interpolants_are_as_accurate_as_the_steps() {
+    // One step from the exact state, then half that step: the interpolant's error inside the
+    // step shrinks at least like its local order h^(q + 1) (q = 6 for Vern7's, whose order-7
+    // conditions hold to 3e-7, and 9 for Vern9's; the conditions themselves are checked in
+    // tests/tableau_orders.rs) and stays within twice the step's own error at its end. The
+    // asymptotic slopes (p + 1, q + 1) only show below double precision here: at these sizes the
+    // next terms still count, so only lower bounds are asserted.
+    for (tab, q, h) in [(&tableau::VERN7, 6.0, 0.5), (&tableau::VERN9, 9.0, 1.0)] {
+        let (end1, in1) = one_step_errors(tab, h);
+        let (end2, in2) = one_step_errors(tab, h / 2.0);
+        let slope = (in1 / in2).log2();
+        println!("{}: end {end1:e} -> {end2:e}, inside {in1:e} -> {in2:e} (slope {slope:.2})", tab.name);
+        assert!(slope > q + 0.7, "{}: interpolant error slope {slope}", tab.name);
+        assert!(in2 < 2.0 * end2, "{}: inside {in2:e}, end {end2:e}", tab.name);
+    }
+}
+
+#[test]
+fn verner_dense_output_is_accurate_between_steps() {
+    // 231 output times on [0, 3] of the Gaussian: interpolated values within the tolerance and
+    // shrinking with it (a wrong extra stage or `d` row would not).
+    let times: Vec<f64> = (0..=230).map(|i| i as f64 * 0.013).collect();
+    for tab in [&tableau::VERN7, &tableau::VERN9] {
+        let run = |tol: f64| {
+            let mut worst: f64 = 0.0;
+            let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
+            let stats = integrate(&Gaussian, 0.0, &[1.0], &times, m, |t, y| {
+                worst = worst.max((y[0] - (-t * t).exp()).abs());
+                ControlFlow::Continue(())
+            })
+            .unwrap();
+            (worst, stats.steps)
+        };
+        let mut first = None;
+        for tol in [1e-6, 1e-8, 1e-10, 1e-12] {
+            let (worst, steps) = run(tol);
+            println!("{} tol {tol:e}: worst {worst:e} in {steps} steps", tab.name);
+            assert!(worst < tol && steps < 100, "{} tol {tol:e}: {worst:e}, {steps} steps", tab.name);
+            let e6 = *first.get_or_insert(worst);
+            assert!(tol > 1e-12 || worst < 1e-4 * e6, "{}: {worst:e} against {e6:e}", tab.name);
+        }
+    }
 }

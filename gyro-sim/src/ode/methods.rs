@@ -5,7 +5,7 @@
 //! compile time, and every row takes the unrolled steps.
 
 use super::dense::DenseRounding;
-use super::tableau::{Tableau, DOP853, DOPRI5, RK4};
+use super::tableau::{Tableau, DOP853, DOPRI5, RK4, VERN7, VERN9};
 
 /// Error tolerances in Autolev's sense: each component's local error is kept below
 /// `atol + rtol * |y|` (RMS over components).
@@ -69,6 +69,8 @@ impl MethodInfo {
 pub static METHODS: &[MethodInfo] = &[
     MethodInfo { tableau: &DOP853, adaptive: true },
     MethodInfo { tableau: &DOPRI5, adaptive: true },
+    MethodInfo { tableau: &VERN7, adaptive: true },
+    MethodInfo { tableau: &VERN9, adaptive: true },
     MethodInfo { tableau: &RK4, adaptive: false },
 ];
 
@@ -85,7 +87,7 @@ pub fn default_method() -> &'static MethodInfo {
     by_name(DEFAULT_METHOD).unwrap_or(&METHODS[0])
 }
 
-/// The names for an error message: `methods: dop853, dopri5 (adaptive), rk4 (fixed step)`.
+/// The names for an error message: `methods: dop853, dopri5, vern7, vern9 (adaptive), rk4 (fixed step)`.
 pub fn methods_help() -> String {
     let names = |adaptive: bool| {
         let names: Vec<&str> =
@@ -170,6 +172,6 @@ mod tests {
         assert!(std::ptr::eq(by_name("rk4").unwrap().tableau, &RK4));
         assert!(by_name("euler").is_none());
         assert_eq!(default_method().name(), "dopri5");
-        assert_eq!(methods_help(), "methods: dop853, dopri5 (adaptive), rk4 (fixed step)");
+        assert_eq!(methods_help(), "methods: dop853, dopri5, vern7, vern9 (adaptive), rk4 (fixed step)");
     }
 }

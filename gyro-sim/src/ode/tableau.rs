@@ -1,7 +1,10 @@
 //! Butcher tableaux as data, each citing its source. In: nothing; out: the coefficients of each
 //! method (stages, weights, error weights, continuous extension) and its step-size control.
 
+mod verner;
+
 use super::dense::{DenseOutput, DenseRounding};
+pub use verner::{VERN7, VERN9};
 
 /// An explicit Runge-Kutta method: `c`, the strictly lower `a`, weights `b`, and for embedded
 /// pairs the error weights `e = b - b_hat`.

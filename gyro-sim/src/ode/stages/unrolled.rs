@@ -16,7 +16,7 @@ use crate::ode::tableau::Tableau;
 use crate::ode::System;
 
 /// The most stages an unrolled step has (the `seq!` bounds of the stage loops below).
-const MAX_STAGES: usize = 13;
+const MAX_STAGES: usize = 17;
 
 /// Row `M` of [`METHODS`] as a compile-time tableau; None past the table's end (rows from
 /// 8 on, the `seq!` bound of the row loops) or for more than [`MAX_STAGES`] stages: those
@@ -71,7 +71,7 @@ impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
         let Some(tab) = Row::<M>::TAB else { return };
         let stages = tab.stages_before_error();
         let y = &y[..N];
-        seq!(I in 1..13 {
+        seq!(I in 1..17 {
             if I < stages {
                 let input = self.fixed_combine(tab.a[I], y, h);
                 self.tmp[..N].copy_from_slice(&input);
@@ -84,12 +84,12 @@ impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
         self.ynew[..N].copy_from_slice(&ynew);
     }
 
-    /// [`Work::combine`] for a compile-time weight row `w` (at most 13 stages).
+    /// [`Work::combine`] for a compile-time weight row `w` (at most 17 stages).
     #[inline(always)]
     fn fixed_combine(&self, w: &[f64], y: &[f64], h: f64) -> [f64; N] {
         let last = w.len() - 1;
         let mut acc = [0.0f64; N];
-        seq!(J in 0..13 {
+        seq!(J in 0..17 {
             if J < last && w[J] != 0.0 {
                 let kj = &self.k[J * N..(J + 1) * N];
                 for m in 0..N {
@@ -110,11 +110,11 @@ impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
         acc
     }
 
-    /// `sum_j w_j k_j` over the `s` stages, `w` a compile-time weight row (at most 13 stages).
+    /// `sum_j w_j k_j` over the `s` stages, `w` a compile-time weight row (at most 17 stages).
     #[inline(always)]
     fn fixed_sum(&self, s: usize, w: &[f64]) -> [f64; N] {
         let mut acc = [0.0f64; N];
-        seq!(J in 0..13 {
+        seq!(J in 0..17 {
             if J < s && w[J] != 0.0 {
                 let kj = &self.k[J * N..(J + 1) * N];
                 for m in 0..N {
