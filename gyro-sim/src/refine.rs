@@ -52,7 +52,7 @@ pub(crate) fn refine(
 
 /// The largest difference of two runs' rows (their values 1..`compared`) relative to
 /// max(1, |value|).
-fn largest_difference(a: &[Vec<f64>], b: &[Vec<f64>], compared: usize) -> f64 {
+pub(crate) fn largest_difference(a: &[Vec<f64>], b: &[Vec<f64>], compared: usize) -> f64 {
     let mut worst: f64 = 0.0;
     for (ra, rb) in a.iter().zip(b) {
         for (x, y) in ra[1..compared].iter().zip(&rb[1..compared]) {

@@ -133,13 +133,8 @@ fn run(base: &Problem, method: Method, registry: &Registry) -> Result<Trajectory
 /// The largest difference of `t` from `reference` over rows and columns, relative to
 /// max(1, |reference|).
 pub fn largest_error(t: &Trajectory, reference: &Trajectory) -> f64 {
-    let mut worst: f64 = 0.0;
-    for (row, want) in t.rows.iter().zip(&reference.rows) {
-        for (x, r) in row[1..].iter().zip(&want[1..]) {
-            worst = worst.max((x - r).abs() / r.abs().max(1.0));
-        }
-    }
-    worst
+    let width = reference.columns.len() + 1;
+    crate::refine::largest_difference(&t.rows, &reference.rows, width)
 }
 
 /// The points as CSV text: `method,setting,error,median_ms,steps,rhs_evals,failure` (a failed

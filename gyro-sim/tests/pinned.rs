@@ -5,10 +5,7 @@
 use std::path::Path;
 use std::process::Command;
 
-/// FNV-1a over the bytes: stable across Rust versions (unlike `DefaultHasher`).
-fn fnv1a(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, b| (h ^ u64::from(*b)).wrapping_mul(0x100_0000_01b3))
-}
+use gyro_sim::compiled::content_hash as fnv1a;
 
 /// Runs a scene with the command; returns its statistics line and the CSV's hash.
 fn run_scene(scene: &str) -> String {
@@ -30,7 +27,7 @@ fn run_scene(scene: &str) -> String {
     let stats: String = first[start..].split(", ").take(2).collect::<Vec<_>>().join(", ");
     let csv = std::fs::read(out.join("trajectory.csv")).unwrap();
     let _ = std::fs::remove_dir_all(&out);
-    format!("{scene}: {stats}; csv {} bytes, fnv1a {:016x}", csv.len(), fnv1a(&csv))
+    format!("{scene}: {stats}; csv {} bytes, fnv1a {}", csv.len(), fnv1a(&csv))
 }
 
 #[test]
@@ -86,7 +83,7 @@ fn integrator_statistics_are_pinned() {
                 })
                 .unwrap();
                 lines.push(format!(
-                    "{name} {} {tol:e}: {} steps, {} rejected, {} evaluations, fnv1a {:016x}",
+                    "{name} {} {tol:e}: {} steps, {} rejected, {} evaluations, fnv1a {}",
                     tab.name,
                     s.steps,
                     s.rejected,
@@ -101,7 +98,7 @@ fn integrator_statistics_are_pinned() {
             std::ops::ControlFlow::Continue(())
         })
         .unwrap();
-        lines.push(format!("{name} rk4 0.03: {} steps, fnv1a {:016x}", s.steps, fnv1a(&bits)));
+        lines.push(format!("{name} rk4 0.03: {} steps, fnv1a {}", s.steps, fnv1a(&bits)));
     }
     insta::assert_snapshot!(lines.join("\n"));
 }

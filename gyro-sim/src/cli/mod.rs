@@ -17,7 +17,7 @@ pub use model_scene::{parse_set, scene_text, ModelRunArgs};
 pub use summary::print_summary;
 
 use crate::model_file::{FileRun, ModelFile};
-use crate::registry::{Engine, ModelEntry, Registry};
+use crate::registry::{ModelEntry, Registry};
 use crate::scene::Scene;
 
 /// Simulate models derived with Kane's method.
@@ -265,8 +265,9 @@ fn finish(scene: &Scene, registry: &Registry, args: &RunArgs) -> Result<ExitCode
     let out = args.out.as_deref();
     let summary = crate::run::run_with(scene, registry, out).map_err(|e| failed(&e))?;
     print_summary(&scene.title, &summary);
-    let engine = registry.find(&scene.model).map_or(Engine::Compiled, |e| e.engine);
-    println!("model {} ran {}", registry.find(&scene.model).map_or("?", |e| e.info.name), engine.label());
+    if let Some(entry) = registry.find(&scene.model) {
+        println!("model {} ran {}", entry.info.name, entry.engine.label());
+    }
     if args.repeat > 0 {
         print_timing(scene, registry, args.repeat)?;
     }
