@@ -109,6 +109,41 @@ fn a_rerun_resumes_where_a_killed_run_stopped() {
 }
 
 #[test]
+fn a_killed_sweep_keeps_its_finished_members_and_a_rerun_completes_it() {
+    let (whole, killed) = (folder("kill_whole"), folder("kill_partial"));
+    let big = |out: &Path| {
+        let out = out.to_str().unwrap().to_string();
+        let args = ["sweep", TRIAL1, "--vary", "Y=0:20:40", "--vary", "U3=10:100:10 rad/s", "--out", &out];
+        args.map(String::from)
+    };
+    ok(gyro_sim(&big(&whole).iter().map(String::as_str).collect::<Vec<_>>()).output().unwrap());
+    let mut child = gyro_sim(&big(&killed).iter().map(String::as_str).collect::<Vec<_>>())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let journal = killed.join("sweep.journal.csv");
+    let lines = || std::fs::read_to_string(&journal).map(|t| t.lines().count()).unwrap_or(0);
+    while lines() < 20 && child.try_wait().unwrap().is_none() {
+        std::thread::sleep(std::time::Duration::from_millis(2));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    let kept = lines().saturating_sub(1);
+    assert!((19..400).contains(&kept), "the kill came after {kept} of 400 members: make the sweep longer");
+    assert!(!killed.join("sweep.csv").exists(), "sweep.csv is written only when the sweep ends");
+    let args = big(&killed);
+    let said = ok(gyro_sim(&args.iter().map(String::as_str).collect::<Vec<_>>()).output().unwrap());
+    let finished = kept.saturating_sub(1)..=kept;
+    let done = said.split(" already done").next().unwrap().rsplit(' ').next().unwrap();
+    assert!(finished.contains(&done.parse::<usize>().unwrap()), "{said} (journal had {kept})");
+    assert_eq!(csv(&killed), csv(&whole));
+    assert!(!journal.exists(), "the journal is removed once sweep.csv holds its rows");
+    let timing = std::fs::read_to_string(killed.join("timing.csv")).unwrap();
+    assert_eq!(timing.lines().count(), 401);
+}
+
+#[test]
 fn failing_members_are_rows_and_samples_repeat_from_their_seed() {
     let dir = folder("failing");
     let args = ["sweep", TRIAL1, "--vary", "NOT_A_NAME=0:1:2", "--out", dir.to_str().unwrap()];
@@ -135,4 +170,38 @@ fn failing_members_are_rows_and_samples_repeat_from_their_seed() {
     };
     assert_eq!(lhs(&a, "3"), lhs(&b, "3"));
     assert_ne!(lhs(&a, "3"), lhs(&c, "4"));
+}
+
+#[test]
+fn a_metric_is_drawn_over_one_or_two_varied_values_and_unknown_names_are_named() {
+    let dir = folder("plot");
+    sweep(&dir, &[]);
+    let d = dir.to_str().unwrap();
+    let said = ok(gyro_sim(&["sweep-plot", d, "--metric", "max_ap_m_per_s2"]).output().unwrap());
+    assert!(said.contains("12 members, 0 failed"), "{said}");
+    let one = dir.join("over_y.png");
+    ok(gyro_sim(&[
+        "sweep-plot",
+        d,
+        "--metric",
+        "final_q1_deg",
+        "--over",
+        "Y",
+        "--out",
+        one.to_str().unwrap(),
+    ])
+    .output()
+    .unwrap());
+    for png in [dir.join("max_ap_m_per_s2.png"), one] {
+        let bytes = std::fs::read(&png).unwrap();
+        assert!(bytes.starts_with(b"\x89PNG") && bytes.len() > 10_000, "{}", png.display());
+    }
+    let bad = gyro_sim(&["sweep-plot", d, "--metric", "max_q9"]).output().unwrap();
+    let text = String::from_utf8_lossy(&bad.stderr);
+    assert!(
+        !bad.status.success() && text.contains("no column `max_q9`") && text.contains("max_q2_deg"),
+        "{text}"
+    );
+    let bad = gyro_sim(&["sweep-plot", d, "--metric", "max_q1_deg", "--over", "Q7"]).output().unwrap();
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("no column `Q7`; the columns are: Y, U3"));
 }

@@ -7,6 +7,7 @@ mod bench;
 mod model_scene;
 mod summary;
 mod sweep;
+mod sweep_plot;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -50,6 +51,21 @@ enum Command {
         /// The shards' --out folders.
         #[arg(required = true)]
         shards: Vec<PathBuf>,
+    },
+    /// Draws a column of DIR/sweep.csv (e.g. max_q2_deg) over one or two varied values:
+    /// writes DIR/METRIC.png (or --out), failed members as crosses.
+    SweepPlot {
+        /// The sweep's folder.
+        dir: PathBuf,
+        /// The column to draw.
+        #[arg(long)]
+        metric: String,
+        /// A varied name for an axis, once or twice (default: the sweep's first one or two).
+        #[arg(long)]
+        over: Vec<String>,
+        /// The PNG to write.
+        #[arg(long)]
+        out: Option<PathBuf>,
     },
 }
 
@@ -155,6 +171,11 @@ pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCod
             sweep::sweep_command(&args, &registry)
         }
         Command::SweepMerge { out, shards } => sweep::merge_command(&out, &shards),
+        Command::SweepPlot { dir, metric, over, out } => {
+            let args =
+                sweep_plot::SweepPlotArgs { dir: &dir, metric: &metric, over: &over, out: out.as_deref() };
+            sweep_plot::sweep_plot_command(&args)
+        }
     };
     match result {
         Ok(code) => code,

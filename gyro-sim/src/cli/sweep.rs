@@ -28,7 +28,8 @@ pub struct SweepArgs<'a> {
     pub out: &'a Path,
 }
 
-/// Runs the members of this shard not yet in `out/sweep.csv` and rewrites it with them.
+/// Runs the members of this shard not yet in `out/sweep.csv` (or its journal, after a kill),
+/// journaling each as it ends, and rewrites `sweep.csv` and `timing.csv` with all of them.
 pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCode, String> {
     let scene = Scene::load(args.scene).map_err(|e| e.to_string())?;
     let registry = super::with_file_model(&scene, registry.clone())?;
@@ -41,28 +42,28 @@ pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCo
     let names: Vec<String> = args.vary.iter().map(|r| r.name.clone()).collect();
     let header = sweep::table::header(&names, &sweep::value_columns(&scene, &registry)?);
     let csv_path = args.out.join("sweep.csv");
-    let (old_header, mut rows) = sweep::read_rows(&csv_path)?;
+    let (old_header, rows) = sweep::read_rows(&csv_path)?;
     if !old_header.is_empty() && old_header != header {
         return Err(format!(
             "{} holds another sweep's rows (other columns): give another --out",
             csv_path.display()
         ));
     }
-    let done: Vec<usize> = rows.iter().filter_map(|r| sweep::table::member_of(r)).collect();
-    let todo: Vec<Member> = members.into_iter().filter(|m| !done.contains(&m.index)).collect();
-    let bar = ProgressBar::new(todo.len() as u64).with_style(
-        ProgressStyle::with_template("{bar:40} {pos}/{len} members, {eta} left")
-            .map_err(|e| e.to_string())?,
-    );
-    let results = sweep::run_members(&scene, args.vary, &todo, &registry, &|| bar.inc(1));
-    bar.finish_and_clear();
-    let n_values = header.len() - names.len() - 4;
-    let failed = results.iter().filter(|(r, _)| r.status != "ok").count();
-    rows.extend(results.iter().map(|(r, _)| sweep::table::cells(r, n_values)));
-    rows.sort_by_key(|r| sweep::table::member_of(r));
     std::fs::create_dir_all(args.out).map_err(|e| format!("{}: {e}", args.out.display()))?;
-    sweep::write_rows(&csv_path, &header, &rows)?;
-    write_timing(&args.out.join("timing.csv"), &results)?;
+    let journaled = sweep::read_journal(args.out, &header)?;
+    let done: Vec<usize> = rows
+        .iter()
+        .chain(journaled.iter().map(|(r, _)| r))
+        .filter_map(|r| sweep::table::member_of(r))
+        .collect();
+    let todo: Vec<Member> = members.into_iter().filter(|m| !done.contains(&m.index)).collect();
+    let journal = sweep::Journal::open(args.out, &header)?;
+    let results =
+        run_journaled(&scene, args.vary, &todo, &registry, &journal, header.len() - names.len() - 4)?;
+    let journaled = sweep::read_journal(args.out, &header)?;
+    finish(args.out, &header, rows, &journaled)?;
+    journal.remove()?;
+    let failed = results.iter().filter(|(r, _)| r.status != "ok").count();
     println!(
         "{}: {} members run ({} failed, named in their rows), {} already done; wrote {}",
         scene.title,
@@ -74,12 +75,52 @@ pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCo
     Ok(ExitCode::SUCCESS)
 }
 
-/// Appends the new wall times to `timing.csv` (member, wall_ms), in member order.
-fn write_timing(path: &Path, results: &[(sweep::SweepRow, f64)]) -> Result<(), String> {
-    let (_, mut rows) = sweep::read_rows(path)?;
-    rows.extend(results.iter().map(|(r, ms)| vec![r.member.to_string(), format!("{ms:.4}")]));
+/// Runs `todo` with a progress bar, appending each finished member to `journal`.
+fn run_journaled(
+    scene: &Scene,
+    vary: &[Range],
+    todo: &[Member],
+    registry: &Registry,
+    journal: &sweep::Journal,
+    n_values: usize,
+) -> Result<Vec<(sweep::SweepRow, f64)>, String> {
+    let bar = ProgressBar::new(todo.len() as u64).with_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} members, {eta} left")
+            .map_err(|e| e.to_string())?,
+    );
+    let journal_error = std::sync::Mutex::new(None::<String>);
+    let record = |row: &sweep::SweepRow, ms: f64| {
+        if let Err(e) = journal.record(&sweep::table::cells(row, n_values), ms) {
+            journal_error.lock().map(|mut slot| slot.get_or_insert(e).clone()).ok();
+        }
+        bar.inc(1);
+    };
+    let results = sweep::run_members(scene, vary, todo, registry, &record);
+    bar.finish_and_clear();
+    match journal_error.into_inner().ok().flatten() {
+        Some(e) => Err(format!("the sweep's journal could not be written: {e}")),
+        None => Ok(results),
+    }
+}
+
+/// Writes `sweep.csv` (the earlier rows and the journaled ones, member order) and `timing.csv`
+/// (the earlier wall times and the journaled ones).
+fn finish(
+    out: &Path,
+    header: &[String],
+    mut rows: Vec<Vec<String>>,
+    journaled: &sweep::Journaled,
+) -> Result<(), String> {
+    rows.extend(journaled.iter().map(|(r, _)| r.clone()));
     rows.sort_by_key(|r| sweep::table::member_of(r));
-    sweep::write_rows(path, &["member".to_string(), "wall_ms".to_string()], &rows)
+    rows.dedup_by_key(|r| sweep::table::member_of(r));
+    sweep::write_rows(&out.join("sweep.csv"), header, &rows)?;
+    let timing_path = out.join("timing.csv");
+    let (_, mut timing) = sweep::read_rows(&timing_path)?;
+    timing.extend(journaled.iter().map(|(r, ms)| vec![r[0].clone(), format!("{ms:.4}")]));
+    timing.sort_by_key(|r| sweep::table::member_of(r));
+    timing.dedup_by_key(|r| sweep::table::member_of(r));
+    sweep::write_rows(&timing_path, &["member".to_string(), "wall_ms".to_string()], &timing)
 }
 
 /// The 0-based shard and the count: `--shard K/N` (K from 1), else Slurm's array task

@@ -8,7 +8,10 @@ mod view;
 mod write;
 
 pub use csv_file::write_csv;
-pub use plot::{write_elevation, write_plot, write_trace, write_work_precision};
+pub use plot::{
+    write_elevation, write_plot, write_sweep_metric, write_trace, write_work_precision, MemberPoint,
+    MetricAxes,
+};
 pub use set::SET_FILES;
 pub use view::{write_view, ArrowView, BodyView, Orientation, Shape, TraceView, ViewError, ViewSpec};
 pub use write::{column_name, display_table, write, write_set, WriteError, Written};

@@ -4,6 +4,7 @@
 //! of each written column, the cost) and its wall time kept apart, so that the rows depend on
 //! the inputs alone. Members run in parallel; one member's failure is its row, never the end.
 
+mod journal;
 mod plan;
 pub mod table;
 
@@ -11,6 +12,7 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
+pub use journal::{read_journal, Journal, Journaled, JOURNAL_FILE};
 pub use plan::{grid, latin_hypercube, parse_range, Member, Range};
 pub use table::{merge, read_rows, write_rows, SweepRow};
 
@@ -38,22 +40,23 @@ pub fn value_columns(scene: &Scene, registry: &Registry) -> Result<Vec<String>, 
     Ok(out)
 }
 
-/// Runs `members` of `scene` varied over `ranges`, in parallel, calling `done` after each; the
-/// rows in member order, each with its wall time in milliseconds.
+/// Runs `members` of `scene` varied over `ranges`, in parallel, calling `done` with each
+/// member's row and wall time (ms) as it ends; the rows in member order, with their wall times.
 pub fn run_members(
     scene: &Scene,
     ranges: &[Range],
     members: &[Member],
     registry: &Registry,
-    done: &(dyn Fn() + Sync),
+    done: &(dyn Fn(&SweepRow, f64) + Sync),
 ) -> Vec<(SweepRow, f64)> {
     let mut rows: Vec<(SweepRow, f64)> = members
         .par_iter()
         .map(|m| {
             let start = Instant::now();
             let row = run_member(scene, ranges, m, registry);
-            done();
-            (row, start.elapsed().as_secs_f64() * 1e3)
+            let ms = start.elapsed().as_secs_f64() * 1e3;
+            done(&row, ms);
+            (row, ms)
         })
         .collect();
     rows.sort_by_key(|(r, _)| r.member);

@@ -5,6 +5,7 @@
 mod elevation;
 mod panel;
 mod series;
+mod sweep_metric;
 mod trace;
 mod work_precision;
 
@@ -15,6 +16,7 @@ use plotters::style::FontStyle;
 
 pub use elevation::write_elevation;
 pub use series::write_plot;
+pub use sweep_metric::{write_sweep_metric, MemberPoint, MetricAxes};
 pub use trace::write_trace;
 pub use work_precision::write_work_precision;
 
