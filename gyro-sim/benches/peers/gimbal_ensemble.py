@@ -1,0 +1,188 @@
+"""Ensemble throughput at equal error, side by side in one run: a Monte Carlo sweep of the paper's
+gimbal (Trial 3, t = 0..5 s; Y and Z in 0..20 N m, U3 in 50..150 rad/s; Latin hypercube) run by
+`gyro-sim sweep` and by heyoka (the same members, read from gyro-sim's sweep.csv): heyoka's
+ensemble propagation (threads) and its SIMD batch mode (taylor_adaptive_batch, one thread).
+
+Not needed by the build or the tests. Needs heyoka and numpy (pip install heyoka) and
+target/release/gyro-sim (cargo build --release -p gyro-sim). Run from the repository root:
+
+    python3 gyro-sim/benches/peers/gimbal_ensemble.py [--members 10000] [--rounds 3]
+
+Error, measured the same way for every tool: the largest over the first 200 members and the six
+states of |final - reference| / max(1, |reference|), the reference being heyoka at tol 1e-16 on
+the same equations (the hand derivation of tests/tests/gimbal_hand_derivation.rs, which equals
+the generated model). Time: the wall time of the whole ensemble (gyro-sim: the sweep command,
+its members' setup and CSV writing included; heyoka: propagation only, compilation excluded).
+Throughput per core: members / time / cores used. Each tool's time at gyro-sim's errors is
+interpolated in log-log between its tolerances; tools alternate round by round; medians.
+"""
+import argparse
+import csv
+import os
+import subprocess
+import tempfile
+import time
+from math import pi
+from pathlib import Path
+
+import heyoka as hy
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[3]
+GYRO_SIM = ROOT / "target" / "release" / "gyro-sim"
+M1, M2, M3, H1, H2, H3, L, W = 2.0, 2.0, 50.0, 0.6, 0.5, 0.4, 0.3, 0.025
+I1 = 2 / 3 * M1 * (H1 * W - W**2)
+J1 = 2 / 3 * M2 * (H2 * W - W**2)
+J2 = M2 * H2**2 / 6 - M2 * (H2 - W) ** 2 / 6
+K1 = M3 * L**2 / 2
+K2 = M3 * L**2 / 4 + M3 * H3**2 / 12
+T_FINAL = 5.0
+SCENE = """title = "gimbal ensemble (Trial 3 equations)"
+model = "gimbal_gyroscope"
+t_final = 5.0
+output_step = 5.0
+outputs = ["Q1", "Q2", "Q3", "U1", "U2", "U3"]
+[integrator]
+method = "{method}"
+rtol = {tol}
+atol = {tol}
+[parameters]
+Y = 10.0
+Z = 10.0
+[initial]
+U3 = "100 rad/s"
+"""
+
+
+def gimbal_system():
+    """The gimbal's equations in heyoka (block solve of the hand-derived mass matrix)."""
+    q1, q2, q3, u1, u2, u3 = hy.make_vars("q1", "q2", "q3", "u1", "u2", "u3")
+    y, z = hy.par[0], hy.par[1]
+    s, c = hy.sin(q2), hy.cos(q2)
+    a = I1 + J1 * c * c + J2 * s * s + K1 * c * c + K2 * s * s
+    b = K1 * c
+    f1 = -y + 2 * (J1 + K1 - J2 - K2) * s * c * u1 * u2 + K1 * s * u2 * u3
+    f2 = -z + (J2 + K2 - J1 - K1) * s * c * u1 * u1 - K1 * s * u1 * u3
+    f3 = K1 * s * u1 * u2
+    det = a * K1 - b * b
+    return [(q1, u1), (q2, u2), (q3, u3), (u1, (K1 * f1 - b * f3) / det), (u2, f2 / (J1 + K2)), (u3, (a * f3 - b * f1) / det)]
+
+
+def run_sweep(members, tol, method, out, threads):
+    scene = out / f"scene-{method}-{tol}.toml"
+    scene.write_text(SCENE.format(method=method, tol=tol))
+    folder = out / f"sweep-{method}-{tol}-{threads}"
+    subprocess.run(["rm", "-rf", str(folder)], check=True)
+    args = [str(GYRO_SIM), "sweep", str(scene), "--vary", "Y=0:20", "--vary", "Z=0:20", "--vary", "U3=50:150 rad/s",
+            "--samples", str(members), "--seed", "1", "--out", str(folder)]
+    env = dict(os.environ, RAYON_NUM_THREADS=str(threads))
+    start = time.perf_counter()
+    subprocess.run(args, check=True, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    wall = time.perf_counter() - start
+    rows = list(csv.DictReader(open(folder / "sweep.csv")))
+    assert all(r["status"] == "ok" for r in rows), "a member failed"
+    final = np.array([[float(r[f"final_q{i}_deg"]) * pi / 180 for i in (1, 2, 3)]
+                      + [float(r[f"final_u{i}_rad_per_s"]) for i in (1, 2, 3)] for r in rows])
+    varied = np.array([[float(r["Y"]), float(r["Z"]), float(r["U3"])] for r in rows])
+    return wall, varied, final
+
+
+def heyoka_ensemble(ta, varied, workers):
+    def gen(t, i):
+        t.time = 0.0
+        t.state[:] = [0, 0, 0, 0, 0, varied[i, 2]]
+        t.pars[:] = varied[i, :2]
+        return t
+
+    start = time.perf_counter()
+    res = hy.ensemble_propagate_grid(ta, [0.0, T_FINAL], len(varied), gen, max_workers=workers)
+    wall = time.perf_counter() - start
+    return wall, np.array([r[-1][-1] for r in res])
+
+
+def heyoka_batch(tab, varied):
+    n, b = len(varied), tab.batch_size
+    out = np.empty((n, 6))
+    start = time.perf_counter()
+    for k in range(0, n, b):
+        chunk = varied[k:k + b]
+        m = len(chunk)
+        pad = np.vstack([chunk, np.repeat(chunk[-1:], b - m, axis=0)])
+        tab.set_time(0.0)
+        tab.state[:] = 0.0
+        tab.state[5, :] = pad[:, 2]
+        tab.pars[:] = pad[:, :2].T
+        res = tab.propagate_grid(np.repeat([[0.0], [T_FINAL]], b, axis=1))
+        out[k:k + m] = res[1][-1].T[:m]
+    return time.perf_counter() - start, out
+
+
+def error(final, ref):
+    k = len(ref)
+    return float(np.max(np.abs(final[:k] - ref) / np.maximum(1.0, np.abs(ref))))
+
+
+def at_error(points, goal):
+    """Time at error `goal`, interpolated in log-log between measured (error, time) points."""
+    pts = sorted(points)
+    for (e0, t0), (e1, t1) in zip(pts, pts[1:]):
+        if e0 <= goal <= e1 and e0 > 0:
+            f = (np.log(goal) - np.log(e0)) / (np.log(e1) - np.log(e0)) if e1 > e0 else 0.0
+            return float(np.exp(np.log(t0) + f * (np.log(t1) - np.log(t0))))
+    return float("nan")
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("--members", type=int, default=10000)
+    p.add_argument("--rounds", type=int, default=3)
+    p.add_argument("--method", default="dop853")
+    args = p.parse_args()
+    cores = os.cpu_count()
+    work = Path(tempfile.mkdtemp(prefix="gimbal-ensemble-"))
+    ours_tols = [1e-7, 1e-9, 1e-11]
+    hy_tols = [1e-6, 1e-8, 1e-10, 1e-12, 1e-14]
+    _, varied, _ = run_sweep(args.members, 1e-9, args.method, work, cores)
+    sysm = gimbal_system()
+    ref_ta = hy.taylor_adaptive(sysm, [0.0] * 6, tol=1e-16, pars=[0.0, 0.0])
+    ref = heyoka_ensemble(ref_ta, varied[:200], 1)[1]
+    tas = {t: hy.taylor_adaptive(sysm, [0.0] * 6, tol=t, pars=[0.0, 0.0]) for t in hy_tols}
+    b = hy.recommended_simd_size()
+    tabs = {t: hy.taylor_adaptive_batch(sysm, np.zeros((6, b)), tol=t, pars=np.zeros((2, b))) for t in hy_tols}
+    times = {}
+    errors = {}
+    for _ in range(args.rounds):
+        for tol in ours_tols:
+            for threads in (1, cores):
+                wall, _, final = run_sweep(args.members, tol, args.method, work, threads)
+                times.setdefault(("gyro-sim", threads, tol), []).append(wall)
+                errors[("gyro-sim", tol)] = error(final, ref)
+        for tol in hy_tols:
+            for workers in (1, cores):
+                wall, final = heyoka_ensemble(tas[tol], varied, workers)
+                times.setdefault(("heyoka ensemble", workers, tol), []).append(wall)
+                errors[("heyoka", tol)] = error(final, ref)
+            wall, final = heyoka_batch(tabs[tol], varied)
+            times.setdefault((f"heyoka batch {b}", 1, tol), []).append(wall)
+            errors[(f"heyoka batch {b}", tol)] = error(final, ref)
+    med = {k: float(np.median(v)) for k, v in times.items()}
+    print(f"{args.members} members, {cores} cores, {args.rounds} rounds (medians); error over 200 members vs heyoka tol 1e-16")
+    print("| gyro-sim tol | error | tool | threads | time (s) | members/s/core | ratio to gyro-sim |")
+    print("|---|---|---|---|---|---|---|")
+    for tol in ours_tols:
+        err = errors[("gyro-sim", tol)]
+        for threads in (1, cores):
+            ours = med[("gyro-sim", threads, tol)]
+            rows = [("gyro-sim", ours)]
+            rows.append(("heyoka ensemble", at_error([(errors[("heyoka", t)], med[("heyoka ensemble", threads, t)]) for t in hy_tols], err)))
+            if threads == 1:
+                name = f"heyoka batch {b}"
+                rows.append((name, at_error([(errors[(name, t)], med[(name, 1, t)]) for t in hy_tols], err)))
+            for tool, secs in rows:
+                rate = args.members / secs / threads
+                print(f"| {tol:.0e} | {err:.1e} | {tool} | {threads} | {secs:.3f} | {rate:,.0f} | {secs / ours:.2f} |")
+    print("heyoka errors by tol:", {t: f"{errors[('heyoka', t)]:.1e}" for t in hy_tols})
+
+
+if __name__ == "__main__":
+    main()
