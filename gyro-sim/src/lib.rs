@@ -7,6 +7,7 @@
 //! [`run`] chains them; [`models`] holds the models compiled into the simulator.
 #![warn(missing_docs)]
 
+pub mod batch;
 pub mod cli;
 pub mod compiled;
 pub mod initial;

@@ -12,20 +12,20 @@ const SAFETY: f64 = 0.9;
 /// `alpha = 1/order - 0.75 beta` (Hairer, Norsett, Wanner, Solving ODEs I, section IV.2; the
 /// tableau's [`StepControl`]), in logarithms: one `ln` and one `exp` per accepted step instead
 /// of two `powf`.
-pub(super) struct PiControl {
+pub(crate) struct PiControl {
     alpha: f64,
     control: StepControl,
     ln_err_old: f64,
 }
 
 impl PiControl {
-    pub(super) fn new(order: u32, control: StepControl) -> Self {
+    pub(crate) fn new(order: u32, control: StepControl) -> Self {
         let alpha = 1.0 / order as f64 - 0.75 * control.beta;
         Self { alpha, control, ln_err_old: 1e-4f64.ln() }
     }
 
     /// The step-size factor after an accepted step with error `err <= 1`.
-    pub(super) fn accepted(&mut self, err: f64) -> f64 {
+    pub(crate) fn accepted(&mut self, err: f64) -> f64 {
         let ln_err = err.max(1e-10).ln();
         let fac = (-self.alpha * ln_err + self.control.beta * self.ln_err_old).exp();
         self.ln_err_old = ln_err.max(1e-4f64.ln());
@@ -33,7 +33,7 @@ impl PiControl {
     }
 
     /// The step-size factor after a rejected step (`err > 1` or not finite).
-    fn rejected(&self, err: f64) -> f64 {
+    pub(crate) fn rejected(&self, err: f64) -> f64 {
         if err.is_finite() {
             (SAFETY * (-self.alpha * err.ln()).exp()).max(self.control.min_factor)
         } else {

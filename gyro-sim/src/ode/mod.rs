@@ -16,9 +16,11 @@ mod stages;
 mod stepper;
 pub mod tableau;
 
+pub(crate) use control::PiControl;
 pub use dense::{DenseOutput, DenseRounding};
 pub use integrate::{integrate, integrate_limited};
 pub use methods::{by_name, default_method, methods_help, Method, MethodInfo, Tolerances, METHODS};
+pub(crate) use stages::blended_norm;
 pub use stepper::{ErkStepper, Stats, StopReason, DEFAULT_MAX_STEPS};
 use thiserror::Error;
 
@@ -64,6 +66,14 @@ pub enum OdeError {
         time: f64,
         /// The limit.
         max: usize,
+    },
+    /// A lock-step batch was given a method without an error estimate.
+    #[error(
+        "{method} has no error estimate: batch lanes need an embedded pair (dop853, dopri5, vern7, vern9)"
+    )]
+    NoErrorEstimate {
+        /// The tableau's name.
+        method: &'static str,
     },
     /// A value before the end of a step was asked of a method without a continuous extension.
     #[error("{method} has no dense output: only the state at the end of a step is known")]

@@ -188,11 +188,7 @@ impl<'a, S: System + ?Sized, const N: usize> Work<'a, S, N> {
                 sum3 += r3 * r3;
             }
         }
-        match e3 {
-            None => h.abs() * (sum5 / n.max(1) as f64).sqrt(),
-            Some(_) if sum5 == 0.0 && sum3 == 0.0 => 0.0,
-            Some(_) => h.abs() * sum5 / (n.max(1) as f64 * (sum5 + 0.01 * sum3)).sqrt(),
-        }
+        blended_norm(h, n, sum5, e3.map(|_| sum3))
     }
 
     /// Completes a step about to be accepted, ending at `t_new`: the first-same-as-last stage
@@ -225,6 +221,18 @@ impl<'a, S: System + ?Sized, const N: usize> Work<'a, S, N> {
             self.stats.rhs_evals += 1;
             self.start_ready = false;
         }
+    }
+}
+
+/// The error norm from the sums of squared scaled estimates over `n` states: the RMS of the
+/// embedded estimate `sum5`, or with DOP853's third-order sum `sum3`, Hairer's blend
+/// `|h| sum5 / sqrt(n (sum5 + 0.01 sum3))`.
+#[inline(always)]
+pub(crate) fn blended_norm(h: f64, n: usize, sum5: f64, sum3: Option<f64>) -> f64 {
+    match sum3 {
+        None => h.abs() * (sum5 / n.max(1) as f64).sqrt(),
+        Some(sum3) if sum5 == 0.0 && sum3 == 0.0 => 0.0,
+        Some(sum3) => h.abs() * sum5 / (n.max(1) as f64 * (sum5 + 0.01 * sum3)).sqrt(),
     }
 }
 

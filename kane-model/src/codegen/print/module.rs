@@ -92,6 +92,39 @@ fn input_tokens(params: &[Ident], generic: bool) -> impl Fn(Input) -> TokenStrea
     }
 }
 
+/// How each input is read in `rhs_lanes`: parameters and derived quantities from slices of the
+/// number type (one value per lane).
+fn lane_input_tokens(input: Input) -> TokenStream {
+    match input {
+        Input::Time => quote!(t),
+        Input::State(i) => quote!(y[#i]),
+        Input::Param(i) => quote!(p[#i]),
+        Input::Derived(i) => quote!(d[#i]),
+        Input::Rate(i) => quote!(rates[#i]),
+    }
+}
+
+/// `rhs_lanes`: the right-hand side with parameters and derived quantities in the number type.
+fn rhs_lanes_fn(program: &Program) -> TokenStream {
+    let style = SectionStyle {
+        scalar: Scalar::Generic(format_ident!("T")),
+        input: &lane_input_tokens,
+        prefix: "__v",
+    };
+    let (body, values) = section::print(&program.rhs, &style);
+    let idx: Vec<usize> = (0..values.len()).collect();
+    quote! {
+        /// `dy = f(t, y)` with the parameters `p` (in `INFO.param_names` order) and the derived
+        /// quantities `d` (`derive(p).v`) in the number type: one member per lane of a batch.
+        #[allow(unused_variables, clippy::all)]
+        #[inline]
+        pub fn rhs_lanes<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &[T], d: &[T], dy: &mut [T]) {
+            #body
+            #( dy[#idx] = #values; )*
+        }
+    }
+}
+
 /// `derive`, `rhs_derived`, `rhs`, `output`, `outputs` and `jacobian`.
 fn functions(program: &Program, params: &[Ident], quaternion: &[bool]) -> TokenStream {
     let t = format_ident!("T");
@@ -102,6 +135,7 @@ fn functions(program: &Program, params: &[Ident], quaternion: &[bool]) -> TokenS
     let (rhs_body, rhs_values) = section::print(&program.rhs, &generic);
     let rhs_idx: Vec<usize> = (0..rhs_values.len()).collect();
     let outputs = super::outputs::output_fns(program, quaternion, &generic);
+    let rhs_lanes = rhs_lanes_fn(program);
     let ns = rhs_values.len();
     quote! {
         /// The parameter-only subexpressions of `rhs`.
@@ -123,6 +157,8 @@ fn functions(program: &Program, params: &[Ident], quaternion: &[bool]) -> TokenS
         pub fn rhs<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, dy: &mut [T]) {
             rhs_derived(t, y, p, &derive(p), dy)
         }
+
+        #rhs_lanes
 
         #outputs
 
@@ -183,6 +219,13 @@ fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident]) -> TokenStr
             }
             fn output(k: usize, t: f64, y: &[f64], rates: &[f64], p: &Params, out: &mut [f64]) {
                 output(k, t, y, rates, p, out)
+            }
+            #[inline]
+            fn rhs_lanes<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &[T], d: &[T], dy: &mut [T]) {
+                rhs_lanes(t, y, p, d, dy)
+            }
+            fn derived_values(d: &Derived) -> &[f64] {
+                &d.v
             }
         }
     }
