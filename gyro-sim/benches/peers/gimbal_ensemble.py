@@ -20,6 +20,7 @@ import argparse
 import csv
 import os
 import subprocess
+import sys
 import tempfile
 import time
 from math import pi
@@ -28,14 +29,12 @@ from pathlib import Path
 import heyoka as hy
 import numpy as np
 
+sys.path.insert(0, str(Path(__file__).parent))
+import models  # noqa: E402
+from equal_error import at_error  # noqa: E402
+
 ROOT = Path(__file__).resolve().parents[3]
 GYRO_SIM = ROOT / "target" / "release" / "gyro-sim"
-M1, M2, M3, H1, H2, H3, L, W = 2.0, 2.0, 50.0, 0.6, 0.5, 0.4, 0.3, 0.025
-I1 = 2 / 3 * M1 * (H1 * W - W**2)
-J1 = 2 / 3 * M2 * (H2 * W - W**2)
-J2 = M2 * H2**2 / 6 - M2 * (H2 - W) ** 2 / 6
-K1 = M3 * L**2 / 2
-K2 = M3 * L**2 / 4 + M3 * H3**2 / 12
 T_FINAL = 5.0
 SCENE = """title = "gimbal ensemble (Trial 3 equations)"
 model = "gimbal_gyroscope"
@@ -52,20 +51,6 @@ Z = 10.0
 [initial]
 U3 = "100 rad/s"
 """
-
-
-def gimbal_system():
-    """The gimbal's equations in heyoka (block solve of the hand-derived mass matrix)."""
-    q1, q2, q3, u1, u2, u3 = hy.make_vars("q1", "q2", "q3", "u1", "u2", "u3")
-    y, z = hy.par[0], hy.par[1]
-    s, c = hy.sin(q2), hy.cos(q2)
-    a = I1 + J1 * c * c + J2 * s * s + K1 * c * c + K2 * s * s
-    b = K1 * c
-    f1 = -y + 2 * (J1 + K1 - J2 - K2) * s * c * u1 * u2 + K1 * s * u2 * u3
-    f2 = -z + (J2 + K2 - J1 - K1) * s * c * u1 * u1 - K1 * s * u1 * u3
-    f3 = K1 * s * u1 * u2
-    det = a * K1 - b * b
-    return [(q1, u1), (q2, u2), (q3, u3), (u1, (K1 * f1 - b * f3) / det), (u2, f2 / (J1 + K2)), (u3, (a * f3 - b * f1) / det)]
 
 
 def run_sweep(members, tol, method, out, threads):
@@ -122,16 +107,6 @@ def error(final, ref):
     return float(np.max(np.abs(final[:k] - ref) / np.maximum(1.0, np.abs(ref))))
 
 
-def at_error(points, goal):
-    """Time at error `goal`, interpolated in log-log between measured (error, time) points."""
-    pts = sorted(points)
-    for (e0, t0), (e1, t1) in zip(pts, pts[1:]):
-        if e0 <= goal <= e1 and e0 > 0:
-            f = (np.log(goal) - np.log(e0)) / (np.log(e1) - np.log(e0)) if e1 > e0 else 0.0
-            return float(np.exp(np.log(t0) + f * (np.log(t1) - np.log(t0))))
-    return float("nan")
-
-
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("--members", type=int, default=10000)
@@ -143,7 +118,7 @@ def main():
     ours_tols = [1e-7, 1e-9, 1e-11]
     hy_tols = [1e-6, 1e-8, 1e-10, 1e-12, 1e-14]
     _, varied, _ = run_sweep(args.members, 1e-9, args.method, work, cores)
-    sysm = gimbal_system()
+    sysm = models.gimbal()
     ref_ta = hy.taylor_adaptive(sysm, [0.0] * 6, tol=1e-16, pars=[0.0, 0.0])
     ref = heyoka_ensemble(ref_ta, varied[:200], 1)[1]
     tas = {t: hy.taylor_adaptive(sysm, [0.0] * 6, tol=t, pars=[0.0, 0.0]) for t in hy_tols}
