@@ -1,7 +1,8 @@
 //! Batch lanes against scalar runs (issue 14, item 4): 256 members of the gimbal (Trial 3's
 //! equations to t = 5; Y and Z in 0..20 N m, U3 in 50..150 rad/s, a fixed quasi-random set),
-//! DOP853 at rtol = atol = 1e-9, one thread: each member alone (the scalar stepper) and 4 or 8
-//! members in lock step through `rhs_lanes`.
+//! DOP853 at rtol = atol = 1e-7, 1e-9 and 1e-11, one thread: each member alone (the scalar
+//! stepper), 4 or 8 members in lock step through `rhs_lanes`, and 4 in lock step after ordering
+//! the members by spin (lanes of similar step sizes).
 //!
 //! `cargo bench -p gyro-sim --bench batch_lanes`; it also prints, once, each way's RHS
 //! evaluations per member and its largest final-state error against DOP853 at 1e-14. Members per
@@ -19,6 +20,8 @@ use kane_model::runtime::GeneratedModel;
 
 const MEMBERS: usize = 256;
 const T_END: f64 = 5.0;
+/// Tolerances: the error of each way at each is printed, to compare times at equal error.
+const TOLERANCES: [f64; 3] = [1e-7, 1e-9, 1e-11];
 
 /// The members: parameters and initial states (a Halton-like set over the three ranges).
 fn members() -> Vec<(gimbal::Params, Vec<f64>)> {
@@ -68,6 +71,20 @@ fn lanes<const N: usize>(members: &[(gimbal::Params, Vec<f64>)], tol: f64) -> (V
     (finals, stats.rhs_evals * N)
 }
 
+/// The members ordered by spin (the step size follows it), so that lanes share similar steps;
+/// the finals put back in the original order.
+fn lanes4_by_spin(members: &[(gimbal::Params, Vec<f64>)], tol: f64) -> (Vec<Vec<f64>>, usize) {
+    let mut order: Vec<usize> = (0..members.len()).collect();
+    order.sort_by(|a, b| members[*a].1[5].total_cmp(&members[*b].1[5]));
+    let sorted: Vec<_> = order.iter().map(|k| members[*k].clone()).collect();
+    let (finals, evals) = lanes::<4>(&sorted, tol);
+    let mut back = vec![Vec::new(); finals.len()];
+    for (slot, k) in order.iter().enumerate() {
+        back[*k] = finals[slot].clone();
+    }
+    (back, evals)
+}
+
 fn worst(got: &[Vec<f64>], reference: &[Vec<f64>]) -> f64 {
     got.iter()
         .flatten()
@@ -79,22 +96,28 @@ fn worst(got: &[Vec<f64>], reference: &[Vec<f64>]) -> f64 {
 fn batch_lanes(c: &mut Criterion) {
     let members = members();
     let (reference, _) = scalar(&members, 1e-14);
-    for (name, (finals, evals)) in [
-        ("scalar", scalar(&members, 1e-9)),
-        ("lanes4", lanes::<4>(&members, 1e-9)),
-        ("lanes8", lanes::<8>(&members, 1e-9)),
-    ] {
-        let per_member = evals as f64 / MEMBERS as f64;
-        eprintln!(
-            "{name}: {per_member:.0} RHS evaluations per member (lane-evaluations), error {:.1e}",
-            worst(&finals, &reference)
-        );
+    type Way = fn(&[(gimbal::Params, Vec<f64>)], f64) -> (Vec<Vec<f64>>, usize);
+    let ways: [(&str, Way); 4] = [
+        ("scalar", scalar),
+        ("lanes4", lanes::<4>),
+        ("lanes8", lanes::<8>),
+        ("lanes4_by_spin", lanes4_by_spin),
+    ];
+    for tol in TOLERANCES {
+        for (name, way) in ways {
+            let (finals, evals) = way(&members, tol);
+            let per_member = evals as f64 / MEMBERS as f64;
+            let err = worst(&finals, &reference);
+            eprintln!("{name} tol {tol:e}: {per_member:.0} RHS evaluations per member, error {err:.1e}");
+        }
     }
     let mut g = c.benchmark_group("batch_lanes_256_members");
     g.sample_size(10);
-    g.bench_function("scalar", |b| b.iter(|| black_box(scalar(&members, 1e-9))));
-    g.bench_function("lanes4", |b| b.iter(|| black_box(lanes::<4>(&members, 1e-9))));
-    g.bench_function("lanes8", |b| b.iter(|| black_box(lanes::<8>(&members, 1e-9))));
+    for tol in TOLERANCES {
+        for (name, way) in ways {
+            g.bench_function(format!("{name}/{tol:e}"), |b| b.iter(|| black_box(way(&members, tol))));
+        }
+    }
     g.finish();
 }
 

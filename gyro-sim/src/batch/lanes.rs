@@ -150,11 +150,7 @@ impl<const N: usize> Float for Lanes<N> {
     }
     #[inline(always)]
     fn mul_add(self, a: Self, b: Self) -> Self {
-        let mut out = self.0;
-        for k in 0..N {
-            out[k] = self.0[k].mul_add(a.0[k], b.0[k]);
-        }
-        Lanes(out)
+        Lanes(std::array::from_fn(|k| self.0[k].mul_add(a.0[k], b.0[k])))
     }
     #[inline(always)]
     fn powi(self, n: i32) -> Self {
@@ -183,11 +179,8 @@ impl<const N: usize> Float for Lanes<N> {
     }
     #[inline(always)]
     fn sin_cos(self) -> (Self, Self) {
-        let (mut s, mut c) = (self.0, self.0);
-        for k in 0..N {
-            (s[k], c[k]) = self.0[k].sin_cos();
-        }
-        (Lanes(s), Lanes(c))
+        let both: [(f64, f64); N] = self.0.map(f64::sin_cos);
+        (Lanes(both.map(|p| p.0)), Lanes(both.map(|p| p.1)))
     }
     fn integer_decode(self) -> (u64, i16, i8) {
         self.0[0].integer_decode()
