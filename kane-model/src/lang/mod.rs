@@ -27,7 +27,8 @@ mod to_spec;
 mod token;
 pub mod units;
 
-pub use ast::{Expr, ExprKind, Stmt, StmtKind};
+pub use ast::{BinOp, Expr, ExprKind, Stmt, StmtKind};
+pub use parser::parse_expression;
 pub use check::{check, Checked, OVERRIDE_MARKER};
 pub use compare::{compare, Comparison, Outcome, Relation};
 pub use diagnostic::{line_column, Diagnostic, Report, Severity};
