@@ -9,6 +9,7 @@
 
 pub mod cli;
 pub mod compiled;
+pub mod events;
 pub mod initial;
 pub mod instant;
 pub mod model_file;

@@ -153,7 +153,11 @@ impl Builder<'_> {
     /// A name, `t` or `pi`, with at most one prime.
     fn name(&mut self, name: &str, primes: u8, inside_dt: bool, span: &Range<usize>) -> Res<ExprId> {
         if primes > 1 || (primes == 1 && inside_dt) {
-            return Err(error(span, "only one time derivative is supported".into(), "write X' or (expression)'"));
+            return Err(error(
+                span,
+                "only one time derivative is supported".into(),
+                "write X' or (expression)'",
+            ));
         }
         let known = self.names.iter().position(|n| n.name.eq_ignore_ascii_case(name));
         let Some(i) = known else {
@@ -182,7 +186,8 @@ impl Builder<'_> {
             return Ok(v.0);
         }
         let name = format!("{}__{i}", self.names[i].name.to_ascii_uppercase());
-        let kind = if self.names[i].varies { SymbolKind::Variable { order: 0 } } else { SymbolKind::Constant };
+        let kind =
+            if self.names[i].varies { SymbolKind::Variable { order: 0 } } else { SymbolKind::Constant };
         let sym = self.ar.declare(&name, kind).map_err(arith(span))?;
         self.symbols.insert(i, (sym, None));
         Ok(sym)
@@ -194,7 +199,10 @@ impl Builder<'_> {
         error(
             span,
             format!("unknown name `{name}`"),
-            &format!("an event reads t, pi and these states, output columns and parameters: {}", known.join(", ")),
+            &format!(
+                "an event reads t, pi and these states, output columns and parameters: {}",
+                known.join(", ")
+            ),
         )
     }
 
@@ -203,12 +211,20 @@ impl Builder<'_> {
         let upper = name.to_ascii_uppercase();
         let want = if upper == "ATAN2" { 2 } else { 1 };
         if args.len() != want {
-            return Err(error(span, format!("{name} takes {want} argument(s), not {}", args.len()), "check the call"));
+            return Err(error(
+                span,
+                format!("{name} takes {want} argument(s), not {}", args.len()),
+                "check the call",
+            ));
         }
         match upper.as_str() {
             "DT" => {
                 if inside_dt {
-                    return Err(error(span, "only one time derivative is supported".into(), "write (expression)' once"));
+                    return Err(error(
+                        span,
+                        "only one time derivative is supported".into(),
+                        "write (expression)' once",
+                    ));
                 }
                 let x = self.expr(&args[0], true)?;
                 self.ar.dt(x).map_err(arith(span))
