@@ -1,6 +1,7 @@
 //! Bracketed root finding: in comes a function with a sign change on `[a, b]`; out goes the
 //! crossing, to the precision of the time (the Illinois variant of regula falsi: superlinear,
-//! and never leaves the bracket).
+//! never leaves the bracket; a bisection when two steps did not halve the bracket, as at a
+//! multiple root).
 
 /// Most iterations (the bracket shrinks superlinearly; far fewer are needed).
 const MAX_ITERATIONS: usize = 200;
@@ -12,13 +13,18 @@ const MAX_ITERATIONS: usize = 200;
 pub fn illinois(mut f: impl FnMut(f64) -> f64, mut a: f64, mut fa: f64, mut b: f64, mut fb: f64) -> f64 {
     // Which end was kept twice in a row (-1: a, 1: b), whose value is then halved.
     let mut side = 0;
+    // The widths one and two iterations ago: a bracket that did not halve in two steps is
+    // bisected (a multiple root, where regula falsi crawls).
+    let mut widths = [f64::INFINITY; 2];
     for _ in 0..MAX_ITERATIONS {
         let width = b - a;
         if width <= 4.0 * f64::EPSILON * a.abs().max(b.abs()).max(f64::MIN_POSITIVE) {
             break;
         }
         let mut c = b - fb * width / (fb - fa);
-        if !(c > a && c < b) {
+        let slow = width > 0.5 * widths[1];
+        widths = [width, widths[0]];
+        if slow || !(c > a && c < b) {
             c = a + 0.5 * width;
         }
         let fc = f(c);
