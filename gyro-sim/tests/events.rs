@@ -278,3 +278,90 @@ fn bad_presets_are_named() {
         "{e}"
     );
 }
+
+/// `gyro-sim run SCENE --engine ENGINE --out DIR`; the rows of DIR/events.csv after the name
+/// and direction.
+fn events_by_command(
+    scene: &std::path::Path,
+    engine: &str,
+    out: &std::path::Path,
+) -> Vec<(String, Vec<f64>)> {
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gyro-sim"))
+        .args(["run", scene.to_str().unwrap(), "--engine", engine, "--out", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success() && text.contains(&format!("ran {engine}")), "{text}");
+    assert!(text.contains("event rate: ") && text.contains("stopped by event level at t = "), "{text}");
+    let csv = std::fs::read_to_string(out.join("events.csv")).unwrap();
+    csv.lines()
+        .skip(1)
+        .map(|l| {
+            let mut f = l.split(',');
+            let name = f.next().unwrap().to_string();
+            (name, f.skip(1).map(|x| x.parse().unwrap()).collect())
+        })
+        .collect()
+}
+
+#[test]
+fn the_instant_path_finds_the_same_events_as_the_compiled_model() {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("events_instant");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let model = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/heavy_top.al");
+    let text = std::fs::read_to_string(scene_path("events/loops_stop.toml")).unwrap();
+    let head = &text[text.find("title").unwrap()..text.find("[[events]]").unwrap()];
+    // Rates of a state expression, of an output (dual numbers through its code) and a stop.
+    let events = "[[events]]\nname = \"rate\"\nwhen = \"ELEVATION'\"\n[[events]]\nname = \"energy\"\nwhen = \"(ENERGY - E1*W1)'\"\n[[events]]\nname = \"level\"\nwhen = \"AXLE_N3 + 0.1\"\naction = \"stop\"\ncount = 2\n";
+    let head = head.replace("outputs = [", "outputs = [\"ENERGY\", ");
+    let scene = dir.join("top.toml");
+    std::fs::write(
+        &scene,
+        format!("{head}{events}").replace("model = \"heavy_top\"", &format!("model = {model:?}")),
+    )
+    .unwrap();
+    let instant = events_by_command(&scene, "instant", &dir.join("instant"));
+    std::fs::write(&scene, format!("{head}{events}")).unwrap();
+    let compiled = events_by_command(&scene, "compiled", &dir.join("compiled"));
+    assert_eq!(
+        instant.iter().map(|e| &e.0).collect::<Vec<_>>(),
+        compiled.iter().map(|e| &e.0).collect::<Vec<_>>()
+    );
+    assert!(instant.iter().any(|e| e.0 == "rate") && instant.iter().any(|e| e.0 == "energy"), "{instant:?}");
+    let worst = instant
+        .iter()
+        .zip(&compiled)
+        .flat_map(|(a, b)| a.1.iter().zip(&b.1).map(|(x, y)| (x - y).abs() / y.abs().max(1.0)))
+        .fold(0.0, f64::max);
+    assert!(worst < 1e-10, "instant vs compiled events: {worst:e}");
+}
+
+#[test]
+fn a_sweep_writes_each_members_first_event_times() {
+    let out = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("events_sweep");
+    let _ = std::fs::remove_dir_all(&out);
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gyro-sim"))
+        .args([
+            "sweep",
+            &scene_path("events/loops_stop.toml"),
+            "--vary",
+            "D=1:1.2:2",
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let csv = std::fs::read_to_string(out.join("sweep.csv")).unwrap();
+    let rows: Vec<Vec<&str>> = csv.lines().map(|l| l.split(',').collect()).collect();
+    let col = |name: &str| {
+        rows[0].iter().position(|h| *h == name).unwrap_or_else(|| panic!("{name}: {:?}", rows[0]))
+    };
+    let (below, turn) = (col("first_t_below_horizontal"), col("first_t_turning_point"));
+    let at: f64 = rows[1][below].parse().unwrap();
+    assert!((at - closed("loops").time_of(0.0)).abs() < 1e-9, "{at}");
+    assert_eq!(rows[1][turn], "NaN", "no turning point before the stop");
+    let later: f64 = rows[2][below].parse().unwrap();
+    assert!(later > at, "a longer arm (D = 1.2) falls later: {later} vs {at}");
+}
