@@ -55,9 +55,12 @@ pub fn illinois(mut f: impl FnMut(f64) -> f64, mut a: f64, mut fa: f64, mut b: f
 mod tests {
     use super::*;
 
+    /// A function, a bracket and the root inside.
+    type Case = (fn(f64) -> f64, f64, f64, f64);
+
     #[test]
     fn roots_to_the_precision_of_the_time() {
-        let cases: [(fn(f64) -> f64, f64, f64, f64); 4] = [
+        let cases: [Case; 4] = [
             (|t| t.cos(), 1.0, 2.0, std::f64::consts::FRAC_PI_2),
             (|t| (t - 40.123_456_789).powi(3), 39.0, 41.0, 40.123_456_789),
             (|t| t.exp() - 10.0, 0.0, 5.0, 10f64.ln()),
