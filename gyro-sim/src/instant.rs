@@ -44,6 +44,9 @@ impl BoundModel for InstantSystem<'_> {
     fn output(&self, k: usize, t: f64, y: &[f64], rates: &[f64], out: &mut [f64]) {
         self.model.output(k, t, y, rates, &self.params, out, &mut self.regs.borrow_mut())
     }
+    fn output_rate(&self, k: usize, t: f64, y: &[f64], dy: &[f64], out: &mut [f64], rate: &mut [f64]) {
+        self.model.output_rate(k, t, y, dy, &self.params, out, rate)
+    }
 }
 
 /// The registry entry running `model` on the instant path.

@@ -10,6 +10,7 @@
 pub mod batch;
 pub mod cli;
 pub mod compiled;
+pub mod events;
 pub mod initial;
 pub mod instant;
 pub mod model_file;

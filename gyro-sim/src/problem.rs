@@ -46,6 +46,8 @@ pub struct Problem {
     pub written_picks: usize,
     /// Groups of states held at unit norm (Euler parameters), as state indices.
     pub unit_norms: Vec<Vec<usize>>,
+    /// Events to find (`[[events]]`).
+    pub events: Vec<crate::events::EventSpec>,
 }
 
 /// Most output rows a run may ask for (every row is held in memory until it is written).

@@ -47,6 +47,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
         written_picks: written.len(),
         picks: with_view_picks(scene, info, written)?,
         unit_norms: unit_norms(scene, info)?,
+        events: crate::events::resolve::events(scene, info)?,
     })
 }
 

@@ -43,6 +43,8 @@ pub struct Scene {
     pub outputs: Vec<(String, std::ops::Range<usize>)>,
     /// Integrator.
     pub integrator: Integrator,
+    /// Events to find (`[[events]]`, see [`crate::events`]).
+    pub events: Vec<crate::events::EventDecl>,
 }
 
 /// A number, with the unit it was given in.
@@ -144,6 +146,7 @@ struct SceneFile {
     initial: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
     axle: Option<Spanned<AxleFile>>,
     view: Option<crate::output::ViewSpec>,
+    events: Option<Vec<crate::events::scene::EventFile>>,
 }
 
 #[derive(Deserialize)]
@@ -490,7 +493,7 @@ impl Scene {
             text.err(
                 e.span().unwrap_or(0..0),
                 e.message().to_string(),
-                "keys are title, model, t_final, output_step, outputs, [integrator] (method, rtol, atol, step, accuracy, max_steps), [parameters], [initial], [axle] (tilt, spin, precession, nutation, quaternion, rates), [view], plot_points",
+                "keys are title, model, t_final, output_step, outputs, [integrator] (method, rtol, atol, step, accuracy, max_steps), [parameters], [initial], [axle] (tilt, spin, precession, nutation, quaternion, rates), [view], [[events]] (name, when, preset, direction, action, count, angle, margin, lock), plot_points",
             )
         })?;
         let model = raw.model.ok_or_else(|| {
@@ -520,6 +523,11 @@ impl Scene {
             plot_points: text.plot_points(raw.plot_points)?,
             outputs,
             integrator,
+            events: crate::events::scene::decls(
+                raw.events.unwrap_or_default(),
+                source,
+                &|span, message, help| text.err(span, message, help),
+            )?,
         })
     }
 

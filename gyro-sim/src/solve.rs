@@ -8,6 +8,8 @@ use std::time::Instant;
 use kane_model::runtime::{GeneratedModel, ModelInfo};
 use thiserror::Error;
 
+use crate::events::watch::Watch;
+use crate::events::EventLog;
 use crate::ode::{self, Method, OdeError, Stats, System};
 use crate::problem::{Pick, Problem};
 use crate::refine::refine;
@@ -88,6 +90,9 @@ pub trait BoundModel: System {
     fn info(&self) -> &'static ModelInfo;
     /// Output `k` at `(t, y)` (full state) into `out`; `rates` are `u'` when it needs them.
     fn output(&self, k: usize, t: f64, y: &[f64], rates: &[f64], out: &mut [f64]);
+    /// Output `k` at `(t, y)` into `out` and its time derivative along `y' = dy` into `rate`
+    /// (for an output that reads no speed rates).
+    fn output_rate(&self, k: usize, t: f64, y: &[f64], dy: &[f64], out: &mut [f64], rate: &mut [f64]);
 }
 
 impl<M: GeneratedModel> BoundModel for ModelSystem<M> {
@@ -96,6 +101,9 @@ impl<M: GeneratedModel> BoundModel for ModelSystem<M> {
     }
     fn output(&self, k: usize, t: f64, y: &[f64], rates: &[f64], out: &mut [f64]) {
         M::output(k, t, y, rates, &self.params, out)
+    }
+    fn output_rate(&self, k: usize, t: f64, y: &[f64], dy: &[f64], out: &mut [f64], rate: &mut [f64]) {
+        M::output_rate(k, t, y, dy, &self.params, out, rate)
     }
 }
 
@@ -164,6 +172,7 @@ pub(crate) struct Integration {
     pub(crate) plot_rows: Vec<Vec<f64>>,
     pub(crate) y_end: Vec<f64>,
     pub(crate) norm_drift: Option<NormDrift>,
+    pub(crate) events: EventLog,
 }
 
 /// Integrates `problem` with the generated model `M`.
@@ -183,7 +192,7 @@ pub fn solve_bound<B: BoundModel>(problem: &Problem, full_sys: &B) -> Result<Tra
     let columns = columns(problem);
     let integrate_at = |method: Method| integrate(problem, &sys, &keep, &columns, method);
     let start = Instant::now();
-    let (Integration { stats, rows, plot_rows, y_end, norm_drift }, accuracy) =
+    let (Integration { stats, rows, plot_rows, y_end, norm_drift, events }, accuracy) =
         match (problem.accuracy, problem.method) {
             (Some(goal), Method::Adaptive(tab, tol)) => {
                 // The time and the written columns: view-only columns come after them.
@@ -213,6 +222,7 @@ pub fn solve_bound<B: BoundModel>(problem: &Problem, full_sys: &B) -> Result<Tra
         kinetic_energy,
         accuracy,
         norm_drift,
+        events,
     })
 }
 
@@ -231,6 +241,7 @@ fn integrated_states(problem: &Problem) -> Vec<usize> {
             Pick::Output(k) => info.outputs[*k].reads.iter().for_each(|i| needed[*i] = true),
         }
     }
+    problem.events.iter().flat_map(|e| &e.reads).for_each(|i| needed[*i] = true);
     (0..needed.len()).filter(|i| needed[*i] || !info.cyclic.contains(i)).collect()
 }
 
@@ -275,8 +286,6 @@ fn integrate<B: BoundModel>(
     let mut y_end = problem.initial.clone();
     let mut rows: Vec<Vec<f64>> = Vec::with_capacity(problem.times.len());
     let mut dy = vec![0.0; n];
-    let needs_rates =
-        problem.picks.iter().any(|p| matches!(p, Pick::Output(k) if info.outputs[*k].needs_rates));
     let mut bad: Option<SolveError> = None;
     let y_start: Vec<f64> = keep.iter().map(|k| problem.initial[*k]).collect();
     let all_times = merged(&problem.times, &problem.plot_times);
@@ -284,41 +293,55 @@ fn integrate<B: BoundModel>(
     let mut next_output = 0;
     let groups = reduced_groups(&problem.unit_norms, keep);
     let held = UnitNorm::new(sys, &groups, norm_threshold(method));
-    let result =
-        ode::integrate_limited(&held, 0.0, &y_start, &all_times, method, problem.max_steps, |t, y_red| {
-            sys.expand(y_red, &mut full_y);
-            normalise(&problem.unit_norms, &mut full_y);
-            y_end.copy_from_slice(&full_y);
-            if needs_rates {
-                sys.inner.rhs(t, &full_y, &mut dy);
-            }
-            let mut row = Vec::with_capacity(columns.len() + 1);
-            row.push(t);
-            for p in &problem.picks {
-                match *p {
-                    Pick::State(i) => row.push(full_y[i]),
-                    Pick::Output(k) => {
-                        let width = info.outputs[k].columns.len();
-                        let at = row.len();
-                        row.resize(at + width, 0.0);
-                        sys.inner.output(k, t, &full_y, &dy[info.n_coordinates..], &mut row[at..]);
-                    }
-                }
-            }
-            if let Some(j) = row.iter().position(|v| !v.is_finite()) {
-                let name = columns[j - 1].name.clone();
-                bad = Some(SolveError::NonFiniteOutput { name, time: t, value: row[j] });
+    let on_output = |t: f64, y_red: &[f64]| {
+        sys.expand(y_red, &mut full_y);
+        normalise(&problem.unit_norms, &mut full_y);
+        y_end.copy_from_slice(&full_y);
+        let row = match row_at(problem, sys.inner, columns, t, &full_y, &mut dy) {
+            Ok(row) => row,
+            Err(e) => {
+                bad = Some(e);
                 return ControlFlow::Break(());
             }
+        };
+        if !problem.plot_times.is_empty() {
+            plot_rows.push(row.clone());
+        }
+        if problem.times.get(next_output) == Some(&t) {
+            next_output += 1;
+            rows.push(row);
+        }
+        ControlFlow::Continue(())
+    };
+    let mut events = EventLog::default();
+    let result = if problem.events.is_empty() {
+        ode::integrate_limited(&held, 0.0, &y_start, &all_times, method, problem.max_steps, on_output)
+    } else {
+        let mut watch = Watch::new(problem, sys, sys.inner);
+        let row = |t: f64, y: &[f64]| row_at(problem, sys.inner, columns, t, y, &mut vec![0.0; n]);
+        let run = ode::integrate_watched(
+            &held,
+            0.0,
+            &y_start,
+            &all_times,
+            method,
+            problem.max_steps,
+            |s| watch.observe(s, &row),
+            on_output,
+        );
+        if let Some(e) = watch.error.take() {
+            return Err(e);
+        }
+        if let (Some(row), Some(state)) = (watch.stop_row.take(), watch.stop_state.take()) {
             if !problem.plot_times.is_empty() {
                 plot_rows.push(row.clone());
             }
-            if problem.times.get(next_output) == Some(&t) {
-                next_output += 1;
-                rows.push(row);
-            }
-            ControlFlow::Continue(())
-        });
+            rows.push(row);
+            y_end = state;
+        }
+        events = watch.log;
+        run.map(|w| w.stats)
+    };
     let stats = result.map_err(|e| match e {
         OdeError::NonFinite { time, index, value } => {
             SolveError::NonFiniteState { name: info.state_names[keep[index]].to_string(), time, value }
@@ -329,8 +352,45 @@ fn integrate<B: BoundModel>(
         Some(e) => Err(e),
         None => {
             let norm_drift = (!groups.is_empty()).then(|| held.drift());
-            Ok(Integration { stats, rows, plot_rows, y_end, norm_drift })
+            Ok(Integration { stats, rows, plot_rows, y_end, norm_drift, events })
         }
+    }
+}
+
+/// The row at `(t, full_y)`: `t`, then the picks' columns (`dy` the scratch for the speed rates
+/// outputs may read); an error for a value that is not finite.
+fn row_at<B: BoundModel>(
+    problem: &Problem,
+    model: &B,
+    columns: &[Column],
+    t: f64,
+    full_y: &[f64],
+    dy: &mut [f64],
+) -> Result<Vec<f64>, SolveError> {
+    let info = model.info();
+    let needs_rates =
+        problem.picks.iter().any(|p| matches!(p, Pick::Output(k) if info.outputs[*k].needs_rates));
+    if needs_rates {
+        model.rhs(t, full_y, dy);
+    }
+    let mut row = Vec::with_capacity(columns.len() + 1);
+    row.push(t);
+    for p in &problem.picks {
+        match *p {
+            Pick::State(i) => row.push(full_y[i]),
+            Pick::Output(k) => {
+                let width = info.outputs[k].columns.len();
+                let at = row.len();
+                row.resize(at + width, 0.0);
+                model.output(k, t, full_y, &dy[info.n_coordinates..], &mut row[at..]);
+            }
+        }
+    }
+    match row.iter().position(|v| !v.is_finite()) {
+        Some(j) => {
+            Err(SolveError::NonFiniteOutput { name: columns[j - 1].name.clone(), time: t, value: row[j] })
+        }
+        None => Ok(row),
     }
 }
 

@@ -66,4 +66,6 @@ pub struct Trajectory {
     pub accuracy: Option<Accuracy>,
     /// How far the unit-norm states (Euler parameters) drifted, when the problem has any.
     pub norm_drift: Option<NormDrift>,
+    /// The events declared and those that happened.
+    pub events: crate::events::EventLog,
 }

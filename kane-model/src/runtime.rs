@@ -86,6 +86,18 @@ pub trait GeneratedModel {
     fn rhs_lanes<T: num_traits::Float>(t: T, y: &[T], p: &[T], d: &[T], dy: &mut [T]);
     /// The derived quantities as numbers, in the order `rhs_lanes` reads them.
     fn derived_values(d: &Self::Derived) -> &[f64];
+    /// Output `k` at `(t, y)` into `out` and its time derivative along `y' = dy` into `rate`
+    /// (dual numbers through the output's code); meaningful only for an output that reads no
+    /// speed rates (its rate would need `u''`).
+    fn output_rate(
+        k: usize,
+        t: f64,
+        y: &[f64],
+        dy: &[f64],
+        p: &Self::Params,
+        out: &mut [f64],
+        rate: &mut [f64],
+    );
 }
 
 /// A unit quaternion (scalar first, non-negative) from direction cosines `r` (row by row, an

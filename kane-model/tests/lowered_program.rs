@@ -26,7 +26,7 @@ fn check(name: &str, src: &str, samples: usize) -> f64 {
             Input::Param(k) => p[k],
             Input::State(k) => y[k],
             Input::Derived(k) => derived[k],
-            Input::Time | Input::Rate(_) => 0.0,
+            Input::Time | Input::Rate(_) | Input::Slot(_) => 0.0,
         };
         lowered.program.rhs.eval(read, &mut dy);
         let at = |e| {

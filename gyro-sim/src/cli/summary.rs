@@ -30,12 +30,41 @@ pub fn print_summary(title: &str, summary: &run::RunSummary) {
             d.largest, d.threshold, d.projections
         );
     }
+    for line in event_lines(&t.events) {
+        println!("{line}");
+    }
     if let Some(a) = t.accuracy {
         println!(
             "accuracy {:e} asked: {} runs; the written one (rtol {:.1e}, atol {:.1e}) differs by {:.2e} from the run before (about that run's error; the written run's is far smaller)",
             a.goal, a.runs, a.rtol, a.atol, a.estimate
         );
     }
+}
+
+/// One line per event declared: how many times it happened and the first times; and the
+/// event that stopped the run.
+fn event_lines(log: &crate::events::EventLog) -> Vec<String> {
+    const SHOWN: usize = 3;
+    let mut lines: Vec<String> = log
+        .names
+        .iter()
+        .enumerate()
+        .map(|(i, name)| {
+            let times: Vec<f64> = log.records.iter().filter(|r| r.event == i).map(|r| r.row[0]).collect();
+            let first: Vec<String> = times.iter().take(SHOWN).map(|t| format!("{t:.9}")).collect();
+            let more = if times.len() > SHOWN { ", ..." } else { "" };
+            match times.len() {
+                0 => format!("event {name}: none"),
+                n => format!("event {name}: {n} at t = {}{more}", first.join(", ")),
+            }
+        })
+        .collect();
+    if let Some((name, t)) = &log.stopped {
+        lines.push(format!(
+            "stopped by event {name} at t = {t:.12}: rows at the output times before it, then a last row at it"
+        ));
+    }
+    lines
 }
 
 /// The drift of the conserved quantities the run wrote (`ENERGY`, `LZ`, `L3`): start, end and

@@ -6,10 +6,12 @@
 //! Files: `tableau` the coefficients as data; `methods` the table of methods by name; `stages`
 //! one step's stages and error estimate (`stages/unrolled` the compile-time-unrolled steps);
 //! `control` step sizes; `dense` the continuous extensions' one evaluation routine; `stepper`
-//! the stepper; `integrate` output times on top of it.
+//! the stepper; `integrate` output times on top of it; `events` the same with a watcher of
+//! each step (events).
 
 mod control;
 mod dense;
+mod events;
 mod integrate;
 mod methods;
 mod stages;
@@ -18,6 +20,7 @@ pub mod tableau;
 
 pub(crate) use control::PiControl;
 pub use dense::{DenseOutput, DenseRounding};
+pub use events::{integrate_watched, Watched};
 pub use integrate::{integrate, integrate_limited};
 pub use methods::{by_name, default_method, methods_help, Method, MethodInfo, Tolerances, METHODS};
 pub(crate) use stages::blended_norm;

@@ -10,7 +10,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 /// The files a run may put in its folder.
 pub const SET_FILES: &[&str] =
-    &["trajectory.csv", "trajectory.png", "elevation.png", "axle_trace.png", "view.html"];
+    &["trajectory.csv", "events.csv", "trajectory.png", "elevation.png", "axle_trace.png", "view.html"];
 
 /// The lock file that serialises putting sets in place.
 const LOCK_FILE: &str = ".gyro-sim.lock";

@@ -54,6 +54,10 @@ pub fn write_set(
     let staging = Staging::new(dir).map_err(folder)?;
     let table = display_table(trajectory);
     write_csv(&table, &staging.path("trajectory.csv")).map_err(WriteError::File)?;
+    if !trajectory.events.names.is_empty() {
+        crate::events::csv::write_events_csv(trajectory, &staging.path("events.csv"))
+            .map_err(WriteError::File)?;
+    }
     write_plot(&table, &staging.path("trajectory.png")).map_err(WriteError::File)?;
     let mut figures = Vec::new();
     if write_elevation(&table, &staging.path("elevation.png")).map_err(WriteError::File)? {

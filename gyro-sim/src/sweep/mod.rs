@@ -1,7 +1,7 @@
 //! Parameter sweeps: in come a scene, the ranges to vary and the members to run (a grid or a
 //! Latin-hypercube sample, optionally one shard of them); out go one row per member (the varied
 //! values, a status that is `ok` or the named failure, the final state, the minimum and maximum
-//! of each written column, the cost) and its wall time kept apart, so that the rows depend on
+//! of each written column, the first time of each event, the cost) and its wall time kept apart, so that the rows depend on
 //! the inputs alone. Members run in parallel; one member's failure is its row, never the end.
 
 mod journal;
@@ -37,6 +37,7 @@ pub fn value_columns(scene: &Scene, registry: &Registry) -> Result<Vec<String>, 
     for what in ["final", "min", "max"] {
         out.extend(shown.iter().map(|c| format!("{what}_{c}")));
     }
+    out.extend(problem.events.iter().map(|e| format!("first_t_{}", e.name)));
     Ok(out)
 }
 
@@ -94,7 +95,8 @@ fn run_member(scene: &Scene, ranges: &[Range], m: &Member, registry: &Registry) 
             hi[k] = hi[k].max(*v);
         }
     }
-    let values = [last, lo, hi].concat();
+    let firsts = first_event_times(&trajectory.events);
+    let values = [last, lo, hi, firsts].concat();
     SweepRow {
         member: m.index,
         varied,
@@ -103,6 +105,13 @@ fn run_member(scene: &Scene, ranges: &[Range], m: &Member, registry: &Registry) 
         steps: trajectory.stats.steps,
         rhs_evals: trajectory.stats.rhs_evals,
     }
+}
+
+/// The time each declared event first happened (NaN: never).
+fn first_event_times(log: &crate::events::EventLog) -> Vec<f64> {
+    (0..log.names.len())
+        .map(|i| log.records.iter().find(|r| r.event == i).map_or(f64::NAN, |r| r.row[0]))
+        .collect()
 }
 
 /// `scene` with each range's value set: a state's under `[initial]`, anything else under

@@ -20,6 +20,9 @@ pub enum Input {
     Derived(usize),
     /// The speed rate `u'_i`, computed by the `rhs` section.
     Rate(usize),
+    /// Positional value `i` the caller gives (an event expression's names: see
+    /// [`super::event`]); model sections never read one.
+    Slot(usize),
 }
 
 /// One straight-line section: instruction `k` defines value `k`; operands are earlier values.

@@ -6,6 +6,7 @@
 //! `derive`, `rhs` with `M u' = f` solved inside it, and each output); `print` spells that
 //! program in Rust. The same spec gives byte-identical code.
 
+pub mod event;
 pub mod ir;
 mod lower;
 mod meta;

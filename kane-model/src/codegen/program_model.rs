@@ -2,6 +2,7 @@
 //! spec; out goes a [`ProgramModel`] that evaluates `derive`, `rhs` and each output from the
 //! same SSA sections the printer spells, so both paths compute the same operations.
 
+use crate::dual::Dual;
 use crate::runtime::{quaternion_from_dcm, ModelInfo};
 use crate::spec::ModelSpec;
 
@@ -100,6 +101,41 @@ impl ProgramModel {
     }
 }
 
+impl ProgramModel {
+    /// Output `k` at `(t, y)` into `out` and its time derivative along `y' = dy` into `rate`
+    /// (the section run in dual numbers); meaningful only for an output that reads no speed
+    /// rates.
+    #[allow(clippy::too_many_arguments)]
+    pub fn output_rate(
+        &self,
+        k: usize,
+        t: f64,
+        y: &[f64],
+        dy: &[f64],
+        params: &[f64],
+        out: &mut [f64],
+        rate: &mut [f64],
+    ) {
+        let section = &self.program.outputs[k].section;
+        let read = |input: Input| match input {
+            Input::Time => Dual::new(t, 1.0),
+            Input::State(i) => Dual::new(y[i], dy[i]),
+            Input::Param(i) => Dual::constant(params[i]),
+            Input::Derived(_) | Input::Rate(_) | Input::Slot(_) => Dual::constant(f64::NAN),
+        };
+        let mut values = vec![Dual::constant(0.0); section.results.len()];
+        section.eval(read, &mut values);
+        if self.quaternion[k] {
+            let dcm: [Dual<f64>; 9] = std::array::from_fn(|i| values[i]);
+            values = quaternion_from_dcm(&dcm).to_vec();
+        }
+        for ((o, r), v) in out.iter_mut().zip(rate.iter_mut()).zip(&values) {
+            *o = v.re;
+            *r = v.eps;
+        }
+    }
+}
+
 /// Where a section is evaluated: the values its inputs read.
 struct At<'a> {
     t: f64,
@@ -117,6 +153,8 @@ impl At<'_> {
             Input::Param(i) => self.params[i],
             Input::Derived(i) => self.derived[i],
             Input::Rate(i) => self.rates[i],
+            // Model sections read no slots (only event sections do).
+            Input::Slot(_) => f64::NAN,
         };
         s.eval_in(read, regs, out)
     }

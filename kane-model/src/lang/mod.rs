@@ -27,13 +27,14 @@ mod to_spec;
 mod token;
 pub mod units;
 
-pub use ast::{Expr, ExprKind, Stmt, StmtKind};
+pub use ast::{BinOp, Expr, ExprKind, Stmt, StmtKind};
 pub use check::{check, Checked, OVERRIDE_MARKER};
 pub use compare::{compare, Comparison, Outcome, Relation};
 pub use diagnostic::{line_column, Diagnostic, Report, Severity};
 pub use eoms::{printed_eoms, PrintedEoms};
 pub use interp::value::Value;
 pub use interp::{CodeRequest, InputValue, LoadedModel};
+pub use parser::parse_expression;
 pub use present::Presenter;
 pub use show::show;
 pub use token::Span;

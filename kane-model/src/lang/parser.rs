@@ -32,7 +32,7 @@ pub fn parse(src: &str) -> (Vec<Stmt>, Vec<Diagnostic>) {
                 // A statement with a bad character is reported once, for that character.
                 let (from, to) = (line[0].span.start, t.span.start);
                 if !bad_lines.iter().any(|b| (from..=to).contains(b)) {
-                    let mut p = Parser { toks: &line, pos: 0, src, depth: 0 };
+                    let mut p = Parser { toks: &line, pos: 0, src, depth: 0, paren_primes: false };
                     match p.statement() {
                         Ok(s) => stmts.push(s),
                         Err(e) => errors.push(e),
@@ -54,6 +54,23 @@ struct Parser<'a> {
     src: &'a str,
     /// How deeply the expression being read is nested so far.
     depth: usize,
+    /// `(e)'` reads as `DT(e)` (expressions parsed alone, not model files).
+    paren_primes: bool,
+}
+
+/// Parses `src` as one expression (names, numbers, calls, `+ - * / ^`, parentheses), where
+/// `(e)'` is the time derivative `DT(e)`; an error names the place in `src`.
+pub fn parse_expression(src: &str) -> Result<Expr, Diagnostic> {
+    let (tokens, lex_errors) = lex(src);
+    if let Some(e) = lex_errors.first() {
+        return Err(Diagnostic::error(e.span.clone(), format!("unexpected character `{}`", e.ch))
+            .with_help("an expression uses names, numbers, + - * / ^, parentheses and '"));
+    }
+    let toks: Vec<Token> = tokens.into_iter().filter(|t| t.tok != Tok::Newline).collect();
+    let mut p = Parser { toks: &toks, pos: 0, src, depth: 0, paren_primes: true };
+    let e = p.expr()?;
+    p.finish()?;
+    Ok(e)
 }
 
 type PResult<T> = Result<T, Diagnostic>;
@@ -559,7 +576,14 @@ impl<'a> Parser<'a> {
                 self.pos += 1;
                 let e = self.nested(Self::expr)?;
                 self.expect(')', "to close the parenthesis")?;
-                Ok(Expr { kind: e.kind, span: start..self.end() })
+                let mut e = Expr { kind: e.kind, span: start..self.end() };
+                if self.paren_primes {
+                    for _ in 0..self.primes() {
+                        let kind = ExprKind::Call { name: "DT".into(), args: vec![e] };
+                        e = Expr { kind, span: start..self.end() };
+                    }
+                }
+                Ok(e)
             }
             Some(Tok::Punct('[')) => {
                 self.pos += 1;

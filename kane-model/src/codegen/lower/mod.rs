@@ -1,7 +1,7 @@
 //! Lowering: in comes a [`ModelSpec`]; out goes a [`Program`] (straight-line sections for
 //! `derive`, `rhs` and each output) with the parameters it reads. Nothing here knows Rust.
 
-mod exprs;
+pub(crate) mod exprs;
 mod hoist;
 mod ldlt;
 mod outputs;

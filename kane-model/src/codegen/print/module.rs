@@ -89,6 +89,7 @@ fn input_tokens(params: &[Ident], generic: bool) -> impl Fn(Input) -> TokenStrea
         }
         Input::Derived(i) => quote!(::kane_model::__private::cast::<T>(__derived.v[#i])),
         Input::Rate(i) => quote!(rates[#i]),
+        Input::Slot(i) => quote!(slots[#i]),
     }
 }
 
@@ -101,6 +102,7 @@ fn lane_input_tokens(input: Input) -> TokenStream {
         Input::Param(i) => quote!(p[#i]),
         Input::Derived(i) => quote!(d[#i]),
         Input::Rate(i) => quote!(rates[#i]),
+        Input::Slot(i) => quote!(slots[#i]),
     }
 }
 
@@ -186,6 +188,14 @@ fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident]) -> TokenStr
     let initial = lowered.states.iter().map(|s| nan_or(spec.default_of(spec.symbol_name(*s))));
     let names: Vec<String> =
         lowered.params.iter().map(|s| spec.symbol_name(*s).to_ascii_uppercase()).collect();
+    let ns = lowered.states.len();
+    // The widest output's columns (a quaternion writes four).
+    let width = spec
+        .outputs
+        .iter()
+        .map(|o| if is_quaternion(&o.kind) { 4 } else { o.components.len() })
+        .max()
+        .unwrap_or(0);
     quote! {
         /// The model as a [`::kane_model::runtime::GeneratedModel`].
         #[derive(Clone, Copy, Debug, Default)]
@@ -226,6 +236,20 @@ fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident]) -> TokenStr
             }
             fn derived_values(d: &Derived) -> &[f64] {
                 &d.v
+            }
+            fn output_rate(k: usize, t: f64, y: &[f64], dy: &[f64], p: &Params, out: &mut [f64], rate: &mut [f64]) {
+                use ::kane_model::dual::Dual;
+                let mut yd = [Dual::new(0.0, 0.0); #ns];
+                for ((v, a), b) in yd.iter_mut().zip(y).zip(dy) {
+                    *v = Dual::new(*a, *b);
+                }
+                let mut od = [Dual::new(0.0, 0.0); #width];
+                let w = out.len().min(#width);
+                output(k, Dual::new(t, 1.0), &yd, &[], p, &mut od[..w]);
+                for ((o, r), d) in out.iter_mut().zip(rate.iter_mut()).zip(&od[..w]) {
+                    *o = d.re;
+                    *r = d.eps;
+                }
             }
         }
     }
