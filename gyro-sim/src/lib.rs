@@ -9,6 +9,7 @@
 
 pub mod cli;
 pub mod compiled;
+mod diagnose;
 pub mod initial;
 pub mod instant;
 pub mod model_file;
@@ -19,6 +20,7 @@ pub mod problem;
 mod refine;
 pub mod registry;
 pub mod resolve;
+pub mod rows;
 pub mod run;
 pub mod scene;
 pub mod solve;

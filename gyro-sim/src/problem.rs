@@ -46,6 +46,9 @@ pub struct Problem {
     pub written_picks: usize,
     /// Groups of states held at unit norm (Euler parameters), as state indices.
     pub unit_norms: Vec<Vec<usize>>,
+    /// Where the rows go as they are produced (then only a bounded set stays in memory); none:
+    /// every row is kept. Leave it none when an accuracy is asked: refinement compares runs.
+    pub rows_to: Option<crate::rows::RowStream>,
 }
 
 /// Most output rows a run may ask for (every row is held in memory until it is written).
