@@ -418,12 +418,16 @@ mod tests {
             "{e}"
         );
         assert!(e.contains("tilt = \"60 deg\" under [axle]"), "{e}");
-        // Within 1e-9 of unit norm is accepted, and without [axle] nothing is checked.
+        // Within 1e-9 of unit norm is accepted; without [axle], states named E1..E4 are checked.
         let c = 30f64.to_radians().cos();
         let s = 30f64.to_radians().sin();
         let ok = format!("[initial]\nE4 = {c}\nE1 = {}\nE2 = 0.0\nE3 = 0.0\n[axle]\n{NAMES}", s + 5e-10);
         assert!(initial(&ok).is_ok());
-        assert!(initial("[initial]\nE4 = 1.0\nE1 = 0.5\nE2 = 0.0\nE3 = 0.0\n").is_ok());
+        let e = initial("[initial]\nE4 = 1.0\nE1 = 0.5\nE2 = 0.0\nE3 = 0.0\n").unwrap_err().to_string();
+        assert!(
+            e.contains(":2:6: error: the Euler parameters E4, E1, E2, E3 = (1, 0.5, 0, 0) have norm 1.118"),
+            "{e}"
+        );
     }
 
     #[test]

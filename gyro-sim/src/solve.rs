@@ -8,9 +8,9 @@ use std::time::Instant;
 use kane_model::runtime::{GeneratedModel, ModelInfo};
 use thiserror::Error;
 
+use crate::diagnose;
 use crate::ode::{self, Method, OdeError, Stats, System};
 use crate::problem::{Pick, Problem};
-use crate::diagnose;
 use crate::refine::refine;
 use crate::registry::Registry;
 use crate::rows::Rows;

@@ -31,7 +31,18 @@ fn build() -> PathBuf {
     let target_dir = profile_dir.parent().expect("target folder");
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let mut build = Command::new(cargo);
-    build.args(["build", "--quiet", "-p", "gyro-sim", "--bin", "gyro-sim", "-p", "kane-model", "--bin", "kane"]);
+    build.args([
+        "build",
+        "--quiet",
+        "-p",
+        "gyro-sim",
+        "--bin",
+        "gyro-sim",
+        "-p",
+        "kane-model",
+        "--bin",
+        "kane",
+    ]);
     build.arg("--target-dir").arg(target_dir);
     build.current_dir(env!("CARGO_MANIFEST_DIR"));
     match profile_dir.file_name().and_then(|n| n.to_str()) {

@@ -111,12 +111,13 @@ fn gimbal(params: &str, initial: &str) -> String {
 /// The CSV's rows, every value checked finite.
 fn finite_csv(path: &Path) -> Vec<Vec<f64>> {
     let text = std::fs::read_to_string(path).unwrap();
-    let rows: Vec<Vec<f64>> = text
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(|x| x.parse::<f64>().unwrap()).collect())
-        .collect();
-    assert!(rows.iter().flatten().all(|v| v.is_finite()), "{} holds a value that is not finite", path.display());
+    let rows: Vec<Vec<f64>> =
+        text.lines().skip(1).map(|l| l.split(',').map(|x| x.parse::<f64>().unwrap()).collect()).collect();
+    assert!(
+        rows.iter().flatten().all(|v| v.is_finite()),
+        "{} holds a value that is not finite",
+        path.display()
+    );
     rows
 }
 
@@ -289,7 +290,8 @@ fn a_hundred_million_output_rows_are_refused_up_front() {
 #[test]
 fn tiny_rk4_step_is_refused_up_front_by_the_step_limit() {
     let dir = folder("tiny_rk4_step");
-    let text = gimbal("", "").replace("method = \"dopri5\"", "method = \"rk4\"\nstep = 1e-12\nmax_steps = 100000");
+    let text =
+        gimbal("", "").replace("method = \"dopri5\"", "method = \"rk4\"\nstep = 1e-12\nmax_steps = 100000");
     let scene = file(&dir, "g.toml", &text.replace("rtol = 1e-9\natol = 1e-9\n", ""));
     run(&scene, &dir.join("out")).fails_naming(&["step = 1e-12 needs 1.000e12 steps", "max_steps = 100000"]);
 }
@@ -347,14 +349,16 @@ fn edited_gimbal(dir: &Path, from: &str, to: &str) -> PathBuf {
 fn deleting_a_kinematic_equation_is_an_error() {
     let dir = folder("no_q2_equation");
     let path = edited_gimbal(&dir, "Q2' = U2 ", "");
-    kane(&["check", path.to_str().unwrap()]).fails_naming(&["Q2 orients C but has no kinematic equation", "g.al:33:1"]);
+    kane(&["check", path.to_str().unwrap()])
+        .fails_naming(&["Q2 orients C but has no kinematic equation", "g.al:33:1"]);
 }
 
 #[test]
 fn unknown_units_are_errors() {
     let dir = folder("unknown_units");
     let path = edited_gimbal(&dir, "T = SEC", "T = SCE");
-    let path = file(&dir, "g.al", &std::fs::read_to_string(path).unwrap().replacen("Q1 = DEG", "Q1 = DGE", 1));
+    let path =
+        file(&dir, "g.al", &std::fs::read_to_string(path).unwrap().replacen("Q1 = DEG", "Q1 = DGE", 1));
     kane(&["check", path.to_str().unwrap()]).fails_naming(&["DGE", "SCE", "DEG"]);
 }
 
@@ -364,7 +368,11 @@ fn a_duplicated_load_line_is_a_warning_naming_both_lines() {
     let path = edited_gimbal(&dir, "TORQUE_C> = Z*B1>", "TORQUE_C> = Z*B1>\nTORQUE_C> = Z*B1>");
     let r = kane(&["check", path.to_str().unwrap()]);
     r.ok();
-    assert!(r.stderr.contains("g.al:54:1") && r.stderr.contains("given on line 53 and again on line 54"), "{}", r.stderr);
+    assert!(
+        r.stderr.contains("g.al:54:1") && r.stderr.contains("given on line 53 and again on line 54"),
+        "{}",
+        r.stderr
+    );
 }
 
 #[test]
@@ -428,7 +436,13 @@ fn two_runs_into_one_out_never_mix() {
     let dir = folder("two_runs");
     let out = dir.join("out");
     let scenes: Vec<PathBuf> = (0..2)
-        .map(|k| file(&dir, &format!("g{k}.toml"), &gimbal("", "").replace("10 rad/s", &format!("{} rad/s", 10 + k))))
+        .map(|k| {
+            file(
+                &dir,
+                &format!("g{k}.toml"),
+                &gimbal("", "").replace("10 rad/s", &format!("{} rad/s", 10 + k)),
+            )
+        })
         .collect();
     let alone: Vec<String> = scenes
         .iter()
@@ -470,10 +484,8 @@ fn a_run_killed_between_its_csv_and_its_figures_leaves_the_earlier_set() {
     let out = dir.join("out");
     let good = file(&dir, "good.toml", &gimbal("", ""));
     run(&good, &out).ok();
-    let before: Vec<Vec<u8>> = ["trajectory.csv", "trajectory.png"]
-        .iter()
-        .map(|n| std::fs::read(out.join(n)).unwrap())
-        .collect();
+    let before: Vec<Vec<u8>> =
+        ["trajectory.csv", "trajectory.png"].iter().map(|n| std::fs::read(out.join(n)).unwrap()).collect();
     // A long run streaming its CSV: killed while the CSV is being written, before any figure.
     let long = file(&dir, "long.toml", &top("60 deg", "10 rad/s", 5e4, 0.01, ""));
     let mut child = Command::new(bins::gyro_sim())
@@ -498,10 +510,8 @@ fn a_run_killed_between_its_csv_and_its_figures_leaves_the_earlier_set() {
     }
     child.kill().unwrap();
     child.wait().unwrap();
-    let after: Vec<Vec<u8>> = ["trajectory.csv", "trajectory.png"]
-        .iter()
-        .map(|n| std::fs::read(out.join(n)).unwrap())
-        .collect();
+    let after: Vec<Vec<u8>> =
+        ["trajectory.csv", "trajectory.png"].iter().map(|n| std::fs::read(out.join(n)).unwrap()).collect();
     assert!(before == after, "the earlier set is intact");
     // The next run into the folder is complete and clears the killed run's staging folder? It
     // leaves it (owned by a dead process); it never mixes with the set.
@@ -562,4 +572,22 @@ fn a_state_turning_nan_is_named_with_the_time_and_the_last_good_state() {
     let error = gyro_sim::solve::solve_bound(&problem, &Blowup).unwrap_err().to_string();
     assert!(error.contains("state Q is not finite (NaN) at t = 1.01"), "{error}");
     assert!(error.contains("the last good state, at t = 1: Q = 0.4000000"), "{error}");
+}
+
+#[test]
+fn rows_streamed_to_disk_are_the_bytes_written_at_once() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../gyro-sim/scenes");
+    for preset in ["ejs/cusp.toml", "paper/trial3.toml"] {
+        let text = std::fs::read_to_string(root.join(preset)).unwrap();
+        // Without `accuracy` a run with a folder streams its rows (refinement keeps them).
+        let text: String = text.lines().filter(|l| !l.starts_with("accuracy")).collect::<Vec<_>>().join("\n");
+        let scene = gyro_sim::scene::Scene::parse(preset, &text).unwrap();
+        let dir = folder(&format!("streamed_{}", preset.replace('/', "_")));
+        let streamed = gyro_sim::run::run(&scene, Some(&dir.join("streamed"))).unwrap();
+        let at_once = gyro_sim::run::run(&scene, None).unwrap();
+        gyro_sim::output::write(&at_once.trajectory, &dir.join("at_once")).unwrap();
+        let read = |d: &str| std::fs::read(dir.join(d).join("trajectory.csv")).unwrap();
+        assert!(read("streamed") == read("at_once"), "{preset}: the streamed CSV differs");
+        assert_eq!(streamed.written.unwrap().rows, at_once.trajectory.rows.len());
+    }
 }

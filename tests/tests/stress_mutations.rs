@@ -41,9 +41,32 @@ fn presets() -> Vec<(String, String)> {
 
 /// Values a mutation puts in place of a value.
 const REPLACEMENTS: &[&str] = &[
-    "\"text\"", "true", "[1, 2]", "{ a = 1 }", "42", "1e308", "-1e308", "0", "-1", "0.0", "1e-308",
-    "5e-324", "9223372036854775807", "-9223372036854775808", "nan", "inf", "-inf", "\"nan deg\"",
-    "\"inf rad/s\"", "\"1e400 rad/s\"", "\"10 furlongs\"", "\"\"", "[]", "\"-0 deg\"", "1e-9", "1e9",
+    "\"text\"",
+    "true",
+    "[1, 2]",
+    "{ a = 1 }",
+    "42",
+    "1e308",
+    "-1e308",
+    "0",
+    "-1",
+    "0.0",
+    "1e-308",
+    "5e-324",
+    "9223372036854775807",
+    "-9223372036854775808",
+    "nan",
+    "inf",
+    "-inf",
+    "\"nan deg\"",
+    "\"inf rad/s\"",
+    "\"1e400 rad/s\"",
+    "\"10 furlongs\"",
+    "\"\"",
+    "[]",
+    "\"-0 deg\"",
+    "1e-9",
+    "1e9",
 ];
 
 /// One mutation of `lines` (never the two lines [`presets`] added).
@@ -99,7 +122,10 @@ fn try_scene(name: &str, text: &str, out: &Path) -> Outcome {
     }));
     match result {
         Err(p) => Outcome::Panicked(
-            p.downcast_ref::<String>().cloned().or(p.downcast_ref::<&str>().map(|s| s.to_string())).unwrap_or_default(),
+            p.downcast_ref::<String>()
+                .cloned()
+                .or(p.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_default(),
         ),
         Ok(Ok(summary)) => {
             if summary.trajectory.rows.iter().flatten().all(|v| v.is_finite()) {
