@@ -71,7 +71,7 @@ impl Rows {
             self.kept.push(row);
             return Ok(());
         }
-        if index % self.stride == 0 {
+        if index.is_multiple_of(self.stride) {
             self.kept.push(row);
             if self.kept.len() > MAX_KEPT_ROWS {
                 self.stride *= 2;
