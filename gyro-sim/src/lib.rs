@@ -10,6 +10,7 @@
 pub mod batch;
 pub mod cli;
 pub mod compiled;
+mod diagnose;
 pub mod events;
 pub mod initial;
 pub mod instant;
@@ -21,6 +22,7 @@ pub mod problem;
 mod refine;
 pub mod registry;
 pub mod resolve;
+pub mod rows;
 pub mod run;
 pub mod scene;
 pub mod solve;

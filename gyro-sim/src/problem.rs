@@ -48,6 +48,9 @@ pub struct Problem {
     pub unit_norms: Vec<Vec<usize>>,
     /// Events to find (`[[events]]`).
     pub events: Vec<crate::events::EventSpec>,
+    /// Where the rows go as they are produced (then only a bounded set stays in memory); none:
+    /// every row is kept. Leave it none when an accuracy is asked: refinement compares runs.
+    pub rows_to: Option<crate::rows::RowStream>,
 }
 
 /// Most output rows a run may ask for (every row is held in memory until it is written).

@@ -29,7 +29,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
     let times = output_times(scene.t_final, scene.output_step);
     let method = method(scene);
     let written = picks(scene, info)?;
-    Ok(Problem {
+    let problem = Problem {
         title: scene.title.clone(),
         model: info,
         model_key: scene.model.clone(),
@@ -48,7 +48,42 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
         picks: with_view_picks(scene, info, written)?,
         unit_norms: unit_norms(scene, info)?,
         events: crate::events::resolve::events(scene, info)?,
-    })
+        rows_to: None,
+    };
+    if scene.axle.is_none() {
+        euler_parameters_named_e(scene, info, &problem.initial)?;
+    }
+    Ok(problem)
+}
+
+/// Without `[axle]`, states named E1, E2, E3, E4 (the model language's `EULER` parameters as
+/// the models name them) must start at unit norm: an error at the first of them `[initial]`
+/// sets (zero or non-unit parameters would scale or remove gravity silently).
+fn euler_parameters_named_e(scene: &Scene, info: &ModelInfo, y: &[f64]) -> Result<(), SceneError> {
+    let Some(group) = ["E4", "E1", "E2", "E3"].iter().map(|n| info.state(n)).collect::<Option<Vec<usize>>>()
+    else {
+        return Ok(());
+    };
+    let q = [y[group[0]], y[group[1]], y[group[2]], y[group[3]]];
+    if norm_error(&q) <= UNIT_NORM_TOLERANCE {
+        return Ok(());
+    }
+    let span = scene
+        .initial
+        .iter()
+        .filter(|(name, _, _)| info.state(name).is_some_and(|i| group.contains(&i)))
+        .map(|(_, _, span)| span.clone())
+        .min_by_key(|span| span.start)
+        .unwrap_or(0..0);
+    Err(scene.error_at(
+        span,
+        format!(
+            "the Euler parameters E4, E1, E2, E3 = ({}) have norm {}, not 1",
+            q.map(|x| format!("{x}")).join(", "),
+            q.iter().map(|x| x * x).sum::<f64>().sqrt()
+        ),
+        &format!("Euler parameters must have unit norm (to {UNIT_NORM_TOLERANCE:e}): normalise them, or give the orientation under [axle]"),
+    ))
 }
 
 /// Figures are drawn from at most this many points in all.
@@ -384,12 +419,18 @@ mod tests {
             "{e}"
         );
         assert!(e.contains("tilt = \"60 deg\" under [axle]"), "{e}");
-        // Within 1e-9 of unit norm is accepted, and without [axle] nothing is checked.
+        // Within 1e-9 of unit norm is accepted; without [axle], states named E1..E4 are checked.
         let c = 30f64.to_radians().cos();
         let s = 30f64.to_radians().sin();
         let ok = format!("[initial]\nE4 = {c}\nE1 = {}\nE2 = 0.0\nE3 = 0.0\n[axle]\n{NAMES}", s + 5e-10);
         assert!(initial(&ok).is_ok());
-        assert!(initial("[initial]\nE4 = 1.0\nE1 = 0.5\nE2 = 0.0\nE3 = 0.0\n").is_ok());
+        let e = initial("[initial]\nE4 = 1.0\nE1 = 0.5\nE2 = 0.0\nE3 = 0.0\n").unwrap_err().to_string();
+        assert!(
+            e.starts_with(
+                "top.toml:5:6: error: the Euler parameters E4, E1, E2, E3 = (1, 0.5, 0, 0) have norm 1.118"
+            ),
+            "{e}"
+        );
     }
 
     #[test]

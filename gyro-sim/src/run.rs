@@ -24,6 +24,24 @@ pub enum RunError {
     /// Writing the results failed.
     #[error("{0}")]
     Write(#[from] WriteError),
+    /// The scene's `[view]` tables are wrong (checked before integrating).
+    #[error("{}: {error}\n  help: fix the [view] tables of the scene", scene.display())]
+    View {
+        /// The scene file.
+        scene: std::path::PathBuf,
+        /// What is wrong.
+        error: crate::output::ViewError,
+    },
+    /// The integration stopped after some rows were written: they are kept, marked partial.
+    #[error("{error}\n  rows computed before it: {rows}, in {} (partial; the folder's earlier results are unchanged)", path.display())]
+    Partial {
+        /// Why it stopped.
+        error: SolveError,
+        /// The partial CSV.
+        path: std::path::PathBuf,
+        /// Its rows.
+        rows: usize,
+    },
 }
 
 /// What a run made.
@@ -40,10 +58,33 @@ pub fn run(scene: &Scene, out_dir: Option<&Path>) -> Result<RunSummary, RunError
     run_with(scene, &Registry::builtin(), out_dir)
 }
 
-/// Runs a scene with the models of `registry`.
+/// Runs a scene with the models of `registry`. With `out_dir` (and no accuracy asked) rows are
+/// written as they are produced and the trajectory keeps a bounded, thinned set of them (see
+/// [`crate::rows`]); a run that fails after some rows keeps them as `trajectory.partial.csv`.
 pub fn run_with(scene: &Scene, registry: &Registry, out_dir: Option<&Path>) -> Result<RunSummary, RunError> {
-    let problem = resolve(scene, registry)?;
-    let trajectory = solve(&problem, registry)?;
-    let written = out_dir.map(|dir| output::write_set(&trajectory, scene.view.as_ref(), dir)).transpose()?;
-    Ok(RunSummary { trajectory, written })
+    if let Some(view) = &scene.view {
+        view.check().map_err(|error| RunError::View { scene: scene.path.clone(), error })?;
+    }
+    let mut problem = resolve(scene, registry)?;
+    let Some(dir) = out_dir else {
+        return Ok(RunSummary { trajectory: solve(&problem, registry)?, written: None });
+    };
+    if problem.accuracy.is_some() {
+        // Refinement compares whole runs in memory; the run chosen is written at the end.
+        let trajectory = solve(&problem, registry)?;
+        let written = output::write_set(&trajectory, scene.view.as_ref(), dir)?;
+        return Ok(RunSummary { trajectory, written: Some(written) });
+    }
+    let set = output::StreamedSet::begin(dir, &crate::solve::columns(&problem))?;
+    problem.rows_to = Some(set.stream());
+    match solve(&problem, registry) {
+        Ok(trajectory) => {
+            let written = set.finish(&trajectory, scene.view.as_ref())?;
+            Ok(RunSummary { trajectory, written: Some(written) })
+        }
+        Err(error) => match set.keep_partial()? {
+            Some((path, rows)) => Err(RunError::Partial { error, path, rows }),
+            None => Err(error.into()),
+        },
+    }
 }

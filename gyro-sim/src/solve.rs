@@ -8,12 +8,14 @@ use std::time::Instant;
 use kane_model::runtime::{GeneratedModel, ModelInfo};
 use thiserror::Error;
 
+use crate::diagnose;
 use crate::events::watch::Watch;
 use crate::events::EventLog;
 use crate::ode::{self, Method, OdeError, Stats, System};
 use crate::problem::{Pick, Problem};
 use crate::refine::refine;
 use crate::registry::Registry;
+use crate::rows::Rows;
 use crate::trajectory::{Column, Trajectory};
 use crate::unit_norm::{normalise, NormDrift, UnitNorm};
 
@@ -24,7 +26,7 @@ pub enum SolveError {
     #[error("unknown model `{0}`")]
     UnknownModel(String),
     /// A state became NaN or infinite.
-    #[error("integration failed: state {name} is not finite ({value}) at t = {time}")]
+    #[error("integration failed: state {name} is not finite ({value}) at t = {time}; the last good state, at t = {last_time}: {last_state}")]
     NonFiniteState {
         /// The state.
         name: String,
@@ -32,7 +34,49 @@ pub enum SolveError {
         time: f64,
         /// Its value.
         value: f64,
+        /// The time of the last state written (or the start).
+        last_time: f64,
+        /// That state, `NAME = value unit, ...`.
+        last_state: String,
     },
+    /// The mass matrix of the speeds is singular or indefinite (a zero or negative mass or
+    /// inertia, or bodies that lose a degree of freedom in this configuration).
+    #[error("integration failed: mass matrix {} at t = {time}, {configuration}: its pivot for {speed} is {pivot:e}, not positive\n  help: check for zero or negative masses and inertias (parameters), or start away from this configuration (a gimbal at lock with massless gimbals)", if *pivot < 0.0 { "indefinite" } else { "singular" })]
+    SingularMassMatrix {
+        /// When.
+        time: f64,
+        /// The coordinates, `Q1 = 0 deg, ...`.
+        configuration: String,
+        /// The speed whose pivot is not positive.
+        speed: String,
+        /// The pivot (zero, negative or not finite).
+        pivot: f64,
+    },
+    /// A rate is NaN or infinite (an overflow when infinite) at a finite state.
+    #[error("integration failed: the rate of {name} is {value} at t = {time} (overflow or a division by zero in the equations) at the state {state}\n  help: check the parameters and initial values for extreme magnitudes")]
+    RateNotFinite {
+        /// The state whose rate it is.
+        name: String,
+        /// When.
+        time: f64,
+        /// The rate.
+        value: f64,
+        /// The state, `NAME = value unit, ...`.
+        state: String,
+    },
+    /// A state or rate so large that the next steps overflow.
+    #[error("integration failed: overflow: {name} is {value:e} at t = {time}, beyond what double precision can step (about 1e150)\n  help: scale the model's units or lower the initial values")]
+    Overflow {
+        /// The state, or the state whose rate it is (`W1'`).
+        name: String,
+        /// When.
+        time: f64,
+        /// Its value.
+        value: f64,
+    },
+    /// Writing a row as it was produced failed.
+    #[error("integration stopped: writing a row failed: {0}")]
+    Rows(String),
     /// An output became NaN or infinite.
     #[error("integration failed: {name} is not finite ({value}) at t = {time}")]
     NonFiniteOutput {
@@ -190,6 +234,9 @@ pub fn solve_bound<B: BoundModel>(problem: &Problem, full_sys: &B) -> Result<Tra
     let keep = integrated_states(problem);
     let sys = Reduced::new(full_sys, keep.clone());
     let columns = columns(problem);
+    if let Some(e) = diagnose::mass_matrix_error(full_sys, 0.0, &problem.initial) {
+        return Err(e);
+    }
     let integrate_at = |method: Method| integrate(problem, &sys, &keep, &columns, method);
     let start = Instant::now();
     let (Integration { stats, rows, plot_rows, y_end, norm_drift, events }, accuracy) =
@@ -227,7 +274,7 @@ pub fn solve_bound<B: BoundModel>(problem: &Problem, full_sys: &B) -> Result<Tra
 }
 
 /// The kinetic-energy output of a model, if it has one that reads no rates.
-fn kinetic_energy_output(info: &ModelInfo) -> Option<usize> {
+pub(crate) fn kinetic_energy_output(info: &ModelInfo) -> Option<usize> {
     info.outputs.iter().position(|o| o.kind == "kinetic_energy" && !o.needs_rates && o.columns.len() == 1)
 }
 
@@ -284,12 +331,13 @@ fn integrate<B: BoundModel>(
     let n = info.state_names.len();
     let mut full_y = vec![0.0; n];
     let mut y_end = problem.initial.clone();
-    let mut rows: Vec<Vec<f64>> = Vec::with_capacity(problem.times.len());
+    let mut t_good = 0.0;
+    let mut rows = Rows::streamed(problem.rows_to.clone());
     let mut dy = vec![0.0; n];
     let mut bad: Option<SolveError> = None;
     let y_start: Vec<f64> = keep.iter().map(|k| problem.initial[*k]).collect();
     let all_times = merged(&problem.times, &problem.plot_times);
-    let mut plot_rows: Vec<Vec<f64>> = Vec::new();
+    let mut plot_rows = Rows::thinned(problem.rows_to.is_some());
     let mut next_output = 0;
     let groups = reduced_groups(&problem.unit_norms, keep);
     let held = UnitNorm::new(sys, &groups, norm_threshold(method));
@@ -297,6 +345,7 @@ fn integrate<B: BoundModel>(
         sys.expand(y_red, &mut full_y);
         normalise(&problem.unit_norms, &mut full_y);
         y_end.copy_from_slice(&full_y);
+        t_good = t;
         let row = match row_at(problem, sys.inner, columns, t, &full_y, &mut dy) {
             Ok(row) => row,
             Err(e) => {
@@ -305,11 +354,14 @@ fn integrate<B: BoundModel>(
             }
         };
         if !problem.plot_times.is_empty() {
-            plot_rows.push(row.clone());
+            let _ = plot_rows.push(row.clone());
         }
         if problem.times.get(next_output) == Some(&t) {
             next_output += 1;
-            rows.push(row);
+            if let Err(e) = rows.push(row) {
+                bad = Some(SolveError::Rows(e));
+                return ControlFlow::Break(());
+            }
         }
         ControlFlow::Continue(())
     };
@@ -334,27 +386,30 @@ fn integrate<B: BoundModel>(
         }
         if let (Some(row), Some(state)) = (watch.stop_row.take(), watch.stop_state.take()) {
             if !problem.plot_times.is_empty() {
-                plot_rows.push(row.clone());
+                let _ = plot_rows.push(row.clone());
             }
-            rows.push(row);
+            rows.push(row).map_err(SolveError::Rows)?;
             y_end = state;
         }
         events = watch.log;
         run.map(|w| w.stats)
     };
-    let stats = result.map_err(|e| match e {
-        OdeError::NonFinite { time, index, value } => {
-            SolveError::NonFiniteState { name: info.state_names[keep[index]].to_string(), time, value }
-        }
-        other => SolveError::Ode(other),
-    })?;
-    match bad {
-        Some(e) => Err(e),
-        None => {
-            let norm_drift = (!groups.is_empty()).then(|| held.drift());
-            Ok(Integration { stats, rows, plot_rows, y_end, norm_drift, events })
-        }
-    }
+    let outcome = match (result, bad) {
+        (Ok(stats), None) => Ok(stats),
+        (Ok(_), Some(e)) => Err(e),
+        (Err(OdeError::NonFinite { time, index, value }), _) => Err(SolveError::NonFiniteState {
+            name: info.state_names[keep[index]].to_string(),
+            time,
+            value,
+            last_time: t_good,
+            last_state: diagnose::state_text(info, &y_end),
+        }),
+        (Err(other), _) => Err(SolveError::Ode(other)),
+    };
+    let stats = outcome.map_err(|e| diagnose::explain(sys.inner, e, t_good, &y_end))?;
+    let norm_drift = (!groups.is_empty()).then(|| held.drift());
+    let (rows, plot_rows) = (rows.into_rows(), plot_rows.into_rows());
+    Ok(Integration { stats, rows, plot_rows, y_end, norm_drift, events })
 }
 
 /// The row at `(t, full_y)`: `t`, then the picks' columns (`dy` the scratch for the speed rates

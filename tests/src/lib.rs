@@ -2,6 +2,8 @@
 //! gyro-sim's tests share: generated code against the interpreted equations of the same model,
 //! and runs against reference trajectories.
 
+pub mod bins;
+
 use kane_model::expr::{Arena, ExprId};
 use kane_model::mechanics::KaneEquations;
 use kane_model::runtime::GeneratedModel;

@@ -11,7 +11,7 @@ pub fn print_summary(title: &str, summary: &run::RunSummary) {
         None => String::new(),
     };
     let files = match &summary.written {
-        Some(w) => format!("; wrote {} rows to {} and {}", t.rows.len(), w.csv.display(), w.plot.display()),
+        Some(w) => format!("; wrote {} rows to {} and {}", w.rows, w.csv.display(), w.plot.display()),
         None => String::new(),
     };
     println!(

@@ -1,19 +1,70 @@
-//! The CSV of a run: `t`, then the columns, every output time.
+//! The CSV of a run: `t`, then the columns, every output time; written from a table at once, or
+//! row by row while the run goes ([`CsvStream`]).
 
-use std::path::Path;
+use std::fs::File;
+use std::path::{Path, PathBuf};
 
+use super::write::DisplayRows;
 use super::{write_atomically, Table};
+use crate::rows::RowSink;
 
 /// Writes `table` as CSV to `path` (atomically).
 pub fn write_csv(table: &Table, path: &Path) -> Result<(), String> {
     write_atomically(path, |tmp| {
         let mut w = csv::Writer::from_path(tmp).map_err(|e| format!("{}: {e}", tmp.display()))?;
-        let mut header = vec!["t".to_string()];
-        header.extend(table.columns.iter().map(|c| c.name.clone()));
-        w.write_record(&header).map_err(|e| e.to_string())?;
+        w.write_record(header(table)).map_err(|e| e.to_string())?;
         for row in &table.rows {
-            w.write_record(row.iter().map(|v| v.to_string())).map_err(|e| e.to_string())?;
+            write_row(&mut w, row)?;
         }
         w.flush().map_err(|e| e.to_string())
     })
+}
+
+/// `t` and the columns' names.
+fn header(table: &Table) -> Vec<String> {
+    let mut header = vec!["t".to_string()];
+    header.extend(table.columns.iter().map(|c| c.name.clone()));
+    header
+}
+
+/// One row, each value as Rust prints it (the shortest text that reads back the same).
+fn write_row<W: std::io::Write>(w: &mut csv::Writer<W>, row: &[f64]) -> Result<(), String> {
+    w.write_record(row.iter().map(|v| v.to_string())).map_err(|e| e.to_string())
+}
+
+/// A CSV written row by row as a run produces rows (model units in, display units out): the
+/// same text [`write_csv`] writes for the same rows.
+pub struct CsvStream {
+    path: PathBuf,
+    writer: Option<csv::Writer<File>>,
+    display: DisplayRows,
+    rows: usize,
+}
+
+impl CsvStream {
+    /// Creates `path` with the header of `columns` (a run's columns, model units).
+    pub(crate) fn create(path: &Path, columns: &[crate::trajectory::Column]) -> Result<CsvStream, String> {
+        let (display, shown) = DisplayRows::new(columns);
+        let table = Table { title: String::new(), columns: shown, rows: Vec::new(), plot_rows: Vec::new() };
+        let mut w = csv::Writer::from_path(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        w.write_record(header(&table)).map_err(|e| format!("{}: {e}", path.display()))?;
+        Ok(CsvStream { path: path.to_path_buf(), writer: Some(w), display, rows: 0 })
+    }
+
+    /// Flushes and closes the file; the rows written.
+    pub(crate) fn finish(&mut self) -> Result<usize, String> {
+        if let Some(mut w) = self.writer.take() {
+            w.flush().map_err(|e| format!("{}: {e}", self.path.display()))?;
+        }
+        Ok(self.rows)
+    }
+}
+
+impl RowSink for CsvStream {
+    fn row(&mut self, row: &[f64]) -> Result<(), String> {
+        let w = self.writer.as_mut().ok_or_else(|| format!("{}: already closed", self.path.display()))?;
+        write_row(w, &self.display.row(row)).map_err(|e| format!("{}: {e}", self.path.display()))?;
+        self.rows += 1;
+        Ok(())
+    }
 }

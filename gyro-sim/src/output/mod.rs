@@ -4,15 +4,16 @@
 mod csv_file;
 mod plot;
 mod set;
+mod streamed;
 mod view;
 mod write;
 
-pub use csv_file::write_csv;
+pub use csv_file::{write_csv, CsvStream};
 pub use plot::{
-    write_elevation, write_plot, write_sweep_metric, write_trace, write_work_precision, MemberPoint,
-    MetricAxes,
+    write_elevation, write_plot, write_sweep_metric, write_trace, write_work_precision, MemberPoint, MetricAxes,
 };
-pub use set::SET_FILES;
+pub use set::{PARTIAL_CSV, SET_FILES};
+pub use streamed::StreamedSet;
 pub use view::{write_view, ArrowView, BodyView, Orientation, Shape, TraceView, ViewError, ViewSpec};
 pub use write::{column_name, display_table, write, write_set, WriteError, Written};
 

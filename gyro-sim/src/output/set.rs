@@ -10,7 +10,10 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 /// The files a run may put in its folder.
 pub const SET_FILES: &[&str] =
-    &["trajectory.csv", "events.csv", "trajectory.png", "elevation.png", "axle_trace.png", "view.html"];
+    &["trajectory.csv", "events.csv", "trajectory.png", "elevation.png", "axle_trace.png", "view.html", PARTIAL_CSV];
+
+/// Where a failed run's rows go, beside the earlier set (removed when a later set is complete).
+pub const PARTIAL_CSV: &str = "trajectory.partial.csv";
 
 /// The lock file that serialises putting sets in place.
 const LOCK_FILE: &str = ".gyro-sim.lock";
@@ -41,6 +44,20 @@ impl Staging {
     /// Where to write the file that will be `dir/name`.
     pub(crate) fn path(&self, name: &str) -> PathBuf {
         self.stage.join(name)
+    }
+
+    /// Puts the staged file `name` in place as `dir/as_name` under the folder's lock, leaving
+    /// the other files of the folder as they are; the rest of the staging is dropped.
+    pub(crate) fn commit_one(mut self, name: &str, as_name: &str) -> Result<PathBuf, String> {
+        let fail = |p: &Path, e: std::io::Error| format!("{}: {e}", p.display());
+        let lock_path = self.dir.join(LOCK_FILE);
+        let lock = File::create(&lock_path).map_err(|e| fail(&lock_path, e))?;
+        lock.lock().map_err(|e| fail(&lock_path, e))?;
+        let target = self.dir.join(as_name);
+        fs::rename(self.stage.join(name), &target).map_err(|e| fail(&target, e))?;
+        self.committed = true;
+        let _ = fs::remove_dir_all(&self.stage);
+        Ok(target)
     }
 
     /// Puts every staged file in place under the folder's lock and removes the set files it

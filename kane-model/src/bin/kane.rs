@@ -265,12 +265,7 @@ fn gen(file: PathBuf, out: Option<PathBuf>, stats: bool) -> Result<(), String> {
     })?;
     let source = kane_model::codegen::to_source(&emitted).map_err(|e| e.to_string())?;
     match out {
-        Some(path) => {
-            // Written to a temporary file, then renamed: never a half-written module.
-            let tmp = path.with_extension("rs.tmp");
-            std::fs::write(&tmp, &source).map_err(|e| format!("{}: {e}", tmp.display()))?;
-            std::fs::rename(&tmp, &path).map_err(|e| format!("{}: {e}", path.display()))?;
-        }
+        Some(path) => write_output(&path, &source)?,
         None => print!("{source}"),
     }
     if stats {
@@ -280,6 +275,30 @@ fn gen(file: PathBuf, out: Option<PathBuf>, stats: bool) -> Result<(), String> {
         );
     }
     Ok(())
+}
+
+/// Writes `text` to `path`: a regular file (or a new one) through a temporary file of this
+/// process and a rename, never half-written; anything else (a symlink, a device such as
+/// `/dev/null`, a pipe) is written through in place, never replaced.
+fn write_output(path: &Path, text: &str) -> Result<(), String> {
+    let fail = |p: &Path, e: std::io::Error| format!("{}: {e}", p.display());
+    let regular = match std::fs::symlink_metadata(path) {
+        Ok(meta) => meta.file_type().is_file(),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => true,
+        Err(e) => return Err(fail(path, e)),
+    };
+    if !regular {
+        return std::fs::write(path, text).map_err(|e| fail(path, e));
+    }
+    let name = path.file_name().map_or("out".into(), |n| n.to_string_lossy().into_owned());
+    let tmp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
+    let result = std::fs::write(&tmp, text)
+        .map_err(|e| fail(&tmp, e))
+        .and_then(|_| std::fs::rename(&tmp, path).map_err(|e| fail(path, e)));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
 }
 
 /// `kane compare`: hand-derived equations against the derived ones, and how they differ.

@@ -64,6 +64,9 @@ impl Diagnostic {
     }
 }
 
+/// Most diagnostics a report shows; the rest are counted ("and N more").
+pub const MAX_SHOWN: usize = 50;
+
 /// 1-based line and column of a byte offset.
 pub fn line_column(src: &str, offset: usize) -> (usize, usize) {
     let offset = offset.min(src.len());
@@ -87,7 +90,7 @@ pub struct Report {
 
 impl fmt::Display for Report {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for d in &self.diagnostics {
+        for d in self.diagnostics.iter().take(MAX_SHOWN) {
             let (line, col) = line_column(&self.source, d.span.start);
             writeln!(f, "{}:{line}:{col}: {}: {}", self.file, d.severity.label(), d.message)?;
             for (span, note) in &d.notes {
@@ -97,6 +100,9 @@ impl fmt::Display for Report {
             if let Some(h) = &d.help {
                 writeln!(f, "  help: {h}")?;
             }
+        }
+        if let Some(rest) = self.not_shown() {
+            writeln!(f, "{rest}")?;
         }
         Ok(())
     }
@@ -156,13 +162,28 @@ impl Report {
         let src = NamedSource::new(self.file.clone(), self.source.clone());
         let handler = GraphicalReportHandler::new_themed(GraphicalTheme::unicode_nocolor());
         let mut out = String::new();
-        for d in &self.diagnostics {
+        for d in self.diagnostics.iter().take(MAX_SHOWN) {
             let (line, col) = line_column(&self.source, d.span.start);
             let md = MietteDiag { d, src: &src, location: format!("{}:{line}:{col}", self.file) };
             if handler.render_report(&mut out, &md).is_err() {
                 out.push_str(&format!("{md}\n"));
             }
         }
+        if let Some(rest) = self.not_shown() {
+            out.push_str(&rest);
+            out.push('\n');
+        }
         out
+    }
+
+    /// `{file}: and N more errors (and M warnings) not shown ...` past [`MAX_SHOWN`].
+    fn not_shown(&self) -> Option<String> {
+        let rest = self.diagnostics.get(MAX_SHOWN..).filter(|r| !r.is_empty())?;
+        let errors = rest.iter().filter(|d| d.severity == Severity::Error).count();
+        let warnings = rest.len() - errors;
+        Some(format!(
+            "{}: and {errors} more errors and {warnings} more warnings not shown (the first {MAX_SHOWN} are); fix these and check again",
+            self.file
+        ))
     }
 }
