@@ -31,7 +31,7 @@ impl<'a, B: BoundModel> EventFns<'a, B> {
     /// `events` of `model`, whose parameter values are `params` (model units).
     pub fn new(model: &'a B, events: &'a [EventSpec], params: &'a [f64]) -> Self {
         let n = model.dim();
-        let width = model.info().outputs.iter().map(|o| o.columns.len()).max().unwrap_or(0).max(9);
+        let width = model.info().outputs.iter().map(|o| o.columns.len()).max().unwrap_or(0);
         let scratch = Scratch {
             dy: vec![0.0; n],
             column: vec![0.0; width],

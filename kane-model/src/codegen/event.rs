@@ -59,7 +59,8 @@ pub struct EventExprError {
 
 type Res<T> = Result<T, EventExprError>;
 
-/// Parses `src`, differentiates where it asks and lowers it, reading `names` (and `t`, `pi`).
+/// Parses `src`, differentiates where it asks and lowers it, reading `names` (and `t`, `pi`,
+/// unless `names` has those: the model's names come first).
 pub fn lower_event(src: &str, names: &[EventName]) -> Res<EventCode> {
     let ast = parse_expression(src).map_err(|d| EventExprError {
         span: d.span,
