@@ -548,6 +548,7 @@ impl gyro_sim::solve::BoundModel for Blowup {
         &BLOWUP
     }
     fn output(&self, _: usize, _: f64, _: &[f64], _: &[f64], _: &mut [f64]) {}
+    fn output_rate(&self, _: usize, _: f64, _: &[f64], _: &[f64], _: &mut [f64], _: &mut [f64]) {}
 }
 
 #[test]
@@ -568,6 +569,7 @@ fn a_state_turning_nan_is_named_with_the_time_and_the_last_good_state() {
         written_picks: 2,
         unit_norms: Vec::new(),
         rows_to: None,
+        events: Vec::new(),
     };
     let error = gyro_sim::solve::solve_bound(&problem, &Blowup).unwrap_err().to_string();
     assert!(error.contains("state Q is not finite (NaN) at t = 1.01"), "{error}");

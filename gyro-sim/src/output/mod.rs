@@ -10,7 +10,8 @@ mod write;
 
 pub use csv_file::{write_csv, CsvStream};
 pub use plot::{
-    write_elevation, write_plot, write_sweep_metric, write_trace, write_work_precision, MemberPoint, MetricAxes,
+    write_elevation, write_plot, write_sweep_metric, write_trace, write_work_precision, MemberPoint,
+    MetricAxes,
 };
 pub use set::{PARTIAL_CSV, SET_FILES};
 pub use streamed::StreamedSet;

@@ -9,8 +9,15 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 /// The files a run may put in its folder.
-pub const SET_FILES: &[&str] =
-    &["trajectory.csv", "events.csv", "trajectory.png", "elevation.png", "axle_trace.png", "view.html", PARTIAL_CSV];
+pub const SET_FILES: &[&str] = &[
+    "trajectory.csv",
+    "events.csv",
+    "trajectory.png",
+    "elevation.png",
+    "axle_trace.png",
+    "view.html",
+    PARTIAL_CSV,
+];
 
 /// Where a failed run's rows go, beside the earlier set (removed when a later set is complete).
 pub const PARTIAL_CSV: &str = "trajectory.partial.csv";

@@ -71,7 +71,8 @@ pub(crate) fn finish_set(
     rows: usize,
 ) -> Result<Written, WriteError> {
     if !trajectory.events.names.is_empty() {
-        crate::events::csv::write_events_csv(trajectory, &staging.path("events.csv")).map_err(WriteError::File)?;
+        crate::events::csv::write_events_csv(trajectory, &staging.path("events.csv"))
+            .map_err(WriteError::File)?;
     }
     write_plot(table, &staging.path("trajectory.png")).map_err(WriteError::File)?;
     let mut figures = Vec::new();
