@@ -5,6 +5,7 @@
 
 use std::path::Path;
 
+use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -64,6 +65,29 @@ fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
     (lo - pad, hi + pad)
 }
 
+/// A chart over `x` and `y` on `area`, its mesh drawn with the axis `titles`.
+fn framed<'a, 'b>(
+    area: &'a DrawingArea<BitMapBackend<'b>, Shift>,
+    x: (f64, f64),
+    y: (f64, f64),
+    titles: (&str, &str),
+) -> Result<ChartContext<'a, BitMapBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>, String> {
+    let mut chart = ChartBuilder::on(area)
+        .margin(16)
+        .x_label_area_size(45)
+        .y_label_area_size(80)
+        .build_cartesian_2d(x.0..x.1, y.0..y.1)
+        .map_err(|e| e.to_string())?;
+    chart
+        .configure_mesh()
+        .x_desc(titles.0)
+        .y_desc(titles.1)
+        .axis_desc_style(("sans-serif", 16))
+        .draw()
+        .map_err(|e| e.to_string())?;
+    Ok(chart)
+}
+
 /// The metric against one varied value.
 fn draw_line(
     area: &DrawingArea<BitMapBackend<'_>, Shift>,
@@ -74,19 +98,7 @@ fn draw_line(
     ok.sort_by(|a, b| a.0.total_cmp(&b.0));
     let (x0, x1) = range(points.iter().map(|p| p.x));
     let (y0, y1) = range(ok.iter().map(|p| p.1));
-    let mut chart = ChartBuilder::on(area)
-        .margin(16)
-        .x_label_area_size(45)
-        .y_label_area_size(80)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(|e| e.to_string())?;
-    chart
-        .configure_mesh()
-        .x_desc(axes.varied[0].as_str())
-        .y_desc(axes.metric)
-        .axis_desc_style(("sans-serif", 16))
-        .draw()
-        .map_err(|e| e.to_string())?;
+    let mut chart = framed(area, (x0, x1), (y0, y1), (&axes.varied[0], axes.metric))?;
     let blue = RGBColor(31, 119, 180);
     // A line only through distinct x (a projection of a two-way sweep is markers alone).
     if ok.windows(2).all(|w| w[0].0 < w[1].0) {
@@ -112,19 +124,7 @@ fn draw_map(
     let values = points.iter().filter_map(|p| p.metric);
     let (lo, hi) = values.clone().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
     let shade = |m: f64| viridis(if hi > lo { (m - lo) / (hi - lo) } else { 0.5 });
-    let mut chart = ChartBuilder::on(&chart_area)
-        .margin(16)
-        .x_label_area_size(45)
-        .y_label_area_size(80)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(|e| e.to_string())?;
-    chart
-        .configure_mesh()
-        .x_desc(axes.varied[0].as_str())
-        .y_desc(axes.varied[1].as_str())
-        .axis_desc_style(("sans-serif", 16))
-        .draw()
-        .map_err(|e| e.to_string())?;
+    let mut chart = framed(&chart_area, (x0, x1), (y0, y1), (&axes.varied[0], &axes.varied[1]))?;
     let discs = points.iter().filter_map(|p| p.metric.map(|m| Circle::new((p.x, p.y), 5, shade(m).filled())));
     chart.draw_series(discs).map_err(|e| e.to_string())?;
     let failed =
