@@ -80,6 +80,22 @@ pub trait GeneratedModel {
     /// Output `k` at `(t, y)` into `out` (its columns); `rates` are `u'` when the output needs
     /// them (see [`OutputInfo::needs_rates`]), else ignored.
     fn output(k: usize, t: f64, y: &[f64], rates: &[f64], p: &Self::Params, out: &mut [f64]);
+    /// The normalised Taylor coefficients of the solution through `(t, y)`, orders `0..=order`,
+    /// into `out` (state `i`'s coefficient `k` at `out[i * (order + 1) + k]`, so
+    /// `y_i(t + h) = sum_k out[i * (order + 1) + k] h^k`), with `d = derive(p)`; `work` is
+    /// scratch. False when the model has no Taylor coefficients (the default).
+    #[allow(unused_variables)]
+    fn taylor(
+        t: f64,
+        y: &[f64],
+        p: &Self::Params,
+        d: &Self::Derived,
+        order: usize,
+        out: &mut [f64],
+        work: &mut Vec<f64>,
+    ) -> bool {
+        false
+    }
 }
 
 /// A unit quaternion (scalar first, non-negative) from direction cosines `r` (row by row, an
