@@ -35,6 +35,9 @@ impl System for InstantSystem<'_> {
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
         self.model.rhs(t, y, &self.params, &self.derived, dy, &mut self.regs.borrow_mut())
     }
+    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut Vec<f64>) -> bool {
+        self.model.taylor(t, y, &self.params, &self.derived, order, out, work).is_ok()
+    }
 }
 
 impl BoundModel for InstantSystem<'_> {

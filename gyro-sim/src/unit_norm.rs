@@ -53,6 +53,10 @@ impl<S: System + ?Sized> System for UnitNorm<'_, S> {
         self.inner.rhs(t, y, dy)
     }
 
+    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut Vec<f64>) -> bool {
+        self.inner.taylor(t, y, order, out, work)
+    }
+
     fn project(&self, y: &mut [f64]) -> bool {
         let mut moved = false;
         for group in self.groups {

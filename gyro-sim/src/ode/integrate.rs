@@ -33,6 +33,9 @@ pub fn integrate_limited<S: System + ?Sized>(
     max_steps: usize,
     out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
 ) -> Result<Stats, OdeError> {
+    if let Method::Taylor(tol) = method {
+        return super::taylor::integrate(sys, t0, y0, times, tol, max_steps, out);
+    }
     let limits = Limits { method, max_steps };
     match sys.dim() {
         1 => integrate_n::<S, 1>(sys, t0, y0, times, limits, out),
@@ -69,7 +72,7 @@ fn integrate_n<S: System + ?Sized, const N: usize>(
     let Some(&t_end) = times.last() else { return Ok(stepper.stats()) };
     stepper.set_horizon(t_end);
     // Fixed steps land on every output time, so the step between two is at most the one asked.
-    let interpolates = matches!(method, Method::Adaptive(..)) && method.tableau().dense.is_some();
+    let interpolates = matches!(method, Method::Adaptive(tab, _) if tab.dense.is_some());
     if interpolates {
         stepper.set_stop_time(t_end);
     }

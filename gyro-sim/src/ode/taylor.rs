@@ -1,0 +1,246 @@
+//! The Taylor method. In: a [`System`] that gives its own Taylor coefficients
+//! ([`System::taylor`], generated from the model's equations), `(t0, y0)` and tolerances; out:
+//! one step per [`TaylorStepper::step`], values anywhere in the last step from the Taylor
+//! polynomial itself ([`TaylorStepper::interpolate`]), and the cost in [`Stats`].
+//!
+//! Order and step follow Jorba and Zou (2005) as heyoka applies them: the order is
+//! `p = ceil(-ln(eps) / 2 + 1)` and the step `h = rho / e^2 * exp(-0.7 / (p - 1))`, where
+//! `rho = min(rho_(p-1), rho_p)`, `rho_k = (s / ||y_k||)^(1/k)` over the last two coefficients
+//! (max norms over the states), with `s = 1` and `eps = atol` while `rtol ||y|| <= atol`
+//! (absolute), else `s = ||y||` and `eps = rtol` (relative). Every step is accepted: the
+//! estimate is made before the step, from the series itself.
+
+use std::ops::ControlFlow;
+
+use super::stepper::{Stats, StopReason, DEFAULT_MAX_STEPS};
+use super::{OdeError, System, Tolerances};
+
+/// The lowest order a step takes (the step-size rule reads orders `p - 1` and `p`).
+const MIN_ORDER: usize = 2;
+/// The highest order a step takes (tolerances below 1e-16 ask no more).
+const MAX_ORDER: usize = 40;
+
+/// A Taylor-method stepper for `sys`.
+pub struct TaylorStepper<'a, S: System + ?Sized> {
+    sys: &'a S,
+    tol: Tolerances,
+    t: f64,
+    y: Vec<f64>,
+    /// The last step: where it began, its size, its order and the coefficients there
+    /// (state-major, `order + 1` per state).
+    t_prev: f64,
+    h_prev: f64,
+    order: usize,
+    coeffs: Vec<f64>,
+    work: Vec<f64>,
+    stop: Option<f64>,
+    horizon: Option<f64>,
+    max_steps: usize,
+    stats: Stats,
+}
+
+impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
+    /// A stepper at `(t0, y0)`. An error when `y0` is not finite or not of the system's
+    /// dimension, or when the system has no Taylor coefficients.
+    pub fn new(sys: &'a S, t0: f64, y0: &[f64], tol: Tolerances) -> Result<Self, OdeError> {
+        let n = sys.dim();
+        if y0.len() != n {
+            return Err(OdeError::DimensionMismatch { expected: n, found: y0.len() });
+        }
+        check_finite(t0, y0)?;
+        let mut stepper = TaylorStepper {
+            sys,
+            tol,
+            t: t0,
+            y: y0.to_vec(),
+            t_prev: t0,
+            h_prev: 0.0,
+            order: 0,
+            coeffs: y0.to_vec(),
+            work: Vec::new(),
+            stop: None,
+            horizon: None,
+            max_steps: DEFAULT_MAX_STEPS,
+            stats: Stats::default(),
+        };
+        // The coefficients at the start: the check that the system has them, and the first
+        // step's (unless a projection moves the state first).
+        stepper.expand()?;
+        Ok(stepper)
+    }
+
+    /// Steps never pass `t_stop`; the one that reaches it ends on it exactly.
+    pub fn set_stop_time(&mut self, t_stop: f64) {
+        self.stop = Some(t_stop);
+    }
+
+    /// Where the whole integration ends (bounds a step when there is no stop time).
+    pub fn set_horizon(&mut self, t_end: f64) {
+        self.horizon = Some(t_end);
+    }
+
+    /// At most `max` steps in all ([`OdeError::TooManySteps`] before one more).
+    pub fn set_max_steps(&mut self, max: usize) {
+        self.max_steps = max;
+    }
+
+    /// The current time.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// The current state.
+    pub fn y(&self) -> &[f64] {
+        &self.y
+    }
+
+    /// The order of the last step (of the coming one before the first).
+    pub fn order(&self) -> usize {
+        self.order
+    }
+
+    /// The cost so far: steps, and in `rhs_evals` the coefficient passes (order `p` takes `p`;
+    /// pass 0 is one evaluation of the right-hand side, pass `k` up to `k` times its products).
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+
+    /// The order for the tolerances at the current state, and the scale of the norms (1:
+    /// absolute, `||y||`: relative).
+    fn order_and_scale(&self) -> (usize, f64) {
+        let norm = self.y.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let (eps, scale) =
+            if self.tol.rtol * norm <= self.tol.atol { (self.tol.atol, 1.0) } else { (self.tol.rtol, norm) };
+        let p = (-eps.ln() / 2.0 + 1.0).ceil();
+        let p = if p.is_finite() { (p as usize).clamp(MIN_ORDER, MAX_ORDER) } else { MAX_ORDER };
+        (p, scale)
+    }
+
+    /// The coefficients at the current state into `coeffs`, at the order the tolerances ask.
+    fn expand(&mut self) -> Result<f64, OdeError> {
+        let (p, scale) = self.order_and_scale();
+        let n = self.y.len();
+        self.coeffs.resize(n * (p + 1), 0.0);
+        if !self.sys.taylor(self.t, &self.y, p, &mut self.coeffs, &mut self.work) {
+            return Err(OdeError::NoTaylorCoefficients);
+        }
+        self.order = p;
+        self.stats.rhs_evals += p;
+        Ok(scale)
+    }
+
+    /// The step the last two coefficients allow (Jorba and Zou; see the module's text).
+    fn step_size(&self, scale: f64) -> f64 {
+        let p = self.order;
+        let n1 = p + 1;
+        let norm = |k: usize| (0..self.y.len()).fold(0.0f64, |m, i| m.max(self.coeffs[i * n1 + k].abs()));
+        let rho = |k: usize| (scale / norm(k)).powf(1.0 / k as f64);
+        let rho_m = rho(p - 1).min(rho(p));
+        rho_m / std::f64::consts::E.powi(2) * (-0.7 / (p - 1) as f64).exp()
+    }
+
+    /// Takes one step, or none when the stepper is at the stop time already; first the system
+    /// may project the state.
+    pub fn step(&mut self) -> Result<StopReason, OdeError> {
+        if self.stop.is_some_and(|stop| self.t >= stop) {
+            return Ok(StopReason::StopTimeReached);
+        }
+        if self.stats.steps >= self.max_steps {
+            return Err(OdeError::TooManySteps { time: self.t, max: self.max_steps });
+        }
+        let projected = self.sys.project(&mut self.y);
+        // The first step's coefficients were computed by `new` (unless the state moved since).
+        let fresh = self.stats.steps == 0 && !projected;
+        let scale = if fresh { self.order_and_scale().1 } else { self.expand()? };
+        let mut h = self.step_size(scale);
+        let target = self.stop.or(self.horizon);
+        if !h.is_finite() {
+            // A polynomial solution: nothing bounds the step but the way to go.
+            h = target.map_or(1.0, |end| end - self.t);
+        }
+        let lands = target.filter(|end| self.t + h >= *end);
+        if let Some(end) = lands {
+            h = end - self.t;
+        }
+        if self.t + h <= self.t {
+            return Err(OdeError::StepSizeUnderflow { time: self.t, step: h });
+        }
+        let t_new = lands.unwrap_or(self.t + h);
+        let mut y_new = std::mem::take(&mut self.y);
+        self.evaluate(h, &mut y_new);
+        check_finite(t_new, &y_new)?;
+        self.y = y_new;
+        (self.t_prev, self.h_prev, self.t) = (self.t, h, t_new);
+        self.stats.steps += 1;
+        let reached = self.stop.is_some_and(|stop| t_new >= stop);
+        Ok(if reached { StopReason::StopTimeReached } else { StopReason::StepTaken })
+    }
+
+    /// The Taylor polynomial of the last expansion at `tau` past its start, into `out`.
+    fn evaluate(&self, tau: f64, out: &mut [f64]) {
+        let n1 = self.order + 1;
+        for (i, o) in out.iter_mut().enumerate() {
+            let c = &self.coeffs[i * n1..(i + 1) * n1];
+            *o = c.iter().rev().fold(0.0, |acc, ck| acc * tau + ck);
+        }
+    }
+
+    /// The state at `t` in the last step into `out`, from its Taylor polynomial (at its end,
+    /// the step's own value). An error outside the step or for `out` of the wrong length.
+    pub fn interpolate(&self, t: f64, out: &mut [f64]) -> Result<(), OdeError> {
+        if out.len() != self.y.len() {
+            return Err(OdeError::DimensionMismatch { expected: self.y.len(), found: out.len() });
+        }
+        if t == self.t {
+            out.copy_from_slice(&self.y);
+            return Ok(());
+        }
+        if !(self.t_prev <= t && t < self.t) {
+            return Err(OdeError::OutsideStep { t, start: self.t_prev, end: self.t });
+        }
+        self.evaluate(t - self.t_prev, out);
+        Ok(())
+    }
+}
+
+/// [`super::integrate_limited`] for the Taylor method: steps freely to the last time and
+/// evaluates each step's polynomial at the output times inside it.
+pub(super) fn integrate<S: System + ?Sized>(
+    sys: &S,
+    t0: f64,
+    y0: &[f64],
+    times: &[f64],
+    tol: Tolerances,
+    max_steps: usize,
+    mut out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
+) -> Result<Stats, OdeError> {
+    let mut stepper = TaylorStepper::new(sys, t0, y0, tol)?;
+    stepper.set_max_steps(max_steps);
+    let Some(&t_end) = times.last() else { return Ok(stepper.stats()) };
+    stepper.set_stop_time(t_end);
+    let mut inside = vec![0.0; y0.len()];
+    for &target in times {
+        while stepper.t() < target {
+            if stepper.step()? == StopReason::StopTimeReached {
+                break;
+            }
+        }
+        let y = if target == stepper.t() {
+            stepper.y()
+        } else {
+            stepper.interpolate(target, &mut inside)?;
+            &inside
+        };
+        if out(target, y).is_break() {
+            break;
+        }
+    }
+    Ok(stepper.stats())
+}
+
+fn check_finite(t: f64, y: &[f64]) -> Result<(), OdeError> {
+    match y.iter().position(|v| !v.is_finite()) {
+        Some(index) => Err(OdeError::NonFinite { time: t, index, value: y[index] }),
+        None => Ok(()),
+    }
+}
