@@ -8,7 +8,7 @@ use std::time::Instant;
 use kane_model::runtime::{GeneratedModel, ModelInfo};
 use thiserror::Error;
 
-use crate::ode::{self, Method, OdeError, Stats, System};
+use crate::ode::{self, Method, OdeError, Stats, System, TaylorWork};
 use crate::problem::{Pick, Problem};
 use crate::refine::refine;
 use crate::registry::Registry;
@@ -107,7 +107,7 @@ impl<M: GeneratedModel> System for ModelSystem<M> {
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
         M::rhs_derived(t, y, &self.params, &self.derived, dy)
     }
-    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut Vec<f64>) -> bool {
+    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
         M::taylor(t, y, &self.params, &self.derived, order, out, work)
     }
 }
@@ -151,7 +151,7 @@ impl<S: System> System for Reduced<'_, S> {
             dy[i] = fdy[*k];
         }
     }
-    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut Vec<f64>) -> bool {
+    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
         let mut full = self.full.borrow_mut();
         let (fy, fout) = &mut *full;
         let (n, n1) = (fy.len(), order + 1);

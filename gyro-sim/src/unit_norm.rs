@@ -5,7 +5,7 @@
 
 use std::cell::Cell;
 
-use crate::ode::System;
+use crate::ode::{System, TaylorWork};
 
 /// How far the unit-norm states drifted in one run.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -53,7 +53,7 @@ impl<S: System + ?Sized> System for UnitNorm<'_, S> {
         self.inner.rhs(t, y, dy)
     }
 
-    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut Vec<f64>) -> bool {
+    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
         self.inner.taylor(t, y, order, out, work)
     }
 

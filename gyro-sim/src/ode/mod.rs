@@ -25,6 +25,8 @@ pub use stepper::{ErkStepper, Stats, StopReason, DEFAULT_MAX_STEPS};
 pub use taylor::TaylorStepper;
 use thiserror::Error;
 
+pub use kane_model::runtime::TaylorWork;
+
 /// A system `y' = f(t, y)` of fixed dimension; integrators only call `rhs`.
 pub trait System {
     /// Number of states.
@@ -42,7 +44,7 @@ pub trait System {
     /// `y_i(t + h) = sum_k out[i * (order + 1) + k] h^k`); `work` is scratch. False when the
     /// system has none (the default): the Taylor method needs them.
     #[inline(always)]
-    fn taylor(&self, _t: f64, _y: &[f64], _order: usize, _out: &mut [f64], _work: &mut Vec<f64>) -> bool {
+    fn taylor(&self, _t: f64, _y: &[f64], _order: usize, _out: &mut [f64], _work: &mut TaylorWork) -> bool {
         false
     }
 }

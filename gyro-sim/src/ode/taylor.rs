@@ -13,12 +13,12 @@
 use std::ops::ControlFlow;
 
 use super::stepper::{Stats, StopReason, DEFAULT_MAX_STEPS};
-use super::{OdeError, System, Tolerances};
+use super::{OdeError, System, TaylorWork, Tolerances};
 
 /// The lowest order a step takes (the step-size rule reads orders `p - 1` and `p`).
 const MIN_ORDER: usize = 2;
-/// The highest order a step takes (tolerances below 1e-16 ask no more).
-const MAX_ORDER: usize = 40;
+/// The highest order a step takes (tolerances of 1e-16 ask 20).
+const MAX_ORDER: usize = kane_model::runtime::TAYLOR_MAX_ORDER;
 
 /// A Taylor-method stepper for `sys`.
 pub struct TaylorStepper<'a, S: System + ?Sized> {
@@ -32,7 +32,7 @@ pub struct TaylorStepper<'a, S: System + ?Sized> {
     h_prev: f64,
     order: usize,
     coeffs: Vec<f64>,
-    work: Vec<f64>,
+    work: TaylorWork,
     stop: Option<f64>,
     horizon: Option<f64>,
     max_steps: usize,

@@ -2,7 +2,7 @@
 //! spec; out goes a [`ProgramModel`] that evaluates `derive`, `rhs` and each output from the
 //! same SSA sections the printer spells, so both paths compute the same operations.
 
-use crate::runtime::{quaternion_from_dcm, ModelInfo};
+use crate::runtime::{quaternion_from_dcm, ModelInfo, TaylorWork};
 use crate::spec::ModelSpec;
 
 use super::ir::{Input, Program, Section};
@@ -85,7 +85,8 @@ impl ProgramModel {
     }
 
     /// The normalised Taylor coefficients of the solution through `(t, y)` up to `order` into
-    /// `out` (state-major, `order + 1` per state; see [`TaylorProgram::coefficients`]).
+    /// `out` (state-major, `order + 1` per state; see [`TaylorProgram::coefficients`]); false
+    /// for an order above [`super::taylor::recur::MAX_ORDER`].
     #[allow(clippy::too_many_arguments)]
     pub fn taylor(
         &self,
@@ -95,12 +96,11 @@ impl ProgramModel {
         derived: &[f64],
         order: usize,
         out: &mut [f64],
-        work: &mut Vec<f64>,
-    ) -> Result<(), TaylorError> {
+        work: &mut TaylorWork,
+    ) -> Result<bool, TaylorError> {
         let program = self.taylor.as_ref().map_err(Clone::clone)?;
         let at = At { t, y, rates: &[], params, derived };
-        program.coefficients(t, y, |input| at.read(input), order, out, work);
-        Ok(())
+        Ok(program.coefficients(t, y, |input| at.read(input), order, out, work))
     }
 
     /// Output `k` at `(t, y)` into `out` (its columns); `rates` are `u'` when it needs them.

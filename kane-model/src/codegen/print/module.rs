@@ -154,9 +154,8 @@ fn functions(program: &Program, params: &[Ident], quaternion: &[bool]) -> TokenS
 fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident], taylor: bool) -> TokenStream {
     let taylor_method = taylor.then(|| {
         quote! {
-            fn taylor(t: f64, y: &[f64], p: &Params, d: &Derived, order: usize, out: &mut [f64], work: &mut Vec<f64>) -> bool {
-                taylor_derived(t, y, p, d, order, out, work);
-                true
+            fn taylor(t: f64, y: &[f64], p: &Params, d: &Derived, order: usize, out: &mut [f64], work: &mut ::kane_model::runtime::TaylorWork) -> bool {
+                taylor_derived(t, y, p, d, order, out, work)
             }
         }
     });

@@ -18,21 +18,18 @@ pub fn taylor_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream) 
     for (v, op) in program.ops.iter().enumerate() {
         let d = lit(v);
         match op.kind {
-            TKind::Time => first.extend(quote! {
-                __w[#d * __n1] = t;
-                if order > 0 { __w[#d * __n1 + 1] = T::one(); }
-            }),
+            TKind::Time => {}
             TKind::State(i) => {
                 let i = lit(i as usize);
-                first.extend(quote!(__w[#d * __n1] = y[#i];));
+                first.extend(quote!(__w[#d][0] = y[#i];));
             }
             TKind::Const(c) => {
                 let c = constant(c, &scalar);
-                first.extend(quote!(__w[#d * __n1] = #c;));
+                first.extend(quote!(__w[#d][0] = #c;));
             }
             TKind::Input(k) => {
                 let value = input(program.inputs[k as usize]);
-                first.extend(quote!(__w[#d * __n1] = #value;));
+                first.extend(quote!(__w[#d][0] = #value;));
             }
             kind => {
                 first.extend(call(kind, v, quote!(0)));
@@ -50,27 +47,40 @@ pub fn taylor_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream) 
         quote!((#s, #r))
     });
     let results = program.results.iter().map(|r| lit(*r));
+    let n_constants = program.constants.len();
+    let constants = program.constants.iter().map(|c| lit(*c));
+    let time = match program.time {
+        Some(v) => {
+            let v = lit(v);
+            quote!(Some((#v, t)))
+        }
+        None => quote!(None),
+    };
     quote! {
         /// The normalised Taylor coefficients of the solution through `(t, y)`, orders
         /// `0..=order`, into `out` (state `i`'s coefficient `k` at `out[i * (order + 1) + k]`),
-        /// with `d = derive(p)`; `work` is scratch.
+        /// with `d = derive(p)`; `work` is scratch. False (nothing done) for an order above
+        /// `kane_model::runtime::TAYLOR_MAX_ORDER`.
         #[allow(unused_variables, clippy::all)]
         pub fn taylor_derived<T: ::kane_model::__private::num_traits::Float>(
-            t: T, y: &[T], p: &Params, __derived: &Derived, order: usize, out: &mut [T], work: &mut Vec<T>,
-        ) {
+            t: T, y: &[T], p: &Params, __derived: &Derived, order: usize, out: &mut [T],
+            work: &mut Vec<::kane_model::__private::taylor::Row<T>>,
+        ) -> bool {
             use ::kane_model::__private::taylor as __t;
             const STATES: [(usize, usize); #n_pairs] = [#(#pairs),*];
             const RESULTS: [usize; #ns] = [#(#results),*];
-            let __n1 = order + 1;
-            work.clear();
-            work.resize(#nv * __n1, T::zero());
-            let __w = &mut work[..];
+            const CONSTANTS: [usize; #n_constants] = [#(#constants),*];
+            if !__t::start(work, #nv, order, &CONSTANTS, #time) {
+                return false;
+            }
+            let __w = &mut work[..#nv];
             #first
             for __k in 1..order {
-                __t::states(__w, __n1, __k, &STATES);
+                __t::states(__w, __k, &STATES);
                 #rest
             }
-            __t::finish(__w, __n1, y, &RESULTS, out);
+            __t::finish(__w, order, y, &RESULTS, out);
+            true
         }
     }
 }
@@ -105,5 +115,5 @@ fn call(kind: TKind, d: usize, k: TokenStream) -> TokenStream {
     };
     let name = format_ident!("{}", name);
     let d = Literal::usize_unsuffixed(d);
-    quote!(__t::#name(__w, __n1, #k, #d, #(#args),*);)
+    quote!(__t::#name(__w, #k, #d, #(#args),*);)
 }

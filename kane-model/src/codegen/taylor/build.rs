@@ -199,7 +199,9 @@ pub fn build(section: &Section, n_states: usize) -> Result<TaylorProgram, Taylor
         return Err(TaylorError::UnknownState(i));
     }
     let results = (0..n_states).map(|i| map_result(section, &map, i)).collect();
-    Ok(TaylorProgram { inputs: section.inputs.clone(), ops: b.ops, results, states })
+    let constants = (0..b.ops.len()).filter(|v| !b.ops[*v].series).collect();
+    let time = b.ops.iter().position(|op| op.kind == TKind::Time);
+    Ok(TaylorProgram { inputs: section.inputs.clone(), ops: b.ops, results, states, constants, time })
 }
 
 /// The Taylor value holding result `i` of the section.

@@ -109,6 +109,10 @@ pub struct TaylorProgram {
     /// `(value, result)` for each state the operations read: its coefficient `k` is
     /// `result_{k-1} / k`.
     pub states: Vec<(usize, usize)>,
+    /// The constant values (zero past order 0).
+    pub constants: Vec<usize>,
+    /// The value of time, if read.
+    pub time: Option<usize>,
 }
 
 impl TaylorProgram {
@@ -120,7 +124,7 @@ impl TaylorProgram {
     /// The normalised Taylor coefficients of the solution through `(t, y)`, orders `0..=order`,
     /// into `out` (state-major: state `i`'s coefficient `k` at `out[i * (order + 1) + k]`);
     /// `read` gives parameters and derived quantities; `work` is scratch (reused to save
-    /// allocating).
+    /// allocating). False (nothing done) for an order above [`recur::MAX_ORDER`].
     pub fn coefficients<T: Float>(
         &self,
         t: T,
@@ -128,35 +132,32 @@ impl TaylorProgram {
         read: impl Fn(Input) -> T,
         order: usize,
         out: &mut [T],
-        work: &mut Vec<T>,
-    ) {
-        let n1 = order + 1;
-        work.clear();
-        work.resize(self.ops.len() * n1, T::zero());
-        let w = &mut work[..];
+        work: &mut Vec<recur::Row<T>>,
+    ) -> bool {
+        let nv = self.ops.len();
+        if !recur::start(work, nv, order, &self.constants, self.time.map(|v| (v, t))) {
+            return false;
+        }
+        let w = &mut work[..nv];
         for (v, op) in self.ops.iter().enumerate() {
             match op.kind {
-                TKind::Time => {
-                    w[v * n1] = t;
-                    if order > 0 {
-                        w[v * n1 + 1] = T::one();
-                    }
-                }
-                TKind::State(i) => w[v * n1] = y[i as usize],
-                TKind::Const(c) => w[v * n1] = T::from(c).unwrap_or_else(T::nan),
-                TKind::Input(k) => w[v * n1] = read(self.inputs[k as usize]),
-                kind => apply(kind, w, n1, 0, v),
+                TKind::Time => {}
+                TKind::State(i) => w[v][0] = y[i as usize],
+                TKind::Const(c) => w[v][0] = T::from(c).unwrap_or_else(T::nan),
+                TKind::Input(k) => w[v][0] = read(self.inputs[k as usize]),
+                kind => apply(kind, w, 0, v),
             }
         }
         for k in 1..order {
-            recur::states(w, n1, k, &self.states);
+            recur::states(w, k, &self.states);
             for (v, op) in self.ops.iter().enumerate() {
                 if op.series && !matches!(op.kind, TKind::Time | TKind::State(_)) {
-                    apply(op.kind, w, n1, k, v);
+                    apply(op.kind, w, k, v);
                 }
             }
         }
-        recur::finish(w, n1, y, &self.results, out);
+        recur::finish(w, order, y, &self.results, out);
+        true
     }
 
     /// Arithmetic operations whose value varies (each costs up to `k` products at order `k`).
@@ -166,29 +167,29 @@ impl TaylorProgram {
 }
 
 /// Coefficient `k` of value `d`, computed by `kind` (an arithmetic operation).
-fn apply<T: Float>(kind: TKind, w: &mut [T], n1: usize, k: usize, d: usize) {
+fn apply<T: Float>(kind: TKind, w: &mut [recur::Row<T>], k: usize, d: usize) {
     use recur as r;
     let u = |v: u32| v as usize;
     match kind {
-        TKind::Add(a, b) => r::add(w, n1, k, d, u(a), u(b)),
-        TKind::Sub(a, b) => r::sub(w, n1, k, d, u(a), u(b)),
-        TKind::Neg(a) => r::neg(w, n1, k, d, u(a)),
-        TKind::Mul(a, b) => r::mul(w, n1, k, d, u(a), u(b)),
-        TKind::Sqr(a) => r::sqr(w, n1, k, d, u(a)),
-        TKind::Scale(a, s) => r::scale(w, n1, k, d, u(a), u(s)),
-        TKind::Div(a, b) => r::div(w, n1, k, d, u(a), u(b)),
-        TKind::DivConst(a, s) => r::div_const(w, n1, k, d, u(a), u(s)),
-        TKind::Sqrt(a) => r::sqrt(w, n1, k, d, u(a)),
-        TKind::Exp(a) => r::exp(w, n1, k, d, u(a)),
-        TKind::Ln(a) => r::ln(w, n1, k, d, u(a)),
-        TKind::Sin(a, c) => r::sin(w, n1, k, d, u(a), u(c)),
-        TKind::Cos(a, s) => r::cos(w, n1, k, d, u(a), u(s)),
-        TKind::Sinh(a, c) => r::sinh(w, n1, k, d, u(a), u(c)),
-        TKind::Cosh(a, s) => r::cosh(w, n1, k, d, u(a), u(s)),
-        TKind::Integral(f, a, q) => r::integral(w, n1, k, d, u(a), u(q), f),
-        TKind::Atan2(y, x, rr) => r::atan2(w, n1, k, d, u(y), u(x), u(rr)),
-        TKind::Abs(a) => r::abs(w, n1, k, d, u(a)),
-        TKind::Sign(a) => r::sign(w, n1, k, d, u(a)),
+        TKind::Add(a, b) => r::add(w, k, d, u(a), u(b)),
+        TKind::Sub(a, b) => r::sub(w, k, d, u(a), u(b)),
+        TKind::Neg(a) => r::neg(w, k, d, u(a)),
+        TKind::Mul(a, b) => r::mul(w, k, d, u(a), u(b)),
+        TKind::Sqr(a) => r::sqr(w, k, d, u(a)),
+        TKind::Scale(a, s) => r::scale(w, k, d, u(a), u(s)),
+        TKind::Div(a, b) => r::div(w, k, d, u(a), u(b)),
+        TKind::DivConst(a, s) => r::div_const(w, k, d, u(a), u(s)),
+        TKind::Sqrt(a) => r::sqrt(w, k, d, u(a)),
+        TKind::Exp(a) => r::exp(w, k, d, u(a)),
+        TKind::Ln(a) => r::ln(w, k, d, u(a)),
+        TKind::Sin(a, c) => r::sin(w, k, d, u(a), u(c)),
+        TKind::Cos(a, s) => r::cos(w, k, d, u(a), u(s)),
+        TKind::Sinh(a, c) => r::sinh(w, k, d, u(a), u(c)),
+        TKind::Cosh(a, s) => r::cosh(w, k, d, u(a), u(s)),
+        TKind::Integral(f, a, q) => r::integral(w, k, d, u(a), u(q), f),
+        TKind::Atan2(y, x, rr) => r::atan2(w, k, d, u(y), u(x), u(rr)),
+        TKind::Abs(a) => r::abs(w, k, d, u(a)),
+        TKind::Sign(a) => r::sign(w, k, d, u(a)),
         TKind::Time | TKind::State(_) | TKind::Const(_) | TKind::Input(_) => {}
     }
 }
