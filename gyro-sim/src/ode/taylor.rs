@@ -244,3 +244,91 @@ fn check_finite(t: f64, y: &[f64]) -> Result<(), OdeError> {
         None => Ok(()),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ode::{integrate, Method};
+
+    /// `x' = v`, `v' = -x`: coefficients `c_{k+1} = A c_k / (k + 1)`; `x = x0 cos t + v0 sin t`.
+    struct Oscillator;
+    impl System for Oscillator {
+        fn dim(&self) -> usize {
+            2
+        }
+        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+            dy[0] = y[1];
+            dy[1] = -y[0];
+        }
+        fn taylor(&self, _t: f64, y: &[f64], order: usize, out: &mut [f64], _w: &mut TaylorWork) -> bool {
+            let n1 = order + 1;
+            (out[0], out[n1]) = (y[0], y[1]);
+            for k in 0..order {
+                let kk = (k + 1) as f64;
+                (out[k + 1], out[n1 + k + 1]) = (out[n1 + k] / kk, -out[k] / kk);
+            }
+            true
+        }
+    }
+
+    /// The same equations without Taylor coefficients.
+    struct Plain;
+    impl System for Plain {
+        fn dim(&self) -> usize {
+            2
+        }
+        fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+            Oscillator.rhs(t, y, dy)
+        }
+    }
+
+    fn run(tol: f64, times: &[f64]) -> (Vec<Vec<f64>>, Stats) {
+        let mut rows = Vec::new();
+        let method = Method::Taylor(Tolerances { rtol: tol, atol: tol });
+        let stats = integrate(&Oscillator, 0.0, &[1.0, 0.5], times, method, |_, y| {
+            rows.push(y.to_vec());
+            ControlFlow::Continue(())
+        })
+        .unwrap();
+        (rows, stats)
+    }
+
+    #[test]
+    fn errors_follow_the_tolerance_and_dense_output_is_as_accurate() {
+        let times: Vec<f64> = (0..=1000).map(|i| i as f64 * 0.02).collect();
+        for tol in [1e-6, 1e-9, 1e-12, 1e-15] {
+            let (rows, stats) = run(tol, &times);
+            let worst = times.iter().zip(&rows).fold(0.0f64, |m, (t, y)| {
+                let x = t.cos() + 0.5 * t.sin();
+                m.max((y[0] - x).abs())
+            });
+            // 20 time units: the global error is a few steps' local errors.
+            assert!(worst < 30.0 * tol.max(1e-14), "tol {tol:e}: error {worst:e}");
+            assert!(stats.steps < 100, "tol {tol:e}: {} steps", stats.steps);
+            assert!(stats.rhs_evals >= stats.steps * MIN_ORDER);
+        }
+    }
+
+    #[test]
+    fn the_order_follows_the_tolerance() {
+        let mut s = TaylorStepper::new(&Oscillator, 0.0, &[1.0, 0.0], Tolerances { rtol: 1e-12, atol: 1e-12 })
+            .unwrap();
+        // ceil(-ln(1e-12) / 2 + 1) = ceil(14.8) = 15.
+        assert_eq!(s.order(), 15);
+        s.set_stop_time(1.0);
+        while s.step().unwrap() == StopReason::StepTaken {}
+        assert_eq!(s.t(), 1.0);
+        let mut y = [0.0; 2];
+        assert!(s.interpolate(2.0, &mut y).is_err());
+    }
+
+    #[test]
+    fn a_system_without_coefficients_is_a_clear_error() {
+        let method = Method::Taylor(Tolerances { rtol: 1e-9, atol: 1e-9 });
+        let err = integrate(&Plain, 0.0, &[1.0, 0.0], &[1.0], method, |_, _| ControlFlow::Continue(())).unwrap_err();
+        assert_eq!(err, OdeError::NoTaylorCoefficients);
+        assert!(err.to_string().contains("use another method"), "{err}");
+        let erk = crate::ode::ErkStepper::new(&Plain, 0.0, &[1.0, 0.0], method);
+        assert!(matches!(erk, Err(OdeError::NotRungeKutta)));
+    }
+}
