@@ -91,8 +91,9 @@ fn the_truncated_series_errs_as_h_to_the_order_plus_one() {
     let tight = Method::Adaptive(&DOP853, Tolerances { rtol: 1e-15, atol: 1e-15 });
     let error_at = |h: f64| {
         let exact = &states_at(&sys, &y0, &[h], tight)[0];
-        let series: Vec<f64> = (0..6).map(|i| c[i * n1..(i + 1) * n1].iter().rev().fold(0.0, |a, ck| a * h + ck)).collect();
-        largest_difference(&[series], &[exact.clone()])
+        let series: Vec<f64> =
+            (0..6).map(|i| c[i * n1..(i + 1) * n1].iter().rev().fold(0.0, |a, ck| a * h + ck)).collect();
+        largest_difference(&[series], std::slice::from_ref(exact))
     };
     let (e1, e2) = (error_at(2e-2), error_at(1e-2));
     let ratio = e1 / e2;
@@ -105,7 +106,8 @@ fn the_truncated_series_errs_as_h_to_the_order_plus_one() {
 fn the_stepper_follows_the_tolerance_with_dense_output_between_steps() {
     let (sys, y0) = trial3();
     let times: Vec<f64> = (0..=2000).map(|i| i as f64 * 5e-4).collect();
-    let reference = states_at(&sys, &y0, &times, Method::Adaptive(&DOP853, Tolerances { rtol: 1e-14, atol: 1e-14 }));
+    let reference =
+        states_at(&sys, &y0, &times, Method::Adaptive(&DOP853, Tolerances { rtol: 1e-14, atol: 1e-14 }));
     let mut last = f64::INFINITY;
     for tol in [1e-6, 1e-9, 1e-12] {
         let method = Method::Taylor(Tolerances { rtol: tol, atol: tol });

@@ -15,8 +15,8 @@ mod integrate;
 mod methods;
 mod stages;
 mod stepper;
-mod taylor;
 pub mod tableau;
+mod taylor;
 
 pub use dense::{DenseOutput, DenseRounding};
 pub use integrate::{integrate, integrate_limited};

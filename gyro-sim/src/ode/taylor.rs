@@ -311,8 +311,9 @@ mod tests {
 
     #[test]
     fn the_order_follows_the_tolerance() {
-        let mut s = TaylorStepper::new(&Oscillator, 0.0, &[1.0, 0.0], Tolerances { rtol: 1e-12, atol: 1e-12 })
-            .unwrap();
+        let mut s =
+            TaylorStepper::new(&Oscillator, 0.0, &[1.0, 0.0], Tolerances { rtol: 1e-12, atol: 1e-12 })
+                .unwrap();
         // ceil(-ln(1e-12) / 2 + 1) = ceil(14.8) = 15.
         assert_eq!(s.order(), 15);
         s.set_stop_time(1.0);
@@ -325,7 +326,8 @@ mod tests {
     #[test]
     fn a_system_without_coefficients_is_a_clear_error() {
         let method = Method::Taylor(Tolerances { rtol: 1e-9, atol: 1e-9 });
-        let err = integrate(&Plain, 0.0, &[1.0, 0.0], &[1.0], method, |_, _| ControlFlow::Continue(())).unwrap_err();
+        let err = integrate(&Plain, 0.0, &[1.0, 0.0], &[1.0], method, |_, _| ControlFlow::Continue(()))
+            .unwrap_err();
         assert_eq!(err, OdeError::NoTaylorCoefficients);
         assert!(err.to_string().contains("use another method"), "{err}");
         let erk = crate::ode::ErkStepper::new(&Plain, 0.0, &[1.0, 0.0], method);

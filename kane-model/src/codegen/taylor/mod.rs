@@ -21,7 +21,9 @@ pub use build::build;
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum TaylorError {
     /// The section reads a speed rate `u'_i`, which only outputs may read.
-    #[error("the section reads the speed rate u'_{0}: only a right-hand side (`rhs`) has Taylor coefficients")]
+    #[error(
+        "the section reads the speed rate u'_{0}: only a right-hand side (`rhs`) has Taylor coefficients"
+    )]
     ReadsRates(usize),
     /// The section's results are not one derivative per state.
     #[error("the section has {results} results for {states} states: only a right-hand side (`rhs`) has Taylor coefficients")]

@@ -73,9 +73,9 @@ pub fn mul<T: Float>(w: &mut [Row<T>], k: usize, d: usize, a: usize, b: usize) {
 /// `d = a^2` (the Cauchy product with each cross term once, doubled).
 #[inline(always)]
 pub fn sqr<T: Float>(w: &mut [Row<T>], k: usize, d: usize, a: usize) {
-    let half = if k % 2 == 0 { k / 2 } else { k / 2 + 1 };
+    let half = k.div_ceil(2);
     let cross = if half == 0 { T::zero() } else { cauchy(w, k, a, a, 0, half - 1) };
-    let middle = if k % 2 == 0 { w[a][k / 2] * w[a][k / 2] } else { T::zero() };
+    let middle = if k.is_multiple_of(2) { w[a][k / 2] * w[a][k / 2] } else { T::zero() };
     w[d][k] = cross + cross + middle;
 }
 

@@ -30,74 +30,109 @@ fn f(b: &mut SectionBuilder, func: Func, a: u32) -> u32 {
     b.push(Op::Func(func, a))
 }
 
+/// Builds `(g(x), g2(x))`.
+type Pair = Box<dyn Fn(&mut SectionBuilder, u32) -> (u32, u32)>;
+
 /// Each pair `(g, g2)` of the same function written two ways.
-#[allow(clippy::type_complexity)]
-fn identities() -> Vec<(&'static str, Box<dyn Fn(&mut SectionBuilder, u32) -> (u32, u32)>)> {
+fn identities() -> Vec<(&'static str, Pair)> {
     vec![
-        ("sin^2 + cos^2 = 1", Box::new(|b, x| {
-            let (s, c) = (f(b, Func::Sin, x), f(b, Func::Cos, x));
-            let (s2, c2) = (b.push(Op::Powi(s, 2)), b.push(Op::Powi(c, 2)));
-            (b.add(s2, c2), b.constant(1.0))
-        })),
+        (
+            "sin^2 + cos^2 = 1",
+            Box::new(|b, x| {
+                let (s, c) = (f(b, Func::Sin, x), f(b, Func::Cos, x));
+                let (s2, c2) = (b.push(Op::Powi(s, 2)), b.push(Op::Powi(c, 2)));
+                (b.add(s2, c2), b.constant(1.0))
+            }),
+        ),
         ("atan(tan x) = x", outer_inner(Func::Atan, Func::Tan)),
         ("asin(sin x) = x", outer_inner(Func::Asin, Func::Sin)),
         ("acos(cos x) = x", outer_inner(Func::Acos, Func::Cos)),
         ("exp(ln x) = x", outer_inner(Func::Exp, Func::Ln)),
-        ("sqrt(x)^2 = x", Box::new(|b, x| {
-            let r = b.push(Op::Sqrt(x));
-            (b.push(Op::Powi(r, 2)), x)
-        })),
-        ("x^3 x^-3 = 1", Box::new(|b, x| {
-            let (p, m) = (b.push(Op::Powi(x, 3)), b.push(Op::Powi(x, -3)));
-            (b.mul(p, m), b.constant(1.0))
-        })),
-        ("x^2.5 = x^2 sqrt(x)", Box::new(|b, x| {
-            let e = b.constant(2.5);
-            let p = b.push(Op::Powf(x, e));
-            let (sq, r) = (b.push(Op::Powi(x, 2)), b.push(Op::Sqrt(x)));
-            (p, b.mul(sq, r))
-        })),
-        ("cosh^2 - sinh^2 = 1", Box::new(|b, x| {
-            let (s, c) = (f(b, Func::Sinh, x), f(b, Func::Cosh, x));
-            let (s2, c2) = (b.mul(s, s), b.mul(c, c));
-            (b.sub(c2, s2), b.constant(1.0))
-        })),
-        ("tanh cosh = sinh", Box::new(|b, x| {
-            let (th, c) = (f(b, Func::Tanh, x), f(b, Func::Cosh, x));
-            (b.mul(th, c), f(b, Func::Sinh, x))
-        })),
-        ("atan2(3 sin x, 3 cos x) = x", Box::new(|b, x| {
-            let three = b.constant(3.0);
-            let (s, c) = (f(b, Func::Sin, x), f(b, Func::Cos, x));
-            let (ys, xs) = (b.mul(three, s), b.mul(c, three));
-            (b.push(Op::Atan2(ys, xs)), x)
-        })),
-        ("|x - 1| = 1 - x", Box::new(|b, x| {
-            let one = b.constant(1.0);
-            let d = b.sub(x, one);
-            (f(b, Func::Abs, d), b.sub(one, x))
-        })),
-        ("sign(x) x = x", Box::new(|b, x| {
-            let s = f(b, Func::Sign, x);
-            (b.mul(s, x), x)
-        })),
-        ("x^2 / x = x, 2 / x = 2 x^-1", Box::new(|b, x| {
-            let (sq, two) = (b.push(Op::Powi(x, 2)), b.constant(2.0));
-            let (q, r) = (b.div(sq, x), b.div(two, x));
-            let inv = b.push(Op::Powi(x, -1));
-            let (l, rr) = (b.add(q, r), b.mul(two, inv));
-            (l, b.add(x, rr))
-        })),
-        ("exp(-x) exp(x) = 1", Box::new(|b, x| {
-            let m = b.push(Op::Neg(x));
-            let (e1, e2) = (f(b, Func::Exp, m), f(b, Func::Exp, x));
-            (b.mul(e1, e2), b.constant(1.0))
-        })),
+        (
+            "sqrt(x)^2 = x",
+            Box::new(|b, x| {
+                let r = b.push(Op::Sqrt(x));
+                (b.push(Op::Powi(r, 2)), x)
+            }),
+        ),
+        (
+            "x^3 x^-3 = 1",
+            Box::new(|b, x| {
+                let (p, m) = (b.push(Op::Powi(x, 3)), b.push(Op::Powi(x, -3)));
+                (b.mul(p, m), b.constant(1.0))
+            }),
+        ),
+        (
+            "x^2.5 = x^2 sqrt(x)",
+            Box::new(|b, x| {
+                let e = b.constant(2.5);
+                let p = b.push(Op::Powf(x, e));
+                let (sq, r) = (b.push(Op::Powi(x, 2)), b.push(Op::Sqrt(x)));
+                (p, b.mul(sq, r))
+            }),
+        ),
+        (
+            "cosh^2 - sinh^2 = 1",
+            Box::new(|b, x| {
+                let (s, c) = (f(b, Func::Sinh, x), f(b, Func::Cosh, x));
+                let (s2, c2) = (b.mul(s, s), b.mul(c, c));
+                (b.sub(c2, s2), b.constant(1.0))
+            }),
+        ),
+        (
+            "tanh cosh = sinh",
+            Box::new(|b, x| {
+                let (th, c) = (f(b, Func::Tanh, x), f(b, Func::Cosh, x));
+                (b.mul(th, c), f(b, Func::Sinh, x))
+            }),
+        ),
+        (
+            "atan2(3 sin x, 3 cos x) = x",
+            Box::new(|b, x| {
+                let three = b.constant(3.0);
+                let (s, c) = (f(b, Func::Sin, x), f(b, Func::Cos, x));
+                let (ys, xs) = (b.mul(three, s), b.mul(c, three));
+                (b.push(Op::Atan2(ys, xs)), x)
+            }),
+        ),
+        (
+            "|x - 1| = 1 - x",
+            Box::new(|b, x| {
+                let one = b.constant(1.0);
+                let d = b.sub(x, one);
+                (f(b, Func::Abs, d), b.sub(one, x))
+            }),
+        ),
+        (
+            "sign(x) x = x",
+            Box::new(|b, x| {
+                let s = f(b, Func::Sign, x);
+                (b.mul(s, x), x)
+            }),
+        ),
+        (
+            "x^2 / x = x, 2 / x = 2 x^-1",
+            Box::new(|b, x| {
+                let (sq, two) = (b.push(Op::Powi(x, 2)), b.constant(2.0));
+                let (q, r) = (b.div(sq, x), b.div(two, x));
+                let inv = b.push(Op::Powi(x, -1));
+                let (l, rr) = (b.add(q, r), b.mul(two, inv));
+                (l, b.add(x, rr))
+            }),
+        ),
+        (
+            "exp(-x) exp(x) = 1",
+            Box::new(|b, x| {
+                let m = b.push(Op::Neg(x));
+                let (e1, e2) = (f(b, Func::Exp, m), f(b, Func::Exp, x));
+                (b.mul(e1, e2), b.constant(1.0))
+            }),
+        ),
     ]
 }
 
 /// `(outer(inner(x)), x)`.
-fn outer_inner(outer: Func, inner: Func) -> Box<dyn Fn(&mut SectionBuilder, u32) -> (u32, u32)> {
+fn outer_inner(outer: Func, inner: Func) -> Pair {
     Box::new(move |b, x| {
         let g = f(b, inner, x);
         (f(b, outer, g), x)
