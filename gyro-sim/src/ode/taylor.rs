@@ -3,12 +3,14 @@
 //! one step per [`TaylorStepper::step`], values anywhere in the last step from the Taylor
 //! polynomial itself ([`TaylorStepper::interpolate`]), and the cost in [`Stats`].
 //!
-//! Order and step follow Jorba and Zou (2005) as heyoka applies them: the order is
-//! `p = ceil(-ln(eps) / 2 + 1)` and the step `h = rho / e^2 * exp(-0.7 / (p - 1))`, where
-//! `rho = min(rho_(p-1), rho_p)`, `rho_k = (s / ||y_k||)^(1/k)` over the last two coefficients
-//! (max norms over the states), with `s = 1` and `eps = atol` while `rtol ||y|| <= atol`
-//! (absolute), else `s = ||y||` and `eps = rtol` (relative). Every step is accepted: the
-//! estimate is made before the step, from the series itself.
+//! Order and step follow Jorba and Zou (2005) as heyoka applies them, per component: the order
+//! is `p = ceil(-ln(eps) / 2 + 1)` and the step `h = rho / e^2 * exp(-0.7 / (p - 1))`, where
+//! `rho = min(rho_(p-1), rho_p)` over the last two coefficients and
+//! `rho_k = min_i (s_i / |y_ik|)^(1/k)`. Each component's tolerance is `tol_i = atol + rtol |y_i|`
+//! (as the Runge-Kutta pairs weigh it), `eps = min_i tol_i / max(1, |y_i|)` and
+//! `s_i = tol_i / eps`, so term `p` stays near `tol_i` in every component (heyoka takes one
+//! max norm over all, which lets a large component set the error of small ones). Every step is
+//! accepted: the estimate is made before the step, from the series itself.
 
 use std::ops::ControlFlow;
 
@@ -32,6 +34,8 @@ pub struct TaylorStepper<'a, S: System + ?Sized> {
     h_prev: f64,
     order: usize,
     coeffs: Vec<f64>,
+    /// Each component's tolerance relative to the order's `eps`.
+    scales: Vec<f64>,
     work: TaylorWork,
     stop: Option<f64>,
     horizon: Option<f64>,
@@ -57,6 +61,7 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
             h_prev: 0.0,
             order: 0,
             coeffs: y0.to_vec(),
+            scales: Vec::new(),
             work: Vec::new(),
             stop: None,
             horizon: None,
@@ -105,20 +110,27 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
         self.stats
     }
 
-    /// The order for the tolerances at the current state, and the scale of the norms (1:
-    /// absolute, `||y||`: relative).
-    fn order_and_scale(&self) -> (usize, f64) {
-        let norm = self.y.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        let (eps, scale) =
-            if self.tol.rtol * norm <= self.tol.atol { (self.tol.atol, 1.0) } else { (self.tol.rtol, norm) };
+    /// The order for the tolerances at the current state: `eps` the smallest of the components'
+    /// tolerances `atol + rtol |y_i|` relative to `max(1, |y_i|)`; and each component's scale
+    /// `(atol + rtol |y_i|) / eps` into `scales`.
+    fn order_and_scales(&mut self) -> usize {
+        let Tolerances { rtol, atol } = self.tol;
+        self.scales.clear();
+        self.scales.extend(self.y.iter().map(|v| atol + rtol * v.abs()));
+        let eps =
+            self.scales.iter().zip(&self.y).fold(f64::INFINITY, |m, (s, v)| m.min(s / v.abs().max(1.0)));
+        self.scales.iter_mut().for_each(|s| *s /= eps);
         let p = (-eps.ln() / 2.0 + 1.0).ceil();
-        let p = if p.is_finite() { (p as usize).clamp(MIN_ORDER, MAX_ORDER) } else { MAX_ORDER };
-        (p, scale)
+        if p.is_finite() {
+            (p as usize).clamp(MIN_ORDER, MAX_ORDER)
+        } else {
+            MAX_ORDER
+        }
     }
 
     /// The coefficients at the current state into `coeffs`, at the order the tolerances ask.
-    fn expand(&mut self) -> Result<f64, OdeError> {
-        let (p, scale) = self.order_and_scale();
+    fn expand(&mut self) -> Result<(), OdeError> {
+        let p = self.order_and_scales();
         let n = self.y.len();
         self.coeffs.resize(n * (p + 1), 0.0);
         if !self.sys.taylor(self.t, &self.y, p, &mut self.coeffs, &mut self.work) {
@@ -126,15 +138,22 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
         }
         self.order = p;
         self.stats.rhs_evals += p;
-        Ok(scale)
+        Ok(())
     }
 
     /// The step the last two coefficients allow (Jorba and Zou; see the module's text).
-    fn step_size(&self, scale: f64) -> f64 {
+    fn step_size(&self) -> f64 {
         let p = self.order;
         let n1 = p + 1;
-        let norm = |k: usize| (0..self.y.len()).fold(0.0f64, |m, i| m.max(self.coeffs[i * n1 + k].abs()));
-        let rho = |k: usize| (scale / norm(k)).powf(1.0 / k as f64);
+        // min_i (scale_i / |c_ik|)^(1/k): the step whose term k is each component's tolerance.
+        let rho = |k: usize| {
+            let ratio = self
+                .scales
+                .iter()
+                .enumerate()
+                .fold(f64::INFINITY, |m, (i, s)| m.min(s / self.coeffs[i * n1 + k].abs()));
+            ratio.powf(1.0 / k as f64)
+        };
         let rho_m = rho(p - 1).min(rho(p));
         rho_m / std::f64::consts::E.powi(2) * (-0.7 / (p - 1) as f64).exp()
     }
@@ -151,8 +170,10 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
         let projected = self.sys.project(&mut self.y);
         // The first step's coefficients were computed by `new` (unless the state moved since).
         let fresh = self.stats.steps == 0 && !projected;
-        let scale = if fresh { self.order_and_scale().1 } else { self.expand()? };
-        let mut h = self.step_size(scale);
+        if !fresh {
+            self.expand()?;
+        }
+        let mut h = self.step_size();
         let target = self.stop.or(self.horizon);
         if !h.is_finite() {
             // A polynomial solution: nothing bounds the step but the way to go.

@@ -1,6 +1,6 @@
 //! The model module printed: in come a spec and its lowered program; out go the items of a Rust
-//! module (`Params`, `derive`, `rhs_derived`, `rhs`, `output`, `jacobian`, `INFO` and a
-//! `Model` implementing [`crate::runtime::GeneratedModel`]).
+//! module (`Params`, `derive`, `rhs_derived`, `rhs`, `output`, `jacobian`, `taylor_derived`,
+//! `INFO` and a `Model` implementing [`crate::runtime::GeneratedModel`]).
 
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
