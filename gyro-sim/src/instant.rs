@@ -8,7 +8,7 @@ use std::sync::Arc;
 use kane_model::codegen::ProgramModel;
 use kane_model::runtime::ModelInfo;
 
-use crate::ode::System;
+use crate::ode::{System, TaylorWork};
 use crate::registry::{Engine, ModelEntry};
 use crate::solve::{solve_bound, BoundModel};
 
@@ -34,6 +34,9 @@ impl System for InstantSystem<'_> {
     }
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
         self.model.rhs(t, y, &self.params, &self.derived, dy, &mut self.regs.borrow_mut())
+    }
+    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
+        self.model.taylor(t, y, &self.params, &self.derived, order, out, work) == Ok(true)
     }
 }
 

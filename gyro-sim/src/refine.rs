@@ -1,7 +1,7 @@
 //! An accuracy asked of a trajectory: in come a goal, a method and one integration as a
 //! function of the tolerances; out goes the run whose predecessor it agrees with to the goal.
 
-use crate::ode::{tableau::Tableau, Method, Stats, Tolerances};
+use crate::ode::{Method, Stats, Tolerances};
 use crate::solve::{Integration, SolveError};
 use crate::trajectory::Accuracy;
 
@@ -17,7 +17,7 @@ const SMALLEST_RTOL: f64 = 1e-14;
 /// view alone must not change the run written.
 pub(crate) fn refine(
     goal: f64,
-    tab: &'static Tableau,
+    method: Method,
     mut tol: Tolerances,
     compared: usize,
     integrate_at: impl Fn(Method) -> Result<Integration, SolveError>,
@@ -28,7 +28,7 @@ pub(crate) fn refine(
         total.rejected += s.rejected;
         total.rhs_evals += s.rhs_evals;
     };
-    let first = integrate_at(Method::Adaptive(tab, tol))?;
+    let first = integrate_at(method.with_tolerances(tol))?;
     add(first.stats);
     let mut coarse = first.rows;
     let mut runs = 1;
@@ -37,7 +37,7 @@ pub(crate) fn refine(
         if finer.rtol < SMALLEST_RTOL {
             return Err(SolveError::AccuracyNotReached { goal, rtol: tol.rtol });
         }
-        let fine = integrate_at(Method::Adaptive(tab, finer))?;
+        let fine = integrate_at(method.with_tolerances(finer))?;
         add(fine.stats);
         runs += 1;
         let estimate = largest_difference(&coarse, &fine.rows, compared);

@@ -91,7 +91,7 @@ const MAX_PLOT_POINTS: usize = 20_000;
 
 /// Whether `method` interpolates inside its steps (then plot points cost no extra steps).
 fn has_dense_output(method: Method) -> bool {
-    matches!(method, Method::Adaptive(tab, _) if tab.dense.is_some())
+    matches!(method, Method::Adaptive(tab, _) if tab.dense.is_some()) || matches!(method, Method::Taylor(_))
 }
 
 /// The method a scene names (checked when the scene was parsed).

@@ -92,7 +92,7 @@ impl Axle {
 /// Integrator settings.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Integrator {
-    /// `dop853`, `dopri5`, `vern7`, `vern9` or `rk4`.
+    /// `dop853`, `dopri5`, `vern7`, `vern9`, `taylor` or `rk4`.
     pub method: String,
     /// Relative tolerance (adaptive methods).
     pub rtol: f64,

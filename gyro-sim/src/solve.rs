@@ -11,7 +11,7 @@ use thiserror::Error;
 use crate::diagnose;
 use crate::events::watch::Watch;
 use crate::events::EventLog;
-use crate::ode::{self, Method, OdeError, Stats, System};
+use crate::ode::{self, Method, OdeError, Stats, System, TaylorWork};
 use crate::problem::{Pick, Problem};
 use crate::refine::refine;
 use crate::registry::Registry;
@@ -159,6 +159,9 @@ impl<M: GeneratedModel> System for ModelSystem<M> {
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
         M::rhs_derived(t, y, &self.params, &self.derived, dy)
     }
+    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
+        M::taylor(t, y, &self.params, &self.derived, order, out, work)
+    }
 }
 
 /// A system without some of its states (cyclic coordinates nothing asked for depends on): they
@@ -207,6 +210,21 @@ impl<S: System> System for Reduced<'_, S> {
             dy[i] = fdy[*k];
         }
     }
+    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
+        let mut full = self.full.borrow_mut();
+        let (fy, fout) = &mut *full;
+        let (n, n1) = (fy.len(), order + 1);
+        for (i, k) in self.keep.iter().enumerate() {
+            fy[*k] = y[i];
+        }
+        fout.resize(n * n1, 0.0);
+        let has = self.inner.taylor(t, fy, order, fout, work);
+        for (i, k) in self.keep.iter().enumerate() {
+            out[i * n1..(i + 1) * n1].copy_from_slice(&fout[k * n1..(k + 1) * n1]);
+        }
+        fout.truncate(n);
+        has
+    }
 }
 
 /// One integration's cost, rows and full state at the final time.
@@ -241,10 +259,10 @@ pub fn solve_bound<B: BoundModel>(problem: &Problem, full_sys: &B) -> Result<Tra
     let start = Instant::now();
     let (Integration { stats, rows, plot_rows, y_end, norm_drift, events }, accuracy) =
         match (problem.accuracy, problem.method) {
-            (Some(goal), Method::Adaptive(tab, tol)) => {
+            (Some(goal), method @ (Method::Adaptive(_, tol) | Method::Taylor(tol))) => {
                 // The time and the written columns: view-only columns come after them.
                 let compared = 1 + columns.iter().filter(|c| !c.hidden).count();
-                refine(goal, tab, tol, compared, integrate_at)?
+                refine(goal, method, tol, compared, integrate_at)?
             }
             _ => (integrate_at(problem.method)?, None),
         };
@@ -458,7 +476,7 @@ fn reduced_groups(groups: &[Vec<usize>], keep: &[usize]) -> Vec<Vec<usize>> {
 /// fixed-step method's state is held to 1e-10).
 fn norm_threshold(method: Method) -> f64 {
     match method {
-        Method::Adaptive(_, tol) => tol.rtol.max(tol.atol),
+        Method::Adaptive(_, tol) | Method::Taylor(tol) => tol.rtol.max(tol.atol),
         Method::Fixed(..) => 1e-10,
     }
 }

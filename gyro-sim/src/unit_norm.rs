@@ -5,7 +5,7 @@
 
 use std::cell::Cell;
 
-use crate::ode::System;
+use crate::ode::{System, TaylorWork};
 
 /// How far the unit-norm states drifted in one run.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -51,6 +51,10 @@ impl<S: System + ?Sized> System for UnitNorm<'_, S> {
     #[inline(always)]
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
         self.inner.rhs(t, y, dy)
+    }
+
+    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
+        self.inner.taylor(t, y, order, out, work)
     }
 
     fn project(&self, y: &mut [f64]) -> bool {

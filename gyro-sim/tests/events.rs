@@ -110,6 +110,20 @@ fn nutation_turning_points_are_the_closed_forms_extrema() {
 }
 
 #[test]
+fn the_taylor_method_finds_the_turning_points_on_its_series() {
+    let c = closed("cusp");
+    let text = std::fs::read_to_string(scene_path("ejs/cusp.toml")).unwrap();
+    let taylor = text.replace("method = \"dop853\"", "method = \"taylor\"");
+    assert_ne!(taylor, text);
+    let t = solve(&Scene::parse("cusp.toml", &taylor).unwrap());
+    let found = times(&t, "turning_point");
+    let half = c.period / 2.0;
+    assert_eq!(found.len(), (50.0 / half).floor() as usize);
+    let worst = found.iter().enumerate().map(|(k, t)| (t - (k + 1) as f64 * half).abs()).fold(0.0, f64::max);
+    assert!(worst < 1e-9, "turning points off by {worst:e} s");
+}
+
+#[test]
 fn a_stop_event_ends_the_run_at_the_axle_going_below_the_horizontal() {
     let c = closed("loops");
     let want = c.time_of(0.0);

@@ -278,9 +278,14 @@ fn breaking_early_is_ok_with_the_cost_so_far() {
 fn unknown_method_names_are_none() {
     assert!(by_name("euler").is_none());
     assert!(by_name("").is_none());
-    for (name, adaptive, order) in
-        [("dop853", true, 8), ("dopri5", true, 5), ("vern7", true, 7), ("vern9", true, 9), ("rk4", false, 4)]
-    {
+    for (name, adaptive, order) in [
+        ("dop853", true, Some(8)),
+        ("dopri5", true, Some(5)),
+        ("vern7", true, Some(7)),
+        ("vern9", true, Some(9)),
+        ("rk4", false, Some(4)),
+        ("taylor", true, None),
+    ] {
         let info = by_name(name).unwrap();
         assert_eq!((info.name(), info.adaptive, info.order()), (name, adaptive, order));
     }

@@ -27,6 +27,9 @@ pub mod spec;
 pub mod __private {
     pub use num_traits;
 
+    /// The Taylor-coefficient recurrences generated `taylor` functions call.
+    pub use crate::codegen::taylor::recur as taylor;
+
     /// `x` as `T` (a float type holds every f64 value, or NaN).
     pub fn cast<T: num_traits::Float>(x: f64) -> T {
         T::from(x).unwrap_or_else(T::nan)

@@ -55,6 +55,12 @@ impl ModelInfo {
     }
 }
 
+/// Scratch rows for Taylor coefficients ([`GeneratedModel::taylor`]), reused between calls.
+pub type TaylorWork = Vec<crate::codegen::taylor::recur::Row<f64>>;
+
+/// The highest order [`GeneratedModel::taylor`] expands to.
+pub const TAYLOR_MAX_ORDER: usize = crate::codegen::taylor::recur::MAX_ORDER;
+
 /// A model compiled from its equations by [`crate::codegen`].
 pub trait GeneratedModel {
     /// Parameter values (defaults from the model's INPUT).
@@ -98,6 +104,23 @@ pub trait GeneratedModel {
         out: &mut [f64],
         rate: &mut [f64],
     );
+    /// The normalised Taylor coefficients of the solution through `(t, y)`, orders `0..=order`,
+    /// into `out` (state `i`'s coefficient `k` at `out[i * (order + 1) + k]`, so
+    /// `y_i(t + h) = sum_k out[i * (order + 1) + k] h^k`), with `d = derive(p)`; `work` is
+    /// scratch. False when the model has no Taylor coefficients (the default), or above
+    /// [`TAYLOR_MAX_ORDER`].
+    #[allow(unused_variables)]
+    fn taylor(
+        t: f64,
+        y: &[f64],
+        p: &Self::Params,
+        d: &Self::Derived,
+        order: usize,
+        out: &mut [f64],
+        work: &mut TaylorWork,
+    ) -> bool {
+        false
+    }
 }
 
 /// A unit quaternion (scalar first, non-negative) from direction cosines `r` (row by row, an

@@ -23,7 +23,7 @@ pub fn events(scene: &Scene, info: &ModelInfo) -> Result<Vec<EventSpec>, SceneEr
     if scene.events.is_empty() {
         return Ok(Vec::new());
     }
-    let dense = crate::ode::by_name(&scene.integrator.method).is_some_and(|m| m.tableau.dense.is_some());
+    let dense = crate::ode::by_name(&scene.integrator.method).is_some_and(|m| m.dense_output());
     if !dense {
         let d = &scene.events[0];
         return Err(scene.error_at(

@@ -3,7 +3,7 @@
 //! trajectory row, built by the caller's row function) and, for one that stops the run, the
 //! time to stop at.
 
-use crate::ode::{ErkStepper, System};
+use crate::ode::{Stepping, System};
 use crate::problem::Problem;
 use crate::solve::{BoundModel, Reduced, SolveError};
 use crate::unit_norm::normalise;
@@ -58,11 +58,7 @@ impl<'a, B: BoundModel> Watch<'a, B> {
 
     /// After an accepted step of `stepper`: the crossings in it recorded (rows from `row`);
     /// the time to stop at when one ends the run (or a row failed).
-    pub fn observe<S: System + ?Sized>(
-        &mut self,
-        stepper: &ErkStepper<'_, S>,
-        row: &RowFn<'_>,
-    ) -> Option<f64> {
+    pub fn observe(&mut self, stepper: &dyn Stepping, row: &RowFn<'_>) -> Option<f64> {
         let (t_prev, t) = (stepper.step_start(), stepper.t());
         let Watch { problem, sys, fns, reduced, full, values, .. } = self;
         let mut at = |s: f64, full: &mut [f64]| {

@@ -6,18 +6,10 @@
 
 use std::ops::ControlFlow;
 
-use super::stepper::{ErkStepper, Stats};
+use super::drive::{drive, Stepping, Watched};
+use super::stepper::ErkStepper;
+use super::taylor::TaylorStepper;
 use super::{Method, OdeError, System};
-
-/// How a watched integration ended.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Watched {
-    /// The cost.
-    pub stats: Stats,
-    /// The time the watcher stopped the run at (`None`: it ran to the last output time, or the
-    /// output callback broke).
-    pub stopped_at: Option<f64>,
-}
 
 /// [`super::integrate_limited`], calling `watch(stepper)` after each accepted step; when it
 /// returns `Some(t_stop)` (inside that step), the outputs before `t_stop` are given and the run
@@ -30,11 +22,19 @@ pub fn integrate_watched<S: System + ?Sized>(
     times: &[f64],
     method: Method,
     max_steps: usize,
-    mut watch: impl FnMut(&ErkStepper<'_, S>) -> Option<f64>,
-    mut out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
+    mut watch: impl FnMut(&dyn Stepping) -> Option<f64>,
+    out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
 ) -> Result<Watched, OdeError> {
-    let tab = method.tableau();
-    if tab.dense.is_none() {
+    if let Method::Taylor(tol) = method {
+        let mut stepper = TaylorStepper::new(sys, t0, y0, tol)?;
+        stepper.set_max_steps(max_steps);
+        let Some(&t_end) = times.last() else {
+            return Ok(Watched { stats: stepper.stats(), stopped_at: None });
+        };
+        stepper.set_stop_time(t_end);
+        return drive(&mut stepper, times, true, |s| watch(s), out);
+    }
+    if let Some(tab) = method.tableau().filter(|t| t.dense.is_none()) {
         return Err(OdeError::NoDenseOutput { method: tab.name });
     }
     let mut stepper = ErkStepper::new(sys, t0, y0, method)?;
@@ -46,42 +46,7 @@ pub fn integrate_watched<S: System + ?Sized>(
     if interpolates {
         stepper.set_stop_time(t_end);
     }
-    let mut inside = vec![0.0; y0.len()];
-    let mut next = 0;
-    loop {
-        // The outputs the stepper has passed.
-        while let Some(&target) = times.get(next) {
-            if target > stepper.t() {
-                break;
-            }
-            let y = if target == stepper.t() {
-                stepper.y()
-            } else {
-                stepper.interpolate(target, &mut inside)?;
-                &inside
-            };
-            next += 1;
-            if out(target, y).is_break() {
-                return Ok(Watched { stats: stepper.stats(), stopped_at: None });
-            }
-        }
-        let Some(&target) = times.get(next) else { break };
-        if !interpolates {
-            stepper.set_stop_time(target);
-        }
-        stepper.step()?;
-        if let Some(t_stop) = watch(&stepper) {
-            while let Some(&target) = times.get(next).filter(|t| **t < t_stop) {
-                stepper.interpolate(target, &mut inside)?;
-                next += 1;
-                if out(target, &inside).is_break() {
-                    break;
-                }
-            }
-            return Ok(Watched { stats: stepper.stats(), stopped_at: Some(t_stop) });
-        }
-    }
-    Ok(Watched { stats: stepper.stats(), stopped_at: None })
+    drive(&mut stepper, times, interpolates, |s| watch(s), out)
 }
 
 #[cfg(test)]

@@ -6,7 +6,8 @@
 
 use std::ops::ControlFlow;
 
-use super::stepper::{ErkStepper, Stats, StopReason, DEFAULT_MAX_STEPS};
+use super::drive::drive;
+use super::stepper::{ErkStepper, Stats, DEFAULT_MAX_STEPS};
 use super::{Method, OdeError, System};
 
 /// Integrates from `(t0, y0)` through the increasing output `times` (none before `t0`), calling
@@ -33,6 +34,9 @@ pub fn integrate_limited<S: System + ?Sized>(
     max_steps: usize,
     out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
 ) -> Result<Stats, OdeError> {
+    if let Method::Taylor(tol) = method {
+        return super::taylor::integrate(sys, t0, y0, times, tol, max_steps, out);
+    }
     let limits = Limits { method, max_steps };
     match sys.dim() {
         1 => integrate_n::<S, 1>(sys, t0, y0, times, limits, out),
@@ -61,7 +65,7 @@ fn integrate_n<S: System + ?Sized, const N: usize>(
     y0: &[f64],
     times: &[f64],
     limits: Limits,
-    mut out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
+    out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
 ) -> Result<Stats, OdeError> {
     let method = limits.method;
     let mut stepper = ErkStepper::<S, N>::new_sized(sys, t0, y0, method)?;
@@ -69,31 +73,11 @@ fn integrate_n<S: System + ?Sized, const N: usize>(
     let Some(&t_end) = times.last() else { return Ok(stepper.stats()) };
     stepper.set_horizon(t_end);
     // Fixed steps land on every output time, so the step between two is at most the one asked.
-    let interpolates = matches!(method, Method::Adaptive(..)) && method.tableau().dense.is_some();
+    let interpolates = matches!(method, Method::Adaptive(tab, _) if tab.dense.is_some());
     if interpolates {
         stepper.set_stop_time(t_end);
     }
-    let mut inside = vec![0.0; y0.len()];
-    for &target in times {
-        if !interpolates && stepper.t() < target {
-            stepper.set_stop_time(target);
-        }
-        while stepper.t() < target {
-            if stepper.step()? == StopReason::StopTimeReached {
-                break;
-            }
-        }
-        let y = if target == stepper.t() {
-            stepper.y()
-        } else {
-            stepper.interpolate(target, &mut inside)?;
-            &inside
-        };
-        if out(target, y).is_break() {
-            break;
-        }
-    }
-    Ok(stepper.stats())
+    Ok(drive(&mut stepper, times, interpolates, |_| None, out)?.stats)
 }
 
 #[cfg(test)]

@@ -2,7 +2,8 @@
 //! adaptive or fixed step), or None for a name the table does not have, which the caller reports.
 //! Also [`Method`] and [`Tolerances`], what an integration is told to use. A new method is its
 //! tableau's data in [`crate::ode::tableau`] and one row of [`METHODS`]; the row is checked at
-//! compile time, and every row takes the unrolled steps.
+//! compile time, and every row takes the unrolled steps. The Taylor method (`taylor`, no
+//! tableau: the model's own Taylor coefficients, see [`super::taylor`]) is one more row.
 
 use super::dense::DenseRounding;
 use super::tableau::{Tableau, DOP853, DOPRI5, RK4, VERN7, VERN9};
@@ -24,22 +25,38 @@ pub enum Method {
     Adaptive(&'static Tableau, Tolerances),
     /// A fixed step no larger than the given one (shortened evenly to land on stop times).
     Fixed(&'static Tableau, f64),
+    /// The Taylor method on the system's own Taylor coefficients: order and step from the
+    /// tolerances.
+    Taylor(Tolerances),
 }
 
 impl Method {
-    /// The tableau either way.
-    pub fn tableau(&self) -> &'static Tableau {
+    /// The tableau of a Runge-Kutta method (None for the Taylor method).
+    pub fn tableau(&self) -> Option<&'static Tableau> {
         match self {
-            Method::Adaptive(tab, _) | Method::Fixed(tab, _) => tab,
+            Method::Adaptive(tab, _) | Method::Fixed(tab, _) => Some(tab),
+            Method::Taylor(_) => None,
+        }
+    }
+
+    /// The same method at other tolerances (a fixed-step method unchanged).
+    pub fn with_tolerances(&self, tol: Tolerances) -> Method {
+        match *self {
+            Method::Adaptive(tab, _) => Method::Adaptive(tab, tol),
+            Method::Taylor(_) => Method::Taylor(tol),
+            fixed @ Method::Fixed(..) => fixed,
         }
     }
 }
 
+/// The name scenes give the Taylor method.
+pub const TAYLOR: &str = "taylor";
+
 /// A method the scenes can name.
 #[derive(Debug)]
 pub struct MethodInfo {
-    /// Its coefficients (name and order included).
-    pub tableau: &'static Tableau,
+    /// Its coefficients (name and order included); None for the Taylor method.
+    pub tableau: Option<&'static Tableau>,
     /// Steps are chosen by error control (the tableau is an embedded pair); otherwise fixed.
     pub adaptive: bool,
 }
@@ -47,31 +64,37 @@ pub struct MethodInfo {
 impl MethodInfo {
     /// The name scenes use.
     pub fn name(&self) -> &'static str {
-        self.tableau.name
+        self.tableau.map_or(TAYLOR, |t| t.name)
     }
 
-    /// The order of the solution weights.
-    pub fn order(&self) -> u32 {
-        self.tableau.order
+    /// The order of the solution weights (None for the Taylor method: it follows the tolerance).
+    pub fn order(&self) -> Option<u32> {
+        self.tableau.map(|t| t.order)
+    }
+
+    /// Whether states between steps can be had (a continuous extension, or the Taylor series).
+    pub fn dense_output(&self) -> bool {
+        self.tableau.is_none_or(|t| t.dense.is_some())
     }
 
     /// The [`Method`]: `tol` for an adaptive one, `step` for a fixed-step one.
     pub fn method(&self, tol: Tolerances, step: f64) -> Method {
-        if self.adaptive {
-            Method::Adaptive(self.tableau, tol)
-        } else {
-            Method::Fixed(self.tableau, step)
+        match self.tableau {
+            None => Method::Taylor(tol),
+            Some(tab) if self.adaptive => Method::Adaptive(tab, tol),
+            Some(tab) => Method::Fixed(tab, step),
         }
     }
 }
 
 /// Every method by name, in the order help texts list them.
 pub static METHODS: &[MethodInfo] = &[
-    MethodInfo { tableau: &DOP853, adaptive: true },
-    MethodInfo { tableau: &DOPRI5, adaptive: true },
-    MethodInfo { tableau: &VERN7, adaptive: true },
-    MethodInfo { tableau: &VERN9, adaptive: true },
-    MethodInfo { tableau: &RK4, adaptive: false },
+    MethodInfo { tableau: Some(&DOP853), adaptive: true },
+    MethodInfo { tableau: Some(&DOPRI5), adaptive: true },
+    MethodInfo { tableau: Some(&VERN7), adaptive: true },
+    MethodInfo { tableau: Some(&VERN9), adaptive: true },
+    MethodInfo { tableau: Some(&RK4), adaptive: false },
+    MethodInfo { tableau: None, adaptive: true },
 ];
 
 /// The method a scene that names none gets.
@@ -117,7 +140,7 @@ const _: () = {
 /// continuous extension's rows over the stages and its extra stages, an error estimate for an
 /// adaptive method.
 const fn check(m: &MethodInfo) {
-    let tab = m.tableau;
+    let Some(tab) = m.tableau else { return };
     let s = tab.c.len();
     assert!(s > 0 && tab.a.len() == s && tab.b.len() == s, "a, b and c must have one entry per stage");
     let mut i = 0;
@@ -167,11 +190,17 @@ mod tests {
 
     #[test]
     fn names_find_their_rows() {
-        assert_eq!(by_name("dop853").map(MethodInfo::order), Some(8));
+        assert_eq!(by_name("dop853").and_then(MethodInfo::order), Some(8));
+        assert!(matches!(by_name("Taylor").map(|m| m.method(TOL, 0.1)), Some(Method::Taylor(_))));
         assert_eq!(by_name("DOPRI5").map(|m| m.adaptive), Some(true));
-        assert!(std::ptr::eq(by_name("rk4").unwrap().tableau, &RK4));
+        assert!(std::ptr::eq(by_name("rk4").unwrap().tableau.unwrap(), &RK4));
         assert!(by_name("euler").is_none());
         assert_eq!(default_method().name(), "dopri5");
-        assert_eq!(methods_help(), "methods: dop853, dopri5, vern7, vern9 (adaptive), rk4 (fixed step)");
+        assert_eq!(
+            methods_help(),
+            "methods: dop853, dopri5, vern7, vern9, taylor (adaptive), rk4 (fixed step)"
+        );
     }
+
+    const TOL: Tolerances = Tolerances { rtol: 1e-9, atol: 1e-9 };
 }

@@ -93,13 +93,14 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
             return Err(OdeError::DimensionMismatch { expected: n, found: y0.len() });
         }
         check_finite(t0, y0)?;
-        let tab = method.tableau();
+        let tab = method.tableau().ok_or(OdeError::NotRungeKutta)?;
         let mut work = Work::<S, N>::new(sys, tab);
         sys.rhs(t0, y0, &mut work.k[..n]);
         work.stats.rhs_evals += 1;
         let h = match method {
             Method::Adaptive(_, tol) => initial_step(&mut work, t0, y0, tol),
             Method::Fixed(_, step) => step,
+            Method::Taylor(_) => return Err(OdeError::NotRungeKutta),
         };
         Ok(ErkStepper {
             work,
@@ -182,6 +183,7 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
         let result = match self.method {
             Method::Adaptive(_, tol) => self.adaptive_step(tol),
             Method::Fixed(_, step) => self.fixed_step(step),
+            Method::Taylor(_) => Err(OdeError::NotRungeKutta),
         };
         if result.is_err() {
             self.t_prev = self.t;

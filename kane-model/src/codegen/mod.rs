@@ -4,7 +4,8 @@
 //!
 //! The stages are modules: [`lower`] turns the spec into one [`ir::Program`] (SSA sections for
 //! `derive`, `rhs` with `M u' = f` solved inside it, and each output); `print` spells that
-//! program in Rust. The same spec gives byte-identical code.
+//! program in Rust; [`taylor`] turns `rhs` into Taylor-coefficient recurrences, printed beside it.
+//! The same spec gives byte-identical code.
 
 pub mod event;
 pub mod ir;
@@ -13,6 +14,7 @@ mod meta;
 mod names;
 mod print;
 mod program_model;
+pub mod taylor;
 
 use proc_macro2::TokenStream;
 use thiserror::Error;

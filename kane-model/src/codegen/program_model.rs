@@ -3,12 +3,13 @@
 //! same SSA sections the printer spells, so both paths compute the same operations.
 
 use crate::dual::Dual;
-use crate::runtime::{quaternion_from_dcm, ModelInfo};
+use crate::runtime::{quaternion_from_dcm, ModelInfo, TaylorWork};
 use crate::spec::ModelSpec;
 
 use super::ir::{Input, Program, Section};
 use super::meta::Meta;
 use super::print::is_quaternion;
+use super::taylor::{TaylorError, TaylorProgram};
 use super::{lower, CodegenError};
 
 /// A model evaluated from its lowered program. Each evaluation takes a scratch buffer `regs`
@@ -20,6 +21,7 @@ pub struct ProgramModel {
     defaults: Vec<f64>,
     initial: Vec<f64>,
     quaternion: Vec<bool>,
+    taylor: Result<TaylorProgram, TaylorError>,
 }
 
 impl ProgramModel {
@@ -33,6 +35,7 @@ impl ProgramModel {
             defaults: meta.params.iter().map(default).collect(),
             initial: meta.states.iter().map(default).collect(),
             quaternion: spec.outputs.iter().map(|o| is_quaternion(&o.kind)).collect(),
+            taylor: TaylorProgram::new(&lowered.program.rhs, lowered.states.len()),
             program: lowered.program,
         })
     }
@@ -75,6 +78,30 @@ impl ProgramModel {
     ) {
         let at = At { t, y, rates: &[], params, derived };
         at.run(&self.program.rhs, regs, dy)
+    }
+
+    /// The Taylor program of `rhs`, or why there is none.
+    pub fn taylor_program(&self) -> Result<&TaylorProgram, TaylorError> {
+        self.taylor.as_ref().map_err(Clone::clone)
+    }
+
+    /// The normalised Taylor coefficients of the solution through `(t, y)` up to `order` into
+    /// `out` (state-major, `order + 1` per state; see [`TaylorProgram::coefficients`]); false
+    /// for an order above [`super::taylor::recur::MAX_ORDER`].
+    #[allow(clippy::too_many_arguments)]
+    pub fn taylor(
+        &self,
+        t: f64,
+        y: &[f64],
+        params: &[f64],
+        derived: &[f64],
+        order: usize,
+        out: &mut [f64],
+        work: &mut TaylorWork,
+    ) -> Result<bool, TaylorError> {
+        let program = self.taylor.as_ref().map_err(Clone::clone)?;
+        let at = At { t, y, rates: &[], params, derived };
+        Ok(program.coefficients(t, y, |input| at.read(input), order, out, work))
     }
 
     /// Output `k` at `(t, y)` into `out` (its columns); `rates` are `u'` when it needs them.
@@ -146,8 +173,8 @@ struct At<'a> {
 }
 
 impl At<'_> {
-    fn run(&self, s: &Section, regs: &mut Vec<f64>, out: &mut [f64]) {
-        let read = |input: Input| match input {
+    fn read(&self, input: Input) -> f64 {
+        match input {
             Input::Time => self.t,
             Input::State(i) => self.y[i],
             Input::Param(i) => self.params[i],
@@ -155,7 +182,10 @@ impl At<'_> {
             Input::Rate(i) => self.rates[i],
             // Model sections read no slots (only event sections do).
             Input::Slot(_) => f64::NAN,
-        };
-        s.eval_in(read, regs, out)
+        }
+    }
+
+    fn run(&self, s: &Section, regs: &mut Vec<f64>, out: &mut [f64]) {
+        s.eval_in(|input| self.read(input), regs, out)
     }
 }

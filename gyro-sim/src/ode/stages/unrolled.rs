@@ -24,8 +24,11 @@ const MAX_STAGES: usize = 17;
 struct Row<const M: usize>;
 
 impl<const M: usize> Row<M> {
-    const TAB: Option<&'static Tableau> = if M < METHODS.len() && METHODS[M].tableau.c.len() <= MAX_STAGES {
-        Some(METHODS[M].tableau)
+    const TAB: Option<&'static Tableau> = if M < METHODS.len() {
+        match METHODS[M].tableau {
+            Some(tab) if tab.c.len() <= MAX_STAGES => Some(tab),
+            _ => None,
+        }
     } else {
         None
     };
@@ -162,7 +165,7 @@ mod tests {
     #[test]
     fn every_table_row_takes_the_unrolled_step_when_the_dimension_is_fixed() {
         let y = [1.0, 1.0];
-        for tab in METHODS.iter().map(|m| m.tableau) {
+        for tab in METHODS.iter().filter_map(|m| m.tableau) {
             let mut fixed = Work::<Decay, 2>::new(&Decay, tab);
             Decay.rhs(0.0, &y, &mut fixed.k[..2]);
             assert!(fixed.step_unrolled(0.0, &y, 0.1), "{}", tab.name);

@@ -5,6 +5,7 @@ mod metadata;
 mod module;
 mod outputs;
 mod section;
+mod taylor;
 
 pub use module::{is_quaternion, module};
 pub use section::{print as print_section, Scalar, SectionStyle};

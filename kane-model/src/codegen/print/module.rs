@@ -1,6 +1,6 @@
 //! The model module printed: in come a spec and its lowered program; out go the items of a Rust
-//! module (`Params`, `derive`, `rhs_derived`, `rhs`, `output`, `jacobian`, `INFO` and a
-//! `Model` implementing [`crate::runtime::GeneratedModel`]).
+//! module (`Params`, `derive`, `rhs_derived`, `rhs`, `output`, `jacobian`, `taylor_derived`,
+//! `INFO` and a `Model` implementing [`crate::runtime::GeneratedModel`]).
 
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
@@ -10,6 +10,7 @@ use crate::spec::{ModelSpec, OrientationForm, OutputKind};
 use super::super::ir::{Input, Program};
 use super::super::lower::Lowered;
 use super::super::names::{const_ident, rust_ident};
+use super::super::taylor::TaylorProgram;
 use super::metadata;
 use super::section::{self, Scalar, SectionStyle};
 
@@ -27,8 +28,11 @@ pub fn module(spec: &ModelSpec, lowered: &Lowered) -> TokenStream {
     let params_items = params_items(spec, lowered, &param_idents);
     let quaternion: Vec<bool> = spec.outputs.iter().map(|o| is_quaternion(&o.kind)).collect();
     let compute = functions(program, &param_idents, &quaternion);
+    // A right-hand side whose every operation has a recurrence (all do) gets Taylor coefficients.
+    let taylor = TaylorProgram::new(&program.rhs, ns).ok();
+    let taylor_fn = taylor.as_ref().map(|t| super::taylor::taylor_fn(t, &input_tokens(&param_idents, true)));
     let info = metadata::info(&super::super::meta::Meta::of(spec, lowered));
-    let model_impl = model_impl(spec, lowered, &param_idents);
+    let model_impl = model_impl(spec, lowered, &param_idents, taylor.is_some());
     quote! {
         /// Number of states: coordinates, then speeds.
         pub const N_STATES: usize = #ns;
@@ -48,6 +52,7 @@ pub fn module(spec: &ModelSpec, lowered: &Lowered) -> TokenStream {
             pub v: [f64; #n_derived],
         }
         #compute
+        #taylor_fn
         /// The model's metadata: names, units, outputs.
         pub const INFO: ::kane_model::runtime::ModelInfo = #info;
         #model_impl
@@ -184,7 +189,14 @@ fn functions(program: &Program, params: &[Ident], quaternion: &[bool]) -> TokenS
 }
 
 /// The `Model` type and its `GeneratedModel` implementation.
-fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident]) -> TokenStream {
+fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident], taylor: bool) -> TokenStream {
+    let taylor_method = taylor.then(|| {
+        quote! {
+            fn taylor(t: f64, y: &[f64], p: &Params, d: &Derived, order: usize, out: &mut [f64], work: &mut ::kane_model::runtime::TaylorWork) -> bool {
+                taylor_derived(t, y, p, d, order, out, work)
+            }
+        }
+    });
     let initial = lowered.states.iter().map(|s| nan_or(spec.default_of(spec.symbol_name(*s))));
     let names: Vec<String> =
         lowered.params.iter().map(|s| spec.symbol_name(*s).to_ascii_uppercase()).collect();
@@ -251,6 +263,7 @@ fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident]) -> TokenStr
                     *r = d.eps;
                 }
             }
+            #taylor_method
         }
     }
 }

@@ -120,7 +120,7 @@ fn binary(a: TokenStream, op: TokenStream, b: TokenStream) -> TokenStream {
 }
 
 /// A constant in the section's number type.
-fn constant(c: f64, scalar: &Scalar) -> TokenStream {
+pub(super) fn constant(c: f64, scalar: &Scalar) -> TokenStream {
     let lit = if c.is_nan() {
         quote!(f64::NAN)
     } else if c < 0.0 {

@@ -1,0 +1,346 @@
+//! The Taylor method. In: a [`System`] that gives its own Taylor coefficients
+//! ([`System::taylor`], generated from the model's equations), `(t0, y0)` and tolerances; out:
+//! one step per [`TaylorStepper::step`], values anywhere in the last step from the Taylor
+//! polynomial itself ([`TaylorStepper::interpolate`]), and the cost in [`Stats`].
+//!
+//! Order and step follow Jorba and Zou (2005) as heyoka applies them, per component: the order
+//! is `p = ceil(-ln(eps) / 2 + 1)` and the step `h = rho / e^2 * exp(-0.7 / (p - 1))`, where
+//! `rho = min(rho_(p-1), rho_p)` over the last two coefficients and
+//! `rho_k = min_i (s_i / |y_ik|)^(1/k)`. Each component's tolerance is `tol_i = atol + rtol |y_i|`
+//! (as the Runge-Kutta pairs weigh it), `eps = min_i tol_i / max(1, |y_i|)` and
+//! `s_i = tol_i / eps`, so term `p` stays near `tol_i` in every component (heyoka takes one
+//! max norm over all, which lets a large component set the error of small ones). Every step is
+//! accepted: the estimate is made before the step, from the series itself.
+
+use std::ops::ControlFlow;
+
+use super::drive::drive;
+use super::stepper::{Stats, StopReason, DEFAULT_MAX_STEPS};
+use super::{OdeError, System, TaylorWork, Tolerances};
+
+/// The lowest order a step takes (the step-size rule reads orders `p - 1` and `p`).
+const MIN_ORDER: usize = 2;
+/// The highest order a step takes (tolerances of 1e-16 ask 20).
+const MAX_ORDER: usize = kane_model::runtime::TAYLOR_MAX_ORDER;
+
+/// A Taylor-method stepper for `sys`.
+pub struct TaylorStepper<'a, S: System + ?Sized> {
+    sys: &'a S,
+    tol: Tolerances,
+    t: f64,
+    y: Vec<f64>,
+    /// The last step: where it began, its size, its order and the coefficients there
+    /// (state-major, `order + 1` per state).
+    t_prev: f64,
+    h_prev: f64,
+    order: usize,
+    coeffs: Vec<f64>,
+    /// Each component's tolerance relative to the order's `eps`.
+    scales: Vec<f64>,
+    work: TaylorWork,
+    stop: Option<f64>,
+    horizon: Option<f64>,
+    max_steps: usize,
+    stats: Stats,
+}
+
+impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
+    /// A stepper at `(t0, y0)`. An error when `y0` is not finite or not of the system's
+    /// dimension, or when the system has no Taylor coefficients.
+    pub fn new(sys: &'a S, t0: f64, y0: &[f64], tol: Tolerances) -> Result<Self, OdeError> {
+        let n = sys.dim();
+        if y0.len() != n {
+            return Err(OdeError::DimensionMismatch { expected: n, found: y0.len() });
+        }
+        check_finite(t0, y0)?;
+        let mut stepper = TaylorStepper {
+            sys,
+            tol,
+            t: t0,
+            y: y0.to_vec(),
+            t_prev: t0,
+            h_prev: 0.0,
+            order: 0,
+            coeffs: y0.to_vec(),
+            scales: Vec::new(),
+            work: Vec::new(),
+            stop: None,
+            horizon: None,
+            max_steps: DEFAULT_MAX_STEPS,
+            stats: Stats::default(),
+        };
+        // The coefficients at the start: the check that the system has them, and the first
+        // step's (unless a projection moves the state first).
+        stepper.expand()?;
+        Ok(stepper)
+    }
+
+    /// Steps never pass `t_stop`; the one that reaches it ends on it exactly.
+    pub fn set_stop_time(&mut self, t_stop: f64) {
+        self.stop = Some(t_stop);
+    }
+
+    /// Where the whole integration ends (bounds a step when there is no stop time).
+    pub fn set_horizon(&mut self, t_end: f64) {
+        self.horizon = Some(t_end);
+    }
+
+    /// At most `max` steps in all ([`OdeError::TooManySteps`] before one more).
+    pub fn set_max_steps(&mut self, max: usize) {
+        self.max_steps = max;
+    }
+
+    /// The current time.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// The current state.
+    pub fn y(&self) -> &[f64] {
+        &self.y
+    }
+
+    /// Where the last step began (`t0` before the first).
+    pub fn step_start(&self) -> f64 {
+        self.t_prev
+    }
+
+    /// The order of the last step (of the coming one before the first).
+    pub fn order(&self) -> usize {
+        self.order
+    }
+
+    /// The cost so far: steps, and in `rhs_evals` the coefficient passes (order `p` takes `p`;
+    /// pass 0 is one evaluation of the right-hand side, pass `k` up to `k` times its products).
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+
+    /// The order for the tolerances at the current state: `eps` the smallest of the components'
+    /// tolerances `atol + rtol |y_i|` relative to `max(1, |y_i|)`; and each component's scale
+    /// `(atol + rtol |y_i|) / eps` into `scales`.
+    fn order_and_scales(&mut self) -> usize {
+        let Tolerances { rtol, atol } = self.tol;
+        self.scales.clear();
+        self.scales.extend(self.y.iter().map(|v| atol + rtol * v.abs()));
+        let eps =
+            self.scales.iter().zip(&self.y).fold(f64::INFINITY, |m, (s, v)| m.min(s / v.abs().max(1.0)));
+        self.scales.iter_mut().for_each(|s| *s /= eps);
+        let p = (-eps.ln() / 2.0 + 1.0).ceil();
+        if p.is_finite() {
+            (p as usize).clamp(MIN_ORDER, MAX_ORDER)
+        } else {
+            MAX_ORDER
+        }
+    }
+
+    /// The coefficients at the current state into `coeffs`, at the order the tolerances ask.
+    fn expand(&mut self) -> Result<(), OdeError> {
+        let p = self.order_and_scales();
+        let n = self.y.len();
+        self.coeffs.resize(n * (p + 1), 0.0);
+        if !self.sys.taylor(self.t, &self.y, p, &mut self.coeffs, &mut self.work) {
+            return Err(OdeError::NoTaylorCoefficients);
+        }
+        self.order = p;
+        self.stats.rhs_evals += p;
+        Ok(())
+    }
+
+    /// The step the last two coefficients allow (Jorba and Zou; see the module's text).
+    fn step_size(&self) -> f64 {
+        let p = self.order;
+        let n1 = p + 1;
+        // min_i (scale_i / |c_ik|)^(1/k): the step whose term k is each component's tolerance.
+        let rho = |k: usize| {
+            let ratio = self
+                .scales
+                .iter()
+                .enumerate()
+                .fold(f64::INFINITY, |m, (i, s)| m.min(s / self.coeffs[i * n1 + k].abs()));
+            ratio.powf(1.0 / k as f64)
+        };
+        let rho_m = rho(p - 1).min(rho(p));
+        rho_m / std::f64::consts::E.powi(2) * (-0.7 / (p - 1) as f64).exp()
+    }
+
+    /// Takes one step, or none when the stepper is at the stop time already; first the system
+    /// may project the state.
+    pub fn step(&mut self) -> Result<StopReason, OdeError> {
+        if self.stop.is_some_and(|stop| self.t >= stop) {
+            return Ok(StopReason::StopTimeReached);
+        }
+        if self.stats.steps >= self.max_steps {
+            return Err(OdeError::TooManySteps { time: self.t, max: self.max_steps });
+        }
+        let projected = self.sys.project(&mut self.y);
+        // The first step's coefficients were computed by `new` (unless the state moved since).
+        let fresh = self.stats.steps == 0 && !projected;
+        if !fresh {
+            self.expand()?;
+        }
+        let mut h = self.step_size();
+        let target = self.stop.or(self.horizon);
+        if !h.is_finite() {
+            // A polynomial solution: nothing bounds the step but the way to go.
+            h = target.map_or(1.0, |end| end - self.t);
+        }
+        let lands = target.filter(|end| self.t + h >= *end);
+        if let Some(end) = lands {
+            h = end - self.t;
+        }
+        if self.t + h <= self.t {
+            return Err(OdeError::StepSizeUnderflow { time: self.t, step: h });
+        }
+        let t_new = lands.unwrap_or(self.t + h);
+        let mut y_new = std::mem::take(&mut self.y);
+        self.evaluate(h, &mut y_new);
+        check_finite(t_new, &y_new)?;
+        self.y = y_new;
+        (self.t_prev, self.h_prev, self.t) = (self.t, h, t_new);
+        self.stats.steps += 1;
+        let reached = self.stop.is_some_and(|stop| t_new >= stop);
+        Ok(if reached { StopReason::StopTimeReached } else { StopReason::StepTaken })
+    }
+
+    /// The Taylor polynomial of the last expansion at `tau` past its start, into `out`.
+    fn evaluate(&self, tau: f64, out: &mut [f64]) {
+        let n1 = self.order + 1;
+        for (i, o) in out.iter_mut().enumerate() {
+            let c = &self.coeffs[i * n1..(i + 1) * n1];
+            *o = c.iter().rev().fold(0.0, |acc, ck| acc * tau + ck);
+        }
+    }
+
+    /// The state at `t` in the last step into `out`, from its Taylor polynomial (at its end,
+    /// the step's own value). An error outside the step or for `out` of the wrong length.
+    pub fn interpolate(&self, t: f64, out: &mut [f64]) -> Result<(), OdeError> {
+        if out.len() != self.y.len() {
+            return Err(OdeError::DimensionMismatch { expected: self.y.len(), found: out.len() });
+        }
+        if t == self.t {
+            out.copy_from_slice(&self.y);
+            return Ok(());
+        }
+        if !(self.t_prev <= t && t < self.t) {
+            return Err(OdeError::OutsideStep { t, start: self.t_prev, end: self.t });
+        }
+        self.evaluate(t - self.t_prev, out);
+        Ok(())
+    }
+}
+
+/// [`super::integrate_limited`] for the Taylor method: steps freely to the last time and
+/// evaluates each step's polynomial at the output times inside it.
+pub(super) fn integrate<S: System + ?Sized>(
+    sys: &S,
+    t0: f64,
+    y0: &[f64],
+    times: &[f64],
+    tol: Tolerances,
+    max_steps: usize,
+    out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
+) -> Result<Stats, OdeError> {
+    let mut stepper = TaylorStepper::new(sys, t0, y0, tol)?;
+    stepper.set_max_steps(max_steps);
+    let Some(&t_end) = times.last() else { return Ok(stepper.stats()) };
+    stepper.set_stop_time(t_end);
+    Ok(drive(&mut stepper, times, true, |_| None, out)?.stats)
+}
+
+fn check_finite(t: f64, y: &[f64]) -> Result<(), OdeError> {
+    match y.iter().position(|v| !v.is_finite()) {
+        Some(index) => Err(OdeError::NonFinite { time: t, index, value: y[index] }),
+        None => Ok(()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ode::{integrate, Method};
+
+    /// `x' = v`, `v' = -x`: coefficients `c_{k+1} = A c_k / (k + 1)`; `x = x0 cos t + v0 sin t`.
+    struct Oscillator;
+    impl System for Oscillator {
+        fn dim(&self) -> usize {
+            2
+        }
+        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
+            dy[0] = y[1];
+            dy[1] = -y[0];
+        }
+        fn taylor(&self, _t: f64, y: &[f64], order: usize, out: &mut [f64], _w: &mut TaylorWork) -> bool {
+            let n1 = order + 1;
+            (out[0], out[n1]) = (y[0], y[1]);
+            for k in 0..order {
+                let kk = (k + 1) as f64;
+                (out[k + 1], out[n1 + k + 1]) = (out[n1 + k] / kk, -out[k] / kk);
+            }
+            true
+        }
+    }
+
+    /// The same equations without Taylor coefficients.
+    struct Plain;
+    impl System for Plain {
+        fn dim(&self) -> usize {
+            2
+        }
+        fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+            Oscillator.rhs(t, y, dy)
+        }
+    }
+
+    fn run(tol: f64, times: &[f64]) -> (Vec<Vec<f64>>, Stats) {
+        let mut rows = Vec::new();
+        let method = Method::Taylor(Tolerances { rtol: tol, atol: tol });
+        let stats = integrate(&Oscillator, 0.0, &[1.0, 0.5], times, method, |_, y| {
+            rows.push(y.to_vec());
+            ControlFlow::Continue(())
+        })
+        .unwrap();
+        (rows, stats)
+    }
+
+    #[test]
+    fn errors_follow_the_tolerance_and_dense_output_is_as_accurate() {
+        let times: Vec<f64> = (0..=1000).map(|i| i as f64 * 0.02).collect();
+        for tol in [1e-6, 1e-9, 1e-12, 1e-15] {
+            let (rows, stats) = run(tol, &times);
+            let worst = times.iter().zip(&rows).fold(0.0f64, |m, (t, y)| {
+                let x = t.cos() + 0.5 * t.sin();
+                m.max((y[0] - x).abs())
+            });
+            // 20 time units: the global error is a few steps' local errors.
+            assert!(worst < 30.0 * tol.max(1e-14), "tol {tol:e}: error {worst:e}");
+            assert!(stats.steps < 100, "tol {tol:e}: {} steps", stats.steps);
+            assert!(stats.rhs_evals >= stats.steps * MIN_ORDER);
+        }
+    }
+
+    #[test]
+    fn the_order_follows_the_tolerance() {
+        let mut s =
+            TaylorStepper::new(&Oscillator, 0.0, &[1.0, 0.0], Tolerances { rtol: 1e-12, atol: 1e-12 })
+                .unwrap();
+        // ceil(-ln(1e-12) / 2 + 1) = ceil(14.8) = 15.
+        assert_eq!(s.order(), 15);
+        s.set_stop_time(1.0);
+        while s.step().unwrap() == StopReason::StepTaken {}
+        assert_eq!(s.t(), 1.0);
+        let mut y = [0.0; 2];
+        assert!(s.interpolate(2.0, &mut y).is_err());
+    }
+
+    #[test]
+    fn a_system_without_coefficients_is_a_clear_error() {
+        let method = Method::Taylor(Tolerances { rtol: 1e-9, atol: 1e-9 });
+        let err = integrate(&Plain, 0.0, &[1.0, 0.0], &[1.0], method, |_, _| ControlFlow::Continue(()))
+            .unwrap_err();
+        assert_eq!(err, OdeError::NoTaylorCoefficients);
+        assert!(err.to_string().contains("use another method"), "{err}");
+        let erk = crate::ode::ErkStepper::new(&Plain, 0.0, &[1.0, 0.0], method);
+        assert!(matches!(erk, Err(OdeError::NotRungeKutta)));
+    }
+}

@@ -1,0 +1,144 @@
+//! The Taylor method on the generated models: coefficients of the gimbal and the heavy top
+//! checked against the right-hand side and dual numbers (the time derivative of coefficient `k`
+//! along the solution is `(k + 1)` times coefficient `k + 1`); the series' truncation error
+//! falls as `h^(p+1)`; the stepper's error follows the tolerance with dense output between
+//! steps; Trial 3 by the Taylor method equals the DOP853 run.
+
+use std::ops::ControlFlow;
+
+use gyro_sim::models::{gimbal_gyroscope as gimbal, heavy_top as top};
+use gyro_sim::ode::{integrate, tableau::DOP853, Method, Tolerances};
+use gyro_sim::run::run;
+use gyro_sim::scene::Scene;
+use gyro_sim::solve::ModelSystem;
+use kane_model::dual::Dual;
+use kane_model::runtime::GeneratedModel;
+
+/// Coefficients of `model` at `(t, y)` in `f64` and, with `y = y + eps f(y)`, `t = t + eps`, in
+/// dual numbers; checks coefficient 1 against `f` and each derivative against the next one.
+macro_rules! check_against_duals {
+    ($m:ident, $t:expr, $y:expr) => {{
+        let p = $m::Params::default();
+        let d = $m::derive(&p);
+        let (t, y): (f64, Vec<f64>) = ($t, $y.to_vec());
+        let (n, order) = (y.len(), 14);
+        let n1 = order + 1;
+        let mut c = vec![0.0; n * n1];
+        assert!($m::taylor_derived(t, &y, &p, &d, order, &mut c, &mut Vec::new()));
+        let mut f = vec![0.0; n];
+        $m::rhs_derived(t, &y, &p, &d, &mut f);
+        let yd: Vec<Dual<f64>> = (0..n).map(|i| Dual::new(y[i], f[i])).collect();
+        let mut cd = vec![Dual::new(0.0, 0.0); n * n1];
+        assert!($m::taylor_derived(Dual::new(t, 1.0), &yd, &p, &d, order, &mut cd, &mut Vec::new()));
+        for i in 0..n {
+            assert_eq!(c[i * n1], y[i]);
+            assert!((c[i * n1 + 1] - f[i]).abs() <= 1e-14 * f[i].abs().max(1.0), "y_1 = f, state {i}");
+        }
+        for k in 0..order {
+            // (k + 1) y_{k+1}, state by state, against d/dt y_k; relative to the largest.
+            let want: Vec<f64> = (0..n).map(|i| (k + 1) as f64 * c[i * n1 + k + 1]).collect();
+            let scale = want.iter().fold(1e-300f64, |m, v| m.max(v.abs()));
+            for i in 0..n {
+                let got = cd[i * n1 + k].eps;
+                assert!((got - want[i]).abs() <= 1e-11 * scale, "state {i} order {k}: {got} vs {}", want[i]);
+                assert!((cd[i * n1 + k].re - c[i * n1 + k]).abs() <= 1e-13 * scale * (k + 1) as f64);
+            }
+        }
+        c
+    }};
+}
+
+#[test]
+fn gimbal_and_top_coefficients_match_dual_numbers() {
+    let c = check_against_duals!(gimbal, 0.3, [0.3, 0.4, 0.1, 0.5, -0.7, 10.0]);
+    assert!(c[3 * 15 + 14].abs() > 0.0, "high orders are computed");
+    let (h, s) = (0.5f64.sqrt(), 0.4f64);
+    check_against_duals!(top, 0.0, [h * s.cos(), h * s.sin(), 0.5, 0.5, 0.3, -0.2, 10.0]);
+}
+
+/// The gimbal of Trial 3 (Y = Z = 10, U3 = 100 rad/s) as an ODE system.
+fn trial3() -> (ModelSystem<gimbal::Model>, Vec<f64>) {
+    let mut p = gimbal::Params::default();
+    gimbal::Model::set_param(&mut p, "Y", 10.0);
+    gimbal::Model::set_param(&mut p, "Z", 10.0);
+    (ModelSystem::new(p), vec![0.0, 0.0, 0.0, 0.0, 0.0, 100.0])
+}
+
+/// The states at `times` from `method`.
+fn states_at(sys: &ModelSystem<gimbal::Model>, y0: &[f64], times: &[f64], method: Method) -> Vec<Vec<f64>> {
+    let mut rows = Vec::new();
+    integrate(sys, 0.0, y0, times, method, |_, y| {
+        rows.push(y.to_vec());
+        ControlFlow::Continue(())
+    })
+    .unwrap();
+    rows
+}
+
+fn largest_difference(a: &[Vec<f64>], b: &[Vec<f64>]) -> f64 {
+    a.iter().flatten().zip(b.iter().flatten()).fold(0.0, |m, (x, y)| m.max((x - y).abs() / y.abs().max(1.0)))
+}
+
+#[test]
+fn the_truncated_series_errs_as_h_to_the_order_plus_one() {
+    let (sys, y0) = trial3();
+    let p = sys.params().clone();
+    let d = gimbal::derive(&p);
+    let order = 6;
+    let n1 = order + 1;
+    let mut c = vec![0.0; 6 * n1];
+    assert!(gimbal::taylor_derived(0.0, &y0, &p, &d, order, &mut c, &mut Vec::new()));
+    let tight = Method::Adaptive(&DOP853, Tolerances { rtol: 1e-15, atol: 1e-15 });
+    let error_at = |h: f64| {
+        let exact = &states_at(&sys, &y0, &[h], tight)[0];
+        let series: Vec<f64> =
+            (0..6).map(|i| c[i * n1..(i + 1) * n1].iter().rev().fold(0.0, |a, ck| a * h + ck)).collect();
+        largest_difference(&[series], std::slice::from_ref(exact))
+    };
+    let (e1, e2) = (error_at(2e-2), error_at(1e-2));
+    let ratio = e1 / e2;
+    // Order 6: the error is the first term left out, O(h^7): halving h divides it by 2^7 = 128.
+    assert!(e2 > 1e-9, "the error must stand above the reference's: {e2:e}");
+    assert!((64.0..256.0).contains(&ratio), "errors {e1:e}, {e2:e}: ratio {ratio}");
+}
+
+#[test]
+fn the_stepper_follows_the_tolerance_with_dense_output_between_steps() {
+    let (sys, y0) = trial3();
+    let times: Vec<f64> = (0..=2000).map(|i| i as f64 * 5e-4).collect();
+    let reference =
+        states_at(&sys, &y0, &times, Method::Adaptive(&DOP853, Tolerances { rtol: 1e-14, atol: 1e-14 }));
+    let mut last = f64::INFINITY;
+    for tol in [1e-6, 1e-9, 1e-12] {
+        let method = Method::Taylor(Tolerances { rtol: tol, atol: tol });
+        let mut steps = 0;
+        let mut rows = Vec::new();
+        let stats = integrate(&sys, 0.0, &y0, &times, method, |_, y| {
+            rows.push(y.to_vec());
+            ControlFlow::Continue(())
+        })
+        .unwrap();
+        steps += stats.steps;
+        let error = largest_difference(&rows, &reference);
+        // Most output times fall inside steps: they come from the series.
+        assert!(steps * 4 < times.len(), "tol {tol:e}: {steps} steps for {} times", times.len());
+        assert!(error < 1e3 * tol, "tol {tol:e}: error {error:e}");
+        assert!(error < last, "tol {tol:e}: error {error:e} is no smaller than {last:e}");
+        last = error;
+    }
+}
+
+#[test]
+fn trial_three_by_taylor_equals_the_dop853_run() {
+    let path = format!("{}/scenes/paper/trial3.toml", env!("CARGO_MANIFEST_DIR"));
+    let scene = Scene::load(std::path::Path::new(&path)).unwrap();
+    let reference = run(&scene, None).unwrap();
+    let mut taylor = scene.clone();
+    taylor.integrator.method = "taylor".into();
+    let summary = run(&taylor, None).unwrap();
+    let asked = scene.integrator.accuracy.unwrap();
+    let (a, b) = (&summary.trajectory.rows, &reference.trajectory.rows);
+    assert_eq!(a.len(), b.len());
+    let worst = largest_difference(a, b);
+    assert!(worst <= asked, "Trial 3: taylor differs from dop853 by {worst:e} (asked {asked:e})");
+}

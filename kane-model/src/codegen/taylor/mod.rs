@@ -1,0 +1,200 @@
+//! Taylor coefficients of the solution: in comes the `rhs` section of a lowered program (the
+//! mass-matrix solve included); out goes a [`TaylorProgram`], the same computation as operations
+//! with normalised-derivative recurrences ([`recur`]), which [`TaylorProgram::coefficients`]
+//! runs over any `Float` and the printer spells as Rust. Given `y(t)`, it gives
+//! `y_0 .. y_p` with `y(t + h) = sum_k y_k h^k + O(h^(p+1))`: pass `k` computes coefficient `k`
+//! of every value, and the states' next coefficient is `y_{k+1} = f_k / (k + 1)`.
+
+mod build;
+pub mod recur;
+
+use num_traits::Float;
+use thiserror::Error;
+
+use crate::expr::Func;
+
+use super::ir::{Input, Section};
+
+pub use build::build;
+
+/// Why a section has no Taylor program.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum TaylorError {
+    /// The section reads a speed rate `u'_i`, which only outputs may read.
+    #[error(
+        "the section reads the speed rate u'_{0}: only a right-hand side (`rhs`) has Taylor coefficients"
+    )]
+    ReadsRates(usize),
+    /// The section's results are not one derivative per state.
+    #[error("the section has {results} results for {states} states: only a right-hand side (`rhs`) has Taylor coefficients")]
+    NotARightHandSide {
+        /// Results of the section.
+        results: usize,
+        /// States.
+        states: usize,
+    },
+    /// The section reads a state past the last.
+    #[error("the section reads state {0}, past the last")]
+    UnknownState(usize),
+}
+
+/// One Taylor operation; operands are earlier values.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TKind {
+    /// Time: `t, 1, 0, ...`.
+    Time,
+    /// State `i`.
+    State(u32),
+    /// A constant.
+    Const(f64),
+    /// Section input `k` (a parameter or derived quantity): constant.
+    Input(u32),
+    /// `a + b`.
+    Add(u32, u32),
+    /// `a - b`.
+    Sub(u32, u32),
+    /// `-a`.
+    Neg(u32),
+    /// `a b`.
+    Mul(u32, u32),
+    /// `a^2`.
+    Sqr(u32),
+    /// `a s`, `s` constant.
+    Scale(u32, u32),
+    /// `a / b`.
+    Div(u32, u32),
+    /// `a / s`, `s` constant.
+    DivConst(u32, u32),
+    /// `sqrt(a)`.
+    Sqrt(u32),
+    /// `exp(a)`.
+    Exp(u32),
+    /// `ln(a)`.
+    Ln(u32),
+    /// `sin(a)`, with the value of its partner `cos(a)`.
+    Sin(u32, u32),
+    /// `cos(a)`, with the value of its partner `sin(a)`.
+    Cos(u32, u32),
+    /// `sinh(a)`, with its partner `cosh(a)`.
+    Sinh(u32, u32),
+    /// `cosh(a)`, with its partner `sinh(a)`.
+    Cosh(u32, u32),
+    /// `f(a)` with `f(a)' = a' / q` (atan, asin, acos).
+    Integral(Func, u32, u32),
+    /// `atan2(y, x)` with `r = x^2 + y^2`.
+    Atan2(u32, u32, u32),
+    /// `|a|`.
+    Abs(u32),
+    /// `sign(a)`.
+    Sign(u32),
+}
+
+/// A Taylor operation and whether its value varies (reads a state or time); constant values
+/// are computed at order 0 only.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TaylorOp {
+    /// What it computes.
+    pub kind: TKind,
+    /// It reads a state or time.
+    pub series: bool,
+}
+
+/// A right-hand side as Taylor operations.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TaylorProgram {
+    /// What [`TKind::Input`] reads (the section's inputs).
+    pub inputs: Vec<Input>,
+    /// The operations; operation `v` defines value `v`.
+    pub ops: Vec<TaylorOp>,
+    /// The value of `y_i'` for each state `i`.
+    pub results: Vec<usize>,
+    /// `(value, result)` for each state the operations read: its coefficient `k` is
+    /// `result_{k-1} / k`.
+    pub states: Vec<(usize, usize)>,
+    /// The constant values (zero past order 0).
+    pub constants: Vec<usize>,
+    /// The value of time, if read.
+    pub time: Option<usize>,
+}
+
+impl TaylorProgram {
+    /// The Taylor program of a right-hand side with `n_states` states.
+    pub fn new(section: &Section, n_states: usize) -> Result<Self, TaylorError> {
+        build(section, n_states)
+    }
+
+    /// The normalised Taylor coefficients of the solution through `(t, y)`, orders `0..=order`,
+    /// into `out` (state-major: state `i`'s coefficient `k` at `out[i * (order + 1) + k]`);
+    /// `read` gives parameters and derived quantities; `work` is scratch (reused to save
+    /// allocating). False (nothing done) for an order above [`recur::MAX_ORDER`].
+    pub fn coefficients<T: Float>(
+        &self,
+        t: T,
+        y: &[T],
+        read: impl Fn(Input) -> T,
+        order: usize,
+        out: &mut [T],
+        work: &mut Vec<recur::Row<T>>,
+    ) -> bool {
+        let nv = self.ops.len();
+        if !recur::start(work, nv, order, &self.constants, self.time.map(|v| (v, t))) {
+            return false;
+        }
+        let w = &mut work[..nv];
+        for (v, op) in self.ops.iter().enumerate() {
+            match op.kind {
+                TKind::Time => {}
+                TKind::State(i) => w[v][0] = y[i as usize],
+                TKind::Const(c) => w[v][0] = T::from(c).unwrap_or_else(T::nan),
+                TKind::Input(k) => w[v][0] = read(self.inputs[k as usize]),
+                kind => apply(kind, w, 0, v),
+            }
+        }
+        for k in 1..order {
+            recur::states(w, k, &self.states);
+            for (v, op) in self.ops.iter().enumerate() {
+                if op.series && !matches!(op.kind, TKind::Time | TKind::State(_)) {
+                    apply(op.kind, w, k, v);
+                }
+            }
+        }
+        recur::finish(w, order, y, &self.results, out);
+        true
+    }
+
+    /// Arithmetic operations whose value varies (each costs up to `k` products at order `k`).
+    pub fn series_op_count(&self) -> usize {
+        self.ops.iter().filter(|o| o.series && !matches!(o.kind, TKind::Time | TKind::State(_))).count()
+    }
+}
+
+/// Coefficient `k` of value `d`, computed by `kind` (an arithmetic operation).
+fn apply<T: Float>(kind: TKind, w: &mut [recur::Row<T>], k: usize, d: usize) {
+    use recur as r;
+    let u = |v: u32| v as usize;
+    match kind {
+        TKind::Add(a, b) => r::add(w, k, d, u(a), u(b)),
+        TKind::Sub(a, b) => r::sub(w, k, d, u(a), u(b)),
+        TKind::Neg(a) => r::neg(w, k, d, u(a)),
+        TKind::Mul(a, b) => r::mul(w, k, d, u(a), u(b)),
+        TKind::Sqr(a) => r::sqr(w, k, d, u(a)),
+        TKind::Scale(a, s) => r::scale(w, k, d, u(a), u(s)),
+        TKind::Div(a, b) => r::div(w, k, d, u(a), u(b)),
+        TKind::DivConst(a, s) => r::div_const(w, k, d, u(a), u(s)),
+        TKind::Sqrt(a) => r::sqrt(w, k, d, u(a)),
+        TKind::Exp(a) => r::exp(w, k, d, u(a)),
+        TKind::Ln(a) => r::ln(w, k, d, u(a)),
+        TKind::Sin(a, c) => r::sin(w, k, d, u(a), u(c)),
+        TKind::Cos(a, s) => r::cos(w, k, d, u(a), u(s)),
+        TKind::Sinh(a, c) => r::sinh(w, k, d, u(a), u(c)),
+        TKind::Cosh(a, s) => r::cosh(w, k, d, u(a), u(s)),
+        TKind::Integral(f, a, q) => r::integral(w, k, d, u(a), u(q), f),
+        TKind::Atan2(y, x, rr) => r::atan2(w, k, d, u(y), u(x), u(rr)),
+        TKind::Abs(a) => r::abs(w, k, d, u(a)),
+        TKind::Sign(a) => r::sign(w, k, d, u(a)),
+        TKind::Time | TKind::State(_) | TKind::Const(_) | TKind::Input(_) => {}
+    }
+}
+
+#[cfg(test)]
+mod tests;
