@@ -19,6 +19,12 @@ pub mod free_body {
     kane_derive::model!("../kane-model/models/free_body.al");
 }
 
+/// The EJS heavy symmetric top in its non-spinning axle frame: the spin angle is cyclic, so the
+/// step follows the nutation (spin-aware).
+pub mod heavy_top_axle {
+    kane_derive::model!("../kane-model/models/heavy_top_axle.al");
+}
+
 /// The same top built through kane-model's Rust API (`kane_model::models::HeavyTop`), with
 /// energy, angular-momentum and orientation outputs.
 pub mod heavy_top_rust {
@@ -30,6 +36,7 @@ pub fn register(registry: Registry) -> Registry {
     registry
         .with::<gimbal_gyroscope::Model>()
         .with::<heavy_top::Model>()
+        .with::<heavy_top_axle::Model>()
         .with::<heavy_top_rust::Model>()
         .with::<free_body::Model>()
 }

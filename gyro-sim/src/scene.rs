@@ -92,7 +92,8 @@ impl Axle {
 /// Integrator settings.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Integrator {
-    /// `dop853`, `dopri5`, `vern7`, `vern9`, `taylor` or `rk4`.
+    /// `dop853`, `dopri5`, `vern7`, `vern9`, `taylor` or `rk4` (`auto`, the default, is
+    /// resolved by the tolerances when the scene is read).
     pub method: String,
     /// Relative tolerance (adaptive methods).
     pub rtol: f64,
@@ -218,7 +219,19 @@ impl Text<'_> {
         output_step: f64,
     ) -> Result<Integrator, SceneError> {
         let integ = integ.unwrap_or_default();
-        let method = integ.method.as_ref().map_or("dopri5".to_string(), |m| m.get_ref().to_ascii_lowercase());
+        let named = integ.method.as_ref().map_or(crate::ode::AUTO.to_string(), |m| m.get_ref().to_ascii_lowercase());
+        // Without tolerances, an accuracy asked is where the refinement starts.
+        let default_tol = match &integ.accuracy {
+            Some(a) if a.get_ref().is_finite() && *a.get_ref() > 0.0 => *a.get_ref(),
+            _ => 1e-9,
+        };
+        let rtol = self.positive(&integ.rtol, default_tol, "rtol")?;
+        let atol = self.positive(&integ.atol, default_tol, "atol")?;
+        let method = if named == crate::ode::AUTO {
+            crate::ode::for_tolerances(crate::ode::Tolerances { rtol, atol }).name().to_string()
+        } else {
+            named
+        };
         let Some(info) = crate::ode::by_name(&method) else {
             let span = integ.method.as_ref().map_or(0..0, |m| m.span());
             return Err(self.err(
@@ -238,8 +251,6 @@ impl Text<'_> {
             Some(_) => Some(self.positive(&integ.accuracy, 0.0, "accuracy")?),
             None => None,
         };
-        // Without tolerances, an accuracy asked is where the refinement starts.
-        let default_tol = accuracy.unwrap_or(1e-9);
         let step = self.positive(&integ.step, output_step / 10.0, "step")?;
         let max_steps = self.max_steps(&integ.max_steps)?;
         if !info.adaptive {
@@ -247,8 +258,8 @@ impl Text<'_> {
         }
         Ok(Integrator {
             method,
-            rtol: self.positive(&integ.rtol, default_tol, "rtol")?,
-            atol: self.positive(&integ.atol, default_tol, "atol")?,
+            rtol,
+            atol,
             step,
             accuracy,
             max_steps,

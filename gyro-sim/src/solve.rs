@@ -211,6 +211,9 @@ impl<S: System> System for Reduced<'_, S> {
         }
     }
     fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
+        if self.all {
+            return self.inner.taylor(t, y, order, out, work);
+        }
         let mut full = self.full.borrow_mut();
         let (fy, fout) = &mut *full;
         let (n, n1) = (fy.len(), order + 1);

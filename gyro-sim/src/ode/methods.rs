@@ -100,6 +100,21 @@ pub static METHODS: &[MethodInfo] = &[
 /// The method a scene that names none gets.
 const DEFAULT_METHOD: &str = "dopri5";
 
+/// The name that picks the method by the tolerances ([`for_tolerances`]); a scene's default.
+pub const AUTO: &str = "auto";
+
+/// Below this tolerance (the larger of `rtol`, `atol`), [`for_tolerances`] picks vern9, at or
+/// above it dop853: where vern9 starts to take less time at equal error in BENCHMARKS.md's
+/// side-by-side table (Trial 3 and the top's cases).
+pub const AUTO_TIGHT: f64 = 1e-7;
+
+/// The method fastest at equal error for tolerances `tol`, from the measurements in
+/// BENCHMARKS.md ("Default method per tolerance").
+pub fn for_tolerances(tol: Tolerances) -> &'static MethodInfo {
+    let name = if tol.rtol.max(tol.atol) < AUTO_TIGHT { "vern9" } else { "dop853" };
+    by_name(name).unwrap_or(&METHODS[0])
+}
+
 /// The method called `name` (any case); None when there is none.
 pub fn by_name(name: &str) -> Option<&'static MethodInfo> {
     METHODS.iter().find(|m| m.name().eq_ignore_ascii_case(name))

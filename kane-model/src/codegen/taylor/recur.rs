@@ -31,7 +31,25 @@ fn cauchy<T: Float>(w: &[Row<T>], k: usize, x: usize, y: usize, lo: usize, hi: u
     }
     let xs = &w[x][lo..=hi];
     let ys = &w[y][k - hi..=k - lo];
-    xs.iter().zip(ys.iter().rev()).fold(T::zero(), |s, (a, b)| s + *a * *b)
+    dot_reversed(xs, ys)
+}
+
+/// `sum_j xs[j] ys[len - 1 - j]` in four interleaved partial sums (independent chains of
+/// additions, so consecutive products overlap instead of waiting on one running sum).
+#[inline(always)]
+fn dot_reversed<T: Float>(xs: &[T], ys: &[T]) -> T {
+    let n = xs.len().min(ys.len());
+    let (xs, ys) = (&xs[..n], &ys[..n]);
+    let mut acc = [T::zero(); 4];
+    let quads = n / 4;
+    for q in 0..quads {
+        for (l, a) in acc.iter_mut().enumerate() {
+            let j = 4 * q + l;
+            *a = *a + xs[j] * ys[n - 1 - j];
+        }
+    }
+    let tail = (4 * quads..n).fold(T::zero(), |s, j| s + xs[j] * ys[n - 1 - j]);
+    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
 }
 
 /// `sum_{j=1}^{hi} j x_j y_{k-j}`: the sum of the derivative rules.
@@ -39,11 +57,17 @@ fn cauchy<T: Float>(w: &[Row<T>], k: usize, x: usize, y: usize, lo: usize, hi: u
 fn weighted<T: Float>(w: &[Row<T>], k: usize, x: usize, y: usize, hi: usize) -> T {
     let xs = &w[x][1..=hi];
     let ys = &w[y][k - hi..k];
-    let mut j = T::zero();
-    xs.iter().zip(ys.iter().rev()).fold(T::zero(), |s, (a, b)| {
-        j = j + T::one();
-        s + j * *a * *b
-    })
+    let n = xs.len().min(ys.len());
+    let term = |j: usize| count::<T>(j + 1) * xs[j] * ys[n - 1 - j];
+    let mut acc = [T::zero(); 4];
+    let quads = n / 4;
+    for q in 0..quads {
+        for (l, a) in acc.iter_mut().enumerate() {
+            *a = *a + term(4 * q + l);
+        }
+    }
+    let tail = (4 * quads..n).fold(T::zero(), |s, j| s + term(j));
+    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
 }
 
 /// `d = a + b`.
@@ -221,12 +245,12 @@ pub fn start<T: Float>(
 }
 
 /// The states' coefficient `k` from the right-hand side's coefficient `k - 1`:
-/// `y_k = f_{k-1} / k`, for each `(row, result)` pair.
+/// `y_k = f_{k-1} / k` (times `1/k`, as in [`finish`]), for each `(row, result)` pair.
 #[inline(always)]
 pub fn states<T: Float>(w: &mut [Row<T>], k: usize, pairs: &[(usize, usize)]) {
-    let kt = count::<T>(k);
+    let inverse = T::one() / count::<T>(k);
     for &(row, result) in pairs {
-        w[row][k] = w[result][k - 1] / kt;
+        w[row][k] = w[result][k - 1] * inverse;
     }
 }
 
@@ -235,10 +259,13 @@ pub fn states<T: Float>(w: &mut [Row<T>], k: usize, pairs: &[(usize, usize)]) {
 #[inline(always)]
 pub fn finish<T: Float>(w: &[Row<T>], order: usize, y: &[T], results: &[usize], out: &mut [T]) {
     let n1 = order + 1;
-    for (i, &r) in results.iter().enumerate() {
-        out[i * n1] = y[i];
-        for k in 1..n1 {
-            out[i * n1 + k] = w[r][k - 1] / count(k);
+    for (i, y) in y.iter().enumerate().take(results.len()) {
+        out[i * n1] = *y;
+    }
+    for k in 1..n1 {
+        let inverse = T::one() / count::<T>(k);
+        for (i, &r) in results.iter().enumerate() {
+            out[i * n1 + k] = w[r][k - 1] * inverse;
         }
     }
 }
