@@ -596,4 +596,15 @@ mod tests {
         assert!(e.starts_with("top.toml:6:14: error: `precession` sets the body rates"), "{e}");
         assert!(e.contains("help: add rates = [\"W1\", \"W2\", \"W3\"]"), "{e}");
     }
+
+    #[test]
+    fn an_unnamed_or_auto_method_is_picked_by_the_tolerances() {
+        let head = "model = \"heavy_top\"\nt_final = 1.0\noutput_step = 0.1\n";
+        let method = |integ: &str| Scene::parse("top.toml", &format!("{head}{integ}")).unwrap().integrator.method;
+        assert_eq!(method(""), "vern9", "the default tolerances are 1e-9");
+        assert_eq!(method("[integrator]\nrtol = 1e-6\natol = 1e-6\n"), "dop853");
+        assert_eq!(method("[integrator]\nmethod = \"AUTO\"\nrtol = 1e-6\natol = 1e-10\n"), "dop853");
+        assert_eq!(method("[integrator]\nmethod = \"auto\"\nrtol = 1e-8\natol = 1e-8\n"), "vern9");
+        assert_eq!(method("[integrator]\nmethod = \"dopri5\"\nrtol = 1e-8\n"), "dopri5");
+    }
 }

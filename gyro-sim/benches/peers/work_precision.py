@@ -8,7 +8,9 @@ Cases and references (all in the repository):
   |x - ref| / max(1, |ref|) over the 0.05 s grid and the six states (gyro-sim bench's measure);
 - cusp, loops, nospin: the EJS top's presets against the closed forms (gyro-sim/tests/data/ejs/
   top_*.csv, 1 s grid to t = 50); fast: spin 1000 rad/s to t = 10 against
-  gyro-sim/tests/data/ejs/top_fast_quad.csv (0.01 s grid); error = largest |axle - axle_ref|.
+  gyro-sim/tests/data/ejs/top_fast_quad.csv (0.01 s grid); error = largest |axle - axle_ref|;
+  fast_spin_aware: the same, gyro-sim on its spin-aware model (ejs/fast_spin_aware.toml), the
+  peers on their own equations.
 
 Time: gyro-sim's own wall time of the integration (the median of `run --repeat R`; outputs only
 the states, no figures, no view); heyoka's propagate_grid (compilation excluded) and SciPy's
@@ -20,7 +22,7 @@ Not needed by the build or the tests. Needs heyoka, scipy, numpy (pip install he
 matplotlib for the figures (optional). Run from the repository root, after
 `cargo build --release -p gyro-sim`:
 
-    python3 gyro-sim/benches/peers/work_precision.py [--cases trial3,cusp,loops,nospin,fast]
+    python3 gyro-sim/benches/peers/work_precision.py [--cases trial3,cusp,loops,nospin,fast,...]
         [--methods dop853,vern9] [--repeats 7] [--out out/peers]
 """
 import argparse
@@ -51,6 +53,9 @@ CASES = {
     "loops": ("ejs/loops.toml", DATA / "ejs/top_loops.csv", 50.0, 1.0),
     "nospin": ("ejs/nospin.toml", DATA / "ejs/top_nospin.csv", 50.0, 1.0),
     "fast": ("ejs/fast.toml", DATA / "ejs/top_fast_quad.csv", 10.0, 0.01),
+    # gyro-sim's spin-aware model of the same top (heavy_top_axle); the peers run their own
+    # equations of the fast top.
+    "fast_spin_aware": ("ejs/fast_spin_aware.toml", DATA / "ejs/top_fast_quad.csv", 10.0, 0.01),
 }
 
 
@@ -96,7 +101,8 @@ def gyro_sim(case, method, tol, repeats, work):
 def initial(case):
     if case == "trial3":
         return [0, 0, 0, 0, 0, 100.0], [10.0, 10.0]
-    spin, prec = {"cusp": (10, 0), "loops": (10, -1), "nospin": (0, 0), "fast": (1000, 0)}[case]
+    spin, prec = {"cusp": (10, 0), "loops": (10, -1), "nospin": (0, 0), "fast": (1000, 0),
+                  "fast_spin_aware": (1000, 0)}[case]
     th = np.pi / 3 if case != "nospin" else np.pi / 180
     return [np.cos(th / 2), np.sin(th / 2), 0, 0, 0, prec * np.sin(th), float(spin)], []
 
@@ -209,7 +215,7 @@ def report(all_points, out):
 
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("--cases", default="trial3,cusp,loops,nospin,fast")
+    p.add_argument("--cases", default="trial3,cusp,loops,nospin,fast,fast_spin_aware")
     p.add_argument("--methods", default="dop853,vern9")
     p.add_argument("--repeats", type=int, default=7)
     p.add_argument("--no-scipy", action="store_true")

@@ -3,14 +3,19 @@
 //! [`super::root::illinois`], filtered by direction and counted, the list cut at the first
 //! crossing that ends the run.
 //!
-//! A crossing is a change of sign between the last nonzero value and the new one; the check is
-//! at step ends, so two crossings inside one step cancel and are missed (steps are short next to
-//! the motion the tolerances resolve). A zero at the start time is not a crossing, and neither is
+//! A crossing is a change of sign between the last nonzero value and the new one, checked at
+//! [`PARTS`] equal parts of each step (from the dense output), so two crossings cancel and are
+//! missed only when they fall inside one part. A zero at the start time is not a crossing, and neither is
 //! one within [`START_WINDOW`] of the span after it (the round-off of a value that starts at
 //! zero, such as a rate at a turning point).
 
 use super::root::illinois;
 use super::Direction;
+
+/// Each step is checked for sign changes in this many equal parts (its dense output evaluated at
+/// the `PARTS - 1` points between), so two crossings inside one step are found unless they fall
+/// in one part.
+pub const PARTS: usize = 4;
 
 /// Crossings this close after the start (relative to the span) are the start's own zero.
 pub const START_WINDOW: f64 = 1e-12;
@@ -92,25 +97,16 @@ impl Detector {
     ) -> Vec<Crossing> {
         let mut found = Vec::new();
         for (i, &end) in g_end.iter().enumerate() {
-            let (before, last) = (self.sign[i], self.last[i]);
-            let after = sign(end);
-            self.last[i] = end;
-            if after == 0.0 {
-                continue;
-            }
-            self.sign[i] = after;
-            if before == 0.0 || before == after {
-                continue;
-            }
-            let at = if last == 0.0 { t_prev } else { illinois(|s| g(i, s), t_prev, last, t, end) };
-            let rising = after > 0.0;
-            let wanted = match self.rules[i].direction {
-                Direction::Up => rising,
-                Direction::Down => !rising,
-                Direction::Both => true,
-            };
-            if wanted && at > self.t_min {
-                found.push(Crossing { event: i, t: at, rising, stop: false });
+            let mut start = t_prev;
+            for part in 1..=PARTS {
+                let (stop, value) = if part == PARTS {
+                    (t, end)
+                } else {
+                    let s = t_prev + (t - t_prev) * part as f64 / PARTS as f64;
+                    (s, g(i, s))
+                };
+                found.extend(self.crossing(i, start, stop, value, &mut g));
+                start = stop;
             }
         }
         found.sort_by(|a, b| a.t.total_cmp(&b.t));
@@ -124,6 +120,38 @@ impl Detector {
             }
         }
         out
+    }
+}
+
+impl Detector {
+    /// Event `i`'s crossing between `t0` (its last value there) and `t1` (value `end`), if it
+    /// changes sign there and goes the way the rule asks.
+    fn crossing(
+        &mut self,
+        i: usize,
+        t0: f64,
+        t1: f64,
+        end: f64,
+        g: &mut impl FnMut(usize, f64) -> f64,
+    ) -> Option<Crossing> {
+        let (before, last) = (self.sign[i], self.last[i]);
+        let after = sign(end);
+        self.last[i] = end;
+        if after == 0.0 {
+            return None;
+        }
+        self.sign[i] = after;
+        if before == 0.0 || before == after {
+            return None;
+        }
+        let at = if last == 0.0 { t0 } else { illinois(|s| g(i, s), t0, last, t1, end) };
+        let rising = after > 0.0;
+        let wanted = match self.rules[i].direction {
+            Direction::Up => rising,
+            Direction::Down => !rising,
+            Direction::Both => true,
+        };
+        (wanted && at > self.t_min).then_some(Crossing { event: i, t: at, rising, stop: false })
     }
 }
 
@@ -192,5 +220,16 @@ mod tests {
         assert_eq!(found.len(), 1);
         assert_eq!((found[0].event, found[0].stop), (1, true));
         assert!((found[0].t - 0.3).abs() < 1e-15);
+    }
+
+    #[test]
+    fn two_crossings_inside_one_step_are_both_found() {
+        let both = Rule { direction: Direction::Both, stop_after: None };
+        // Down through zero at 0.52 and up at 0.57, both inside the step 0.5 .. 0.6.
+        let found = run(|t| (t - 0.52) * (t - 0.57), vec![both], 1.0);
+        let times: Vec<(f64, bool)> = found.iter().map(|c| (c.t, c.rising)).collect();
+        assert_eq!(times.len(), 2, "{times:?}");
+        assert!((times[0].0 - 0.52).abs() < 1e-14 && !times[0].1, "{times:?}");
+        assert!((times[1].0 - 0.57).abs() < 1e-14 && times[1].1, "{times:?}");
     }
 }

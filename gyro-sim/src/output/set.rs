@@ -2,7 +2,8 @@
 //! own inside the output folder, named for the process and a counter, and then put in place
 //! together under the folder's lock, the files of an earlier set that this one lacks removed.
 //! Concurrent runs into one folder never share a temporary name and never interleave their
-//! renames; a run that fails while writing leaves the previous set as it was.
+//! renames; a run that fails while writing leaves the previous set as it was, and the staging
+//! left by a killed run is removed by the next run that puts a set in the folder.
 
 use std::fs::{self, File};
 use std::path::{Path, PathBuf};
@@ -33,6 +34,26 @@ pub(crate) fn unique_temporary(name: &str) -> String {
     format!(".partial-{}-{n}-{name}", std::process::id())
 }
 
+/// Removes the staging folders and files in `dir` of processes that no longer run (a killed
+/// run's), found by the process id in their names; where the system does not say which
+/// processes run (no `/proc`), nothing.
+fn remove_abandoned(dir: &Path) {
+    let proc = Path::new("/proc");
+    if !proc.join("self").exists() {
+        return;
+    }
+    let Ok(entries) = fs::read_dir(dir) else { return };
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().to_string();
+        let pid = name.strip_prefix(".partial-").and_then(|rest| rest.split('-').next());
+        let Some(pid) = pid.and_then(|p| p.parse::<u32>().ok()) else { continue };
+        if pid != std::process::id() && !proc.join(pid.to_string()).exists() {
+            let path = entry.path();
+            let _ = fs::remove_dir_all(&path).or_else(|_| fs::remove_file(&path));
+        }
+    }
+}
+
 /// Files staged for a folder; removed unless [`Staging::commit`] put them in place.
 pub(crate) struct Staging {
     dir: PathBuf,
@@ -60,6 +81,7 @@ impl Staging {
         let lock_path = self.dir.join(LOCK_FILE);
         let lock = File::create(&lock_path).map_err(|e| fail(&lock_path, e))?;
         lock.lock().map_err(|e| fail(&lock_path, e))?;
+        remove_abandoned(&self.dir);
         let target = self.dir.join(as_name);
         fs::rename(self.stage.join(name), &target).map_err(|e| fail(&target, e))?;
         self.committed = true;
@@ -74,6 +96,7 @@ impl Staging {
         let lock_path = self.dir.join(LOCK_FILE);
         let lock = File::create(&lock_path).map_err(|e| fail(&lock_path, e))?;
         lock.lock().map_err(|e| fail(&lock_path, e))?;
+        remove_abandoned(&self.dir);
         for name in SET_FILES {
             let (staged, target) = (self.stage.join(name), self.dir.join(name));
             if staged.exists() {
@@ -117,6 +140,29 @@ mod tests {
         std::fs::write(staging.path("trajectory.csv"), "new").unwrap();
         staging.commit().unwrap();
         assert_eq!(std::fs::read_to_string(dir.join("trajectory.csv")).unwrap(), "new");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_killed_runs_staging_is_removed_by_the_next_set() {
+        let dir = std::env::temp_dir().join(format!("gyro-sim-abandoned-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        // A process id above Linux's largest (2^22): no such process runs.
+        let abandoned = dir.join(".partial-4194999-0-set");
+        std::fs::create_dir_all(&abandoned).unwrap();
+        std::fs::write(abandoned.join("trajectory.csv"), "half").unwrap();
+        // The staging of a process that runs (this one's parent) stays.
+        let parent = std::os::unix::process::parent_id();
+        let running = dir.join(format!(".partial-{parent}-0-set"));
+        std::fs::create_dir_all(&running).unwrap();
+        let staging = Staging::new(&dir).unwrap();
+        std::fs::write(staging.path("trajectory.csv"), "new").unwrap();
+        staging.commit().unwrap();
+        if Path::new("/proc/self").exists() {
+            assert!(!abandoned.exists(), "the killed run's staging is still there");
+        }
+        assert!(running.exists(), "a running process's staging was removed");
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }
