@@ -513,9 +513,15 @@ fn a_run_killed_between_its_csv_and_its_figures_leaves_the_earlier_set() {
     let after: Vec<Vec<u8>> =
         ["trajectory.csv", "trajectory.png"].iter().map(|n| std::fs::read(out.join(n)).unwrap()).collect();
     assert!(before == after, "the earlier set is intact");
-    // The next run into the folder is complete and clears the killed run's staging folder? It
-    // leaves it (owned by a dead process); it never mixes with the set.
+    // The next run into the folder is complete and removes the killed run's staging folder.
     run(&good, &out).ok();
+    let left: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().to_string())
+        .filter(|n| n.starts_with(".partial"))
+        .collect();
+    assert!(left.is_empty(), "staging left behind: {left:?}");
 }
 
 /// `Q' = U`, `U' = sqrt(1 - t)`: the rate turns NaN past t = 1.
