@@ -34,8 +34,9 @@ pub fn integrate_limited<S: System + ?Sized>(
     max_steps: usize,
     out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
 ) -> Result<Stats, OdeError> {
-    if let Method::Taylor(tol) = method {
-        return super::taylor::integrate(sys, t0, y0, times, tol, max_steps, out);
+    if let Method::Taylor(_) = method {
+        let watch = |_: &dyn super::Stepping| None;
+        return super::integrate_watched(sys, t0, y0, times, method, max_steps, watch, out).map(|w| w.stats);
     }
     let limits = Limits { method, max_steps };
     match sys.dim() {

@@ -12,9 +12,6 @@
 //! max norm over all, which lets a large component set the error of small ones). Every step is
 //! accepted: the estimate is made before the step, from the series itself.
 
-use std::ops::ControlFlow;
-
-use super::drive::drive;
 use super::stepper::{Stats, StopReason, DEFAULT_MAX_STEPS};
 use super::{OdeError, System, TaylorWork, Tolerances};
 
@@ -230,24 +227,6 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
     }
 }
 
-/// [`super::integrate_limited`] for the Taylor method: steps freely to the last time and
-/// evaluates each step's polynomial at the output times inside it.
-pub(super) fn integrate<S: System + ?Sized>(
-    sys: &S,
-    t0: f64,
-    y0: &[f64],
-    times: &[f64],
-    tol: Tolerances,
-    max_steps: usize,
-    out: impl FnMut(f64, &[f64]) -> ControlFlow<()>,
-) -> Result<Stats, OdeError> {
-    let mut stepper = TaylorStepper::new(sys, t0, y0, tol)?;
-    stepper.set_max_steps(max_steps);
-    let Some(&t_end) = times.last() else { return Ok(stepper.stats()) };
-    stepper.set_stop_time(t_end);
-    Ok(drive(&mut stepper, times, true, |_| None, out)?.stats)
-}
-
 fn check_finite(t: f64, y: &[f64]) -> Result<(), OdeError> {
     match y.iter().position(|v| !v.is_finite()) {
         Some(index) => Err(OdeError::NonFinite { time: t, index, value: y[index] }),
@@ -259,6 +238,7 @@ fn check_finite(t: f64, y: &[f64]) -> Result<(), OdeError> {
 mod tests {
     use super::*;
     use crate::ode::{integrate, Method};
+    use std::ops::ControlFlow;
 
     /// `x' = v`, `v' = -x`: coefficients `c_{k+1} = A c_k / (k + 1)`; `x = x0 cos t + v0 sin t`.
     struct Oscillator;
