@@ -17,6 +17,10 @@ use super::ir::{Input, Section};
 
 pub use build::build;
 
+/// The orders generated code computes straight-line (one function each, every loop written
+/// out): those the Taylor stepper takes at tolerances 1e-4 to 1e-14.
+pub const UNROLLED_ORDERS: std::ops::RangeInclusive<usize> = 6..=18;
+
 /// Why a section has no Taylor program.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum TaylorError {
