@@ -219,7 +219,8 @@ impl Text<'_> {
         output_step: f64,
     ) -> Result<Integrator, SceneError> {
         let integ = integ.unwrap_or_default();
-        let named = integ.method.as_ref().map_or(crate::ode::AUTO.to_string(), |m| m.get_ref().to_ascii_lowercase());
+        let named =
+            integ.method.as_ref().map_or(crate::ode::AUTO.to_string(), |m| m.get_ref().to_ascii_lowercase());
         // Without tolerances, an accuracy asked is where the refinement starts.
         let default_tol = match &integ.accuracy {
             Some(a) if a.get_ref().is_finite() && *a.get_ref() > 0.0 => *a.get_ref(),
@@ -256,14 +257,7 @@ impl Text<'_> {
         if !info.adaptive {
             self.fixed_steps_fit(&integ, step, t_final, max_steps)?;
         }
-        Ok(Integrator {
-            method,
-            rtol,
-            atol,
-            step,
-            accuracy,
-            max_steps,
-        })
+        Ok(Integrator { method, rtol, atol, step, accuracy, max_steps })
     }
 
     /// `max_steps`: a positive whole number, [`crate::ode::DEFAULT_MAX_STEPS`] when absent.

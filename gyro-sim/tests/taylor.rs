@@ -63,7 +63,7 @@ macro_rules! check_unrolled_against_loop {
         let p = $m::Params::default();
         let d = $m::derive(&p);
         let (t, y): (f64, Vec<f64>) = ($t, $y.to_vec());
-        for order in kane_model::runtime::TAYLOR_UNROLLED_ORDERS {
+        for &order in kane_model::runtime::TAYLOR_UNROLLED_ORDERS {
             let mut unrolled = vec![f64::NAN; y.len() * (order + 1)];
             let mut looped = unrolled.clone();
             assert!($m::taylor_derived(t, &y, &p, &d, order, &mut unrolled, &mut Vec::new()));

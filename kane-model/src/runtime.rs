@@ -63,7 +63,7 @@ pub const TAYLOR_MAX_ORDER: usize = crate::codegen::taylor::recur::MAX_ORDER;
 
 /// The orders whose Taylor coefficients generated models compute straight-line (faster than the
 /// loop the others take).
-pub const TAYLOR_UNROLLED_ORDERS: std::ops::RangeInclusive<usize> = crate::codegen::taylor::UNROLLED_ORDERS;
+pub const TAYLOR_UNROLLED_ORDERS: &[usize] = crate::codegen::taylor::UNROLLED_ORDERS;
 
 /// A model compiled from its equations by [`crate::codegen`].
 pub trait GeneratedModel {

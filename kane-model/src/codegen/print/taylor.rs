@@ -16,8 +16,8 @@ use super::unrolled::{order_fn, order_fn_name};
 /// `taylor_derived_loop`: the normalised Taylor coefficients of the solution through `(t, y)`.
 pub fn taylor_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream) -> TokenStream {
     let looped = loop_fn(program, input);
-    let orders = UNROLLED_ORDERS.map(|o| order_fn(program, input, o));
-    let arms = UNROLLED_ORDERS.map(|o| {
+    let orders = UNROLLED_ORDERS.iter().map(|&o| order_fn(program, input, o));
+    let arms = UNROLLED_ORDERS.iter().map(|&o| {
         let (name, o) = (order_fn_name(o), Literal::usize_unsuffixed(o));
         quote!(#o => #name(t, y, p, __derived, out),)
     });

@@ -136,9 +136,8 @@ pub fn order_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream, o
     let passes = (1..order).map(|k| pass(program, k));
     let finish = finish(program, order);
     let n_out = Literal::usize_unsuffixed(program.results.len() * (order + 1));
-    let doc = format!(
-        "The coefficients of orders `0..=` {order}, as `taylor_derived_loop` computes them, straight-line."
-    );
+    let doc =
+        format!(" `taylor_derived` at order {order}, straight-line (the numbers of `taylor_derived_loop`).");
     quote! {
         #[doc = #doc]
         #[allow(unused_variables, clippy::all)]
