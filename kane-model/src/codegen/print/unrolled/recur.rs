@@ -79,7 +79,7 @@ pub fn coefficient(kind: TKind, c: Coef, d: u32, k: usize) -> X {
         (TKind::Sqr(a), _) => {
             let half = k.div_ceil(2);
             let cross = if half == 0 { X::Zero } else { cauchy(c, k, a, a, 0, half - 1) };
-            let middle = if k % 2 == 0 { c(a, k / 2).times(c(a, k / 2)) } else { X::Zero };
+            let middle = if k.is_multiple_of(2) { c(a, k / 2).times(c(a, k / 2)) } else { X::Zero };
             cross.clone().plus(cross).plus(middle)
         }
         (TKind::Scale(a, s), _) => c(a, k).times(c(s, 0)),
