@@ -56,6 +56,35 @@ fn gimbal_and_top_coefficients_match_dual_numbers() {
     check_against_duals!(top, 0.0, [h * s.cos(), h * s.sin(), 0.5, 0.5, 0.3, -0.2, 10.0]);
 }
 
+/// `taylor_derived` (straight-line code at these orders) against `taylor_derived_loop` for
+/// `model` at `(t, y)`, every straight-line order, to 4 ulps.
+macro_rules! check_unrolled_against_loop {
+    ($m:ident, $t:expr, $y:expr) => {{
+        let p = $m::Params::default();
+        let d = $m::derive(&p);
+        let (t, y): (f64, Vec<f64>) = ($t, $y.to_vec());
+        for &order in kane_model::runtime::TAYLOR_UNROLLED_ORDERS {
+            let mut unrolled = vec![f64::NAN; y.len() * (order + 1)];
+            let mut looped = unrolled.clone();
+            assert!($m::taylor_derived(t, &y, &p, &d, order, &mut unrolled, &mut Vec::new()));
+            assert!($m::taylor_derived_loop(t, &y, &p, &d, order, &mut looped, &mut Vec::new()));
+            for (j, (a, b)) in unrolled.iter().zip(&looped).enumerate() {
+                let close = (a - b).abs() <= 4.0 * f64::EPSILON * b.abs();
+                assert!(close, "order {order}, coefficient {j}: {a:e} (straight-line) vs {b:e} (loop)");
+            }
+        }
+    }};
+}
+
+#[test]
+fn straight_line_coefficients_equal_the_loops() {
+    check_unrolled_against_loop!(gimbal, 0.3, [0.3, 0.4, 0.1, 0.5, -0.7, 10.0]);
+    check_unrolled_against_loop!(gimbal, 0.0, [0.0, 0.0, 0.0, 0.0, 0.0, 100.0]);
+    let (h, s) = (0.5f64.sqrt(), 0.4f64);
+    check_unrolled_against_loop!(top, 0.0, [h * s.cos(), h * s.sin(), 0.5, 0.5, 0.3, -0.2, 10.0]);
+    check_unrolled_against_loop!(top, 1.0, [0.8660254037844386, 0.0, 0.0, 0.5, 0.0, 0.0, 10.0]);
+}
+
 /// The gimbal of Trial 3 (Y = Z = 10, U3 = 100 rad/s) as an ODE system.
 fn trial3() -> (ModelSystem<gimbal::Model>, Vec<f64>) {
     let mut p = gimbal::Params::default();

@@ -61,6 +61,10 @@ pub type TaylorWork = Vec<crate::codegen::taylor::recur::Row<f64>>;
 /// The highest order [`GeneratedModel::taylor`] expands to.
 pub const TAYLOR_MAX_ORDER: usize = crate::codegen::taylor::recur::MAX_ORDER;
 
+/// The orders whose Taylor coefficients generated models compute straight-line (faster than the
+/// loop the others take).
+pub const TAYLOR_UNROLLED_ORDERS: &[usize] = crate::codegen::taylor::UNROLLED_ORDERS;
+
 /// A model compiled from its equations by [`crate::codegen`].
 pub trait GeneratedModel {
     /// Parameter values (defaults from the model's INPUT).

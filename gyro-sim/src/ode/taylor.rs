@@ -14,11 +14,19 @@
 
 use super::stepper::{Stats, StopReason, DEFAULT_MAX_STEPS};
 use super::{OdeError, System, TaylorWork, Tolerances};
+use kane_model::runtime::TAYLOR_UNROLLED_ORDERS;
 
 /// The lowest order a step takes (the step-size rule reads orders `p - 1` and `p`).
 const MIN_ORDER: usize = 2;
 /// The highest order a step takes (tolerances of 1e-16 ask 20).
 const MAX_ORDER: usize = kane_model::runtime::TAYLOR_MAX_ORDER;
+
+/// The order to take where `p` is asked: the next order whose coefficients generated models
+/// compute straight-line ([`TAYLOR_UNROLLED_ORDERS`], faster than the others) if it is at most two
+/// above, else `p` (a higher order is as correct, and more accurate).
+fn straight_line_order(p: usize) -> usize {
+    TAYLOR_UNROLLED_ORDERS.iter().copied().find(|&o| o >= p).filter(|&o| o - p <= 2).unwrap_or(p)
+}
 
 /// A Taylor-method stepper for `sys`.
 pub struct TaylorStepper<'a, S: System + ?Sized> {
@@ -125,7 +133,7 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
         self.scales.iter_mut().for_each(|s| *s /= eps);
         let p = (-eps.ln() / 2.0 + 1.0).ceil();
         if p.is_finite() {
-            (p as usize).clamp(MIN_ORDER, MAX_ORDER)
+            straight_line_order((p as usize).clamp(MIN_ORDER, MAX_ORDER))
         } else {
             MAX_ORDER
         }
@@ -311,6 +319,15 @@ mod tests {
         assert_eq!(s.t(), 1.0);
         let mut y = [0.0; 2];
         assert!(s.interpolate(2.0, &mut y).is_err());
+    }
+
+    #[test]
+    fn orders_round_up_to_straight_line_ones_nearby() {
+        assert_eq!(straight_line_order(13), 15);
+        assert_eq!(straight_line_order(15), 15);
+        assert_eq!(straight_line_order(6), 8);
+        assert_eq!(straight_line_order(5), 5);
+        assert_eq!(straight_line_order(25), 25);
     }
 
     #[test]

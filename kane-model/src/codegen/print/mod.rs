@@ -6,6 +6,7 @@ mod module;
 mod outputs;
 mod section;
 mod taylor;
+mod unrolled;
 
 pub use module::{is_quaternion, module};
 pub use section::{print as print_section, Scalar, SectionStyle};

@@ -1,16 +1,49 @@
 //! The Taylor coefficients printed: in comes a [`TaylorProgram`] and how its inputs are read;
-//! out goes `taylor_derived`, straight-line in the operations (one call of a recurrence of
-//! `kane_model::__private::taylor` per operation) with a loop over the order.
+//! out goes `taylor_derived_loop`, straight-line in the operations (one call of a recurrence of
+//! `kane_model::__private::taylor` per operation) with a loop over the order; one straight-line
+//! function per order of [`UNROLLED_ORDERS`] ([`super::unrolled`]); and `taylor_derived`, which
+//! takes the straight-line function of the order asked where there is one, else the loop.
 
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote, ToTokens};
 
 use super::super::ir::Input;
-use super::super::taylor::{TKind, TaylorProgram};
+use super::super::taylor::{TKind, TaylorProgram, UNROLLED_ORDERS};
 use super::section::{constant, Scalar};
+use super::unrolled::{order_fn, order_fn_name};
 
-/// `taylor_derived`: the normalised Taylor coefficients of the solution through `(t, y)`.
+/// `taylor_derived` (the dispatch by order), the straight-line functions it calls and
+/// `taylor_derived_loop`: the normalised Taylor coefficients of the solution through `(t, y)`.
 pub fn taylor_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream) -> TokenStream {
+    let looped = loop_fn(program, input);
+    let orders = UNROLLED_ORDERS.iter().map(|&o| order_fn(program, input, o));
+    let arms = UNROLLED_ORDERS.iter().map(|&o| {
+        let (name, o) = (order_fn_name(o), Literal::usize_unsuffixed(o));
+        quote!(#o => #name(t, y, p, __derived, out),)
+    });
+    quote! {
+        /// The normalised Taylor coefficients of the solution through `(t, y)`, orders
+        /// `0..=order`, into `out` (state `i`'s coefficient `k` at `out[i * (order + 1) + k]`),
+        /// with `d = derive(p)`; `work` is scratch. Straight-line code for the orders
+        /// `kane_model::runtime::TAYLOR_UNROLLED_ORDERS`, `taylor_derived_loop` for the others.
+        /// False (nothing done) for an order above `kane_model::runtime::TAYLOR_MAX_ORDER`.
+        #[allow(unused_variables, clippy::all)]
+        pub fn taylor_derived<T: ::kane_model::__private::num_traits::Float>(
+            t: T, y: &[T], p: &Params, __derived: &Derived, order: usize, out: &mut [T],
+            work: &mut Vec<::kane_model::__private::taylor::Row<T>>,
+        ) -> bool {
+            match order {
+                #(#arms)*
+                _ => taylor_derived_loop(t, y, p, __derived, order, out, work),
+            }
+        }
+        #looped
+        #(#orders)*
+    }
+}
+
+/// `taylor_derived_loop`: the coefficients by a loop over the order.
+fn loop_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream) -> TokenStream {
     let scalar = Scalar::Generic(format_ident!("T"));
     let lit = Literal::usize_unsuffixed;
     let mut first = TokenStream::new();
@@ -57,12 +90,10 @@ pub fn taylor_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream) 
         None => quote!(None),
     };
     quote! {
-        /// The normalised Taylor coefficients of the solution through `(t, y)`, orders
-        /// `0..=order`, into `out` (state `i`'s coefficient `k` at `out[i * (order + 1) + k]`),
-        /// with `d = derive(p)`; `work` is scratch. False (nothing done) for an order above
-        /// `kane_model::runtime::TAYLOR_MAX_ORDER`.
+        /// `taylor_derived` by a loop over the order (any order): one call of a recurrence per
+        /// operation and order.
         #[allow(unused_variables, clippy::all)]
-        pub fn taylor_derived<T: ::kane_model::__private::num_traits::Float>(
+        pub fn taylor_derived_loop<T: ::kane_model::__private::num_traits::Float>(
             t: T, y: &[T], p: &Params, __derived: &Derived, order: usize, out: &mut [T],
             work: &mut Vec<::kane_model::__private::taylor::Row<T>>,
         ) -> bool {

@@ -17,6 +17,11 @@ use super::ir::{Input, Section};
 
 pub use build::build;
 
+/// The orders generated code computes straight-line (one function each, every loop written
+/// out), spread over those the Taylor stepper takes at tolerances 1e-4 to 1e-14 (6 to 18; the
+/// stepper rounds an order up to the next of these). Not all thirteen: each costs build time.
+pub const UNROLLED_ORDERS: &[usize] = &[8, 10, 12, 15, 18];
+
 /// Why a section has no Taylor program.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum TaylorError {
