@@ -97,8 +97,9 @@ fn has_dense_output(method: Method) -> bool {
 /// The method a scene names (checked when the scene was parsed).
 fn method(scene: &Scene) -> Method {
     let i = &scene.integrator;
-    let info = crate::ode::by_name(&i.method).unwrap_or(crate::ode::default_method());
-    info.method(Tolerances { rtol: i.rtol, atol: i.atol }, i.step)
+    let tol = Tolerances { rtol: i.rtol, atol: i.atol };
+    let info = crate::ode::by_name(&i.method).unwrap_or(crate::ode::for_tolerances(tol));
+    info.method(tol, i.step)
 }
 
 /// The model's defaults with the scene's values; an error for an unknown or missing one.

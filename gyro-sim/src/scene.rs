@@ -221,11 +221,12 @@ impl Text<'_> {
         let integ = integ.unwrap_or_default();
         let named =
             integ.method.as_ref().map_or(crate::ode::AUTO.to_string(), |m| m.get_ref().to_ascii_lowercase());
-        // Without tolerances, an accuracy asked is where the refinement starts.
-        let default_tol = match &integ.accuracy {
-            Some(a) if a.get_ref().is_finite() && *a.get_ref() > 0.0 => *a.get_ref(),
-            _ => 1e-9,
+        let asked = match &integ.accuracy {
+            Some(_) => Some(self.positive(&integ.accuracy, 0.0, "accuracy")?),
+            None => None,
         };
+        // Without tolerances, an accuracy asked is where the refinement starts.
+        let default_tol = asked.unwrap_or(1e-9);
         let rtol = self.positive(&integ.rtol, default_tol, "rtol")?;
         let atol = self.positive(&integ.atol, default_tol, "atol")?;
         let method = if named == crate::ode::AUTO {
@@ -241,23 +242,19 @@ impl Text<'_> {
                 &crate::ode::methods_help(),
             ));
         };
-        let accuracy = match &integ.accuracy {
-            Some(a) if !info.adaptive => {
-                return Err(self.err(
-                    a.span(),
-                    format!("accuracy needs an adaptive method: {method} has a fixed step"),
-                    "use method = \"dop853\" or \"dopri5\", or remove accuracy",
-                ))
-            }
-            Some(_) => Some(self.positive(&integ.accuracy, 0.0, "accuracy")?),
-            None => None,
-        };
+        if let (Some(a), false) = (&integ.accuracy, info.adaptive) {
+            return Err(self.err(
+                a.span(),
+                format!("accuracy needs an adaptive method: {method} has a fixed step"),
+                "use method = \"dop853\" or \"dopri5\", or remove accuracy",
+            ));
+        }
         let step = self.positive(&integ.step, output_step / 10.0, "step")?;
         let max_steps = self.max_steps(&integ.max_steps)?;
         if !info.adaptive {
             self.fixed_steps_fit(&integ, step, t_final, max_steps)?;
         }
-        Ok(Integrator { method, rtol, atol, step, accuracy, max_steps })
+        Ok(Integrator { method, rtol, atol, step, accuracy: asked, max_steps })
     }
 
     /// `max_steps`: a positive whole number, [`crate::ode::DEFAULT_MAX_STEPS`] when absent.

@@ -97,9 +97,6 @@ pub static METHODS: &[MethodInfo] = &[
     MethodInfo { tableau: None, adaptive: true },
 ];
 
-/// The method a scene that names none gets.
-const DEFAULT_METHOD: &str = "dopri5";
-
 /// The name that picks the method by the tolerances ([`for_tolerances`]); a scene's default.
 pub const AUTO: &str = "auto";
 
@@ -118,11 +115,6 @@ pub fn for_tolerances(tol: Tolerances) -> &'static MethodInfo {
 /// The method called `name` (any case); None when there is none.
 pub fn by_name(name: &str) -> Option<&'static MethodInfo> {
     METHODS.iter().find(|m| m.name().eq_ignore_ascii_case(name))
-}
-
-/// The method used when none is named.
-pub fn default_method() -> &'static MethodInfo {
-    by_name(DEFAULT_METHOD).unwrap_or(&METHODS[0])
 }
 
 /// The names for an error message: `methods: dop853, dopri5, vern7, vern9 (adaptive), rk4 (fixed step)`.
@@ -210,7 +202,8 @@ mod tests {
         assert_eq!(by_name("DOPRI5").map(|m| m.adaptive), Some(true));
         assert!(std::ptr::eq(by_name("rk4").unwrap().tableau.unwrap(), &RK4));
         assert!(by_name("euler").is_none());
-        assert_eq!(default_method().name(), "dopri5");
+        assert_eq!(for_tolerances(TOL).name(), "vern9");
+        assert_eq!(for_tolerances(Tolerances { rtol: 1e-6, atol: 1e-9 }).name(), "dop853");
         assert_eq!(
             methods_help(),
             "methods: dop853, dopri5, vern7, vern9, taylor (adaptive), rk4 (fixed step)"

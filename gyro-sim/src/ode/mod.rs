@@ -28,8 +28,7 @@ pub use drive::{Stepping, Watched};
 pub use events::integrate_watched;
 pub use integrate::{integrate, integrate_limited};
 pub use methods::{
-    by_name, default_method, for_tolerances, methods_help, Method, MethodInfo, Tolerances, AUTO, AUTO_TIGHT,
-    METHODS, TAYLOR,
+    by_name, for_tolerances, methods_help, Method, MethodInfo, Tolerances, AUTO, AUTO_TIGHT, METHODS, TAYLOR,
 };
 pub(crate) use stages::blended_norm;
 pub use stepper::{ErkStepper, Stats, StopReason, DEFAULT_MAX_STEPS};
