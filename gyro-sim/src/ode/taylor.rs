@@ -3,14 +3,15 @@
 //! one step per [`TaylorStepper::step`], values anywhere in the last step from the Taylor
 //! polynomial itself ([`TaylorStepper::interpolate`]), and the cost in [`Stats`].
 //!
-//! Order and step follow Jorba and Zou (2005) as heyoka applies them, per component: the order
-//! is `p = ceil(-ln(eps) / 2 + 1)` and the step `h = rho / e^2 * exp(-0.7 / (p - 1))`, where
-//! `rho = min(rho_(p-1), rho_p)` over the last two coefficients and
-//! `rho_k = min_i (s_i / |y_ik|)^(1/k)`. Each component's tolerance is `tol_i = atol + rtol |y_i|`
-//! (as the Runge-Kutta pairs weigh it), `eps = min_i tol_i / max(1, |y_i|)` and
-//! `s_i = tol_i / eps`, so term `p` stays near `tol_i` in every component (heyoka takes one
-//! max norm over all, which lets a large component set the error of small ones). Every step is
-//! accepted: the estimate is made before the step, from the series itself.
+//! Order and step follow Jorba and Zou (2005), per component, for any order. Each component's
+//! tolerance is `tol_i = atol + rtol |y_i|` (as the Runge-Kutta pairs weigh it) and
+//! `eps = min_i tol_i / max(1, |y_i|)`. The order is theirs, `-ln(eps) / 2 + 1`, plus
+//! [`ORDER_LEAD`], taken to the nearest order with straight-line code. The step is
+//! `h = min(rho_(p-1), rho_p) (eps / e^2)^(1/p) exp(-0.7 / (p - 1))` with
+//! `rho_k = min_i (s_i / |y_ik|)^(1/k)`, `s_i = tol_i / eps`: term `p` stays near `tol_i / e^2`
+//! in every component (heyoka takes one max norm over all, which lets a large component set the
+//! error of small ones), and at their order it is their rule. Every step is accepted: the
+//! estimate is made before the step, from the series itself.
 
 use super::stepper::{Stats, StopReason, DEFAULT_MAX_STEPS};
 use super::{OdeError, System, TaylorWork, Tolerances};
@@ -18,14 +19,24 @@ use kane_model::runtime::TAYLOR_UNROLLED_ORDERS;
 
 /// The lowest order a step takes (the step-size rule reads orders `p - 1` and `p`).
 const MIN_ORDER: usize = 2;
-/// The highest order a step takes (tolerances of 1e-16 ask 20).
+/// The highest order a step takes.
 const MAX_ORDER: usize = kane_model::runtime::TAYLOR_MAX_ORDER;
+/// How far above Jorba and Zou's order the stepper aims. Theirs minimises the cost of the
+/// coefficients alone; a step also costs the step-size rule, the series' evaluation and the
+/// linear operations, so fewer, longer steps of a higher order are cheaper (measured at equal
+/// error on the top and the gimbal: BENCHMARKS.md).
+const ORDER_LEAD: f64 = 5.0;
 
-/// The order to take where `p` is asked: the next order whose coefficients generated models
-/// compute straight-line ([`TAYLOR_UNROLLED_ORDERS`], faster than the others) if it is at most two
-/// above, else `p` (a higher order is as correct, and more accurate).
-fn straight_line_order(p: usize) -> usize {
-    TAYLOR_UNROLLED_ORDERS.iter().copied().find(|&o| o >= p).filter(|&o| o - p <= 2).unwrap_or(p)
+/// The order to take where order `p` (not an integer) is best: the nearest order whose
+/// coefficients generated models compute straight-line ([`TAYLOR_UNROLLED_ORDERS`], much faster
+/// than the others; the cost per unit time is flat near its minimum).
+fn straight_line_order(p: f64) -> usize {
+    let distance = |o: &usize| (*o as f64 - p).abs();
+    TAYLOR_UNROLLED_ORDERS
+        .iter()
+        .copied()
+        .min_by(|a, b| distance(a).total_cmp(&distance(b)))
+        .unwrap_or(p.ceil() as usize)
 }
 
 /// A Taylor-method stepper for `sys`.
@@ -40,8 +51,10 @@ pub struct TaylorStepper<'a, S: System + ?Sized> {
     h_prev: f64,
     order: usize,
     coeffs: Vec<f64>,
-    /// Each component's tolerance relative to the order's `eps`.
-    scales: Vec<f64>,
+    /// Each component's `eps` relative to its tolerance, `eps / (atol + rtol |y_i|)`.
+    inverse_scales: Vec<f64>,
+    /// `ln eps`, `eps` the smallest of the components' tolerances relative to `max(1, |y_i|)`.
+    ln_eps: f64,
     work: TaylorWork,
     stop: Option<f64>,
     horizon: Option<f64>,
@@ -67,7 +80,8 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
             h_prev: 0.0,
             order: 0,
             coeffs: y0.to_vec(),
-            scales: Vec::new(),
+            inverse_scales: Vec::new(),
+            ln_eps: 0.0,
             work: Vec::new(),
             stop: None,
             horizon: None,
@@ -122,18 +136,23 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
     }
 
     /// The order for the tolerances at the current state: `eps` the smallest of the components'
-    /// tolerances `atol + rtol |y_i|` relative to `max(1, |y_i|)`; and each component's scale
-    /// `(atol + rtol |y_i|) / eps` into `scales`.
+    /// tolerances `atol + rtol |y_i|` relative to `max(1, |y_i|)`, each component's
+    /// `eps / (atol + rtol |y_i|)` into `inverse_scales`; the order Jorba and Zou give `eps`,
+    /// plus [`ORDER_LEAD`], taken to the nearest straight-line one.
     fn order_and_scales(&mut self) -> usize {
         let Tolerances { rtol, atol } = self.tol;
-        self.scales.clear();
-        self.scales.extend(self.y.iter().map(|v| atol + rtol * v.abs()));
-        let eps =
-            self.scales.iter().zip(&self.y).fold(f64::INFINITY, |m, (s, v)| m.min(s / v.abs().max(1.0)));
-        self.scales.iter_mut().for_each(|s| *s /= eps);
-        let p = (-eps.ln() / 2.0 + 1.0).ceil();
+        self.inverse_scales.clear();
+        let mut eps = f64::INFINITY;
+        for v in &self.y {
+            let tol = atol + rtol * v.abs();
+            self.inverse_scales.push(tol);
+            eps = eps.min(tol / v.abs().max(1.0));
+        }
+        self.inverse_scales.iter_mut().for_each(|s| *s = eps / *s);
+        self.ln_eps = eps.ln();
+        let p = -self.ln_eps / 2.0 + 1.0 + ORDER_LEAD;
         if p.is_finite() {
-            straight_line_order((p as usize).clamp(MIN_ORDER, MAX_ORDER))
+            straight_line_order(p.max(MIN_ORDER as f64)).clamp(MIN_ORDER, MAX_ORDER)
         } else {
             MAX_ORDER
         }
@@ -152,21 +171,26 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
         Ok(())
     }
 
-    /// The step the last two coefficients allow (Jorba and Zou; see the module's text).
+    /// The step the last two coefficients allow: Jorba and Zou's rule for any order `p`,
+    /// `h = min(rho_(p-1), rho_p) (eps / e^2)^(1/p) exp(-0.7 / (p - 1))` with
+    /// `rho_k = min_i (scale_i / |c_ik|)^(1/k)`, `scale_i = (atol + rtol |y_i|) / eps`, so term
+    /// `p` is about `tol_i / e^2` in every component (at their own order,
+    /// `(eps / e^2)^(1/p) = 1 / e^2`: their rule exactly). Computed in logarithms.
     fn step_size(&self) -> f64 {
         let p = self.order;
         let n1 = p + 1;
-        // min_i (scale_i / |c_ik|)^(1/k): the step whose term k is each component's tolerance.
-        let rho = |k: usize| {
-            let ratio = self
-                .scales
+        // ln rho_k = -ln(max_i |c_ik| / scale_i) / k.
+        let ln_rho = |k: usize| {
+            let norm = self
+                .inverse_scales
                 .iter()
                 .enumerate()
-                .fold(f64::INFINITY, |m, (i, s)| m.min(s / self.coeffs[i * n1 + k].abs()));
-            ratio.powf(1.0 / k as f64)
+                .fold(0.0f64, |m, (i, s)| m.max(s * self.coeffs[i * n1 + k].abs()));
+            -norm.ln() / k as f64
         };
-        let rho_m = rho(p - 1).min(rho(p));
-        rho_m / std::f64::consts::E.powi(2) * (-0.7 / (p - 1) as f64).exp()
+        let pf = p as f64;
+        let ln_rho_m = ln_rho(p - 1).min(ln_rho(p));
+        (ln_rho_m + (self.ln_eps - 2.0) / pf - 0.7 / (pf - 1.0)).exp()
     }
 
     /// Takes one step, or none when the stepper is at the stop time already; first the system
@@ -312,8 +336,8 @@ mod tests {
         let mut s =
             TaylorStepper::new(&Oscillator, 0.0, &[1.0, 0.0], Tolerances { rtol: 1e-12, atol: 1e-12 })
                 .unwrap();
-        // ceil(-ln(1e-12) / 2 + 1) = ceil(14.8) = 15.
-        assert_eq!(s.order(), 15);
+        // -ln(1e-12) / 2 + 1 + ORDER_LEAD = 19.8: the nearest straight-line order is 20.
+        assert_eq!(s.order(), 20);
         s.set_stop_time(1.0);
         while s.step().unwrap() == StopReason::StepTaken {}
         assert_eq!(s.t(), 1.0);
@@ -322,12 +346,12 @@ mod tests {
     }
 
     #[test]
-    fn orders_round_up_to_straight_line_ones_nearby() {
-        assert_eq!(straight_line_order(13), 15);
-        assert_eq!(straight_line_order(15), 15);
-        assert_eq!(straight_line_order(6), 8);
-        assert_eq!(straight_line_order(5), 5);
-        assert_eq!(straight_line_order(25), 25);
+    fn orders_go_to_the_nearest_straight_line_one() {
+        assert_eq!(straight_line_order(13.5), 12);
+        assert_eq!(straight_line_order(14.5), 16);
+        assert_eq!(straight_line_order(6.0), 8);
+        assert_eq!(straight_line_order(2.0), 8);
+        assert_eq!(straight_line_order(23.5), 20);
     }
 
     #[test]

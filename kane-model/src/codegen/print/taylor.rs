@@ -2,7 +2,8 @@
 //! out goes `taylor_derived_loop`, straight-line in the operations (one call of a recurrence of
 //! `kane_model::__private::taylor` per operation) with a loop over the order; one straight-line
 //! function per order of [`UNROLLED_ORDERS`] ([`super::unrolled`]); and `taylor_derived`, which
-//! takes the straight-line function of the order asked where there is one, else the loop.
+//! takes the straight-line function of the order asked where there is one and the CPU has fused
+//! multiply-add, else the loop.
 
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote, ToTokens};
@@ -19,19 +20,22 @@ pub fn taylor_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream) 
     let orders = UNROLLED_ORDERS.iter().map(|&o| order_fn(program, input, o));
     let arms = UNROLLED_ORDERS.iter().map(|&o| {
         let (name, o) = (order_fn_name(o), Literal::usize_unsuffixed(o));
-        quote!(#o => #name(t, y, p, __derived, out),)
+        // SAFETY: the CPU has fused multiply-add, which is all the function assumes.
+        quote!(#o if __t::fused_multiply_add() => unsafe { #name(t, y, p, __derived, out) },)
     });
     quote! {
         /// The normalised Taylor coefficients of the solution through `(t, y)`, orders
         /// `0..=order`, into `out` (state `i`'s coefficient `k` at `out[i * (order + 1) + k]`),
         /// with `d = derive(p)`; `work` is scratch. Straight-line code for the orders
-        /// `kane_model::runtime::TAYLOR_UNROLLED_ORDERS`, `taylor_derived_loop` for the others.
-        /// False (nothing done) for an order above `kane_model::runtime::TAYLOR_MAX_ORDER`.
+        /// `kane_model::runtime::TAYLOR_UNROLLED_ORDERS` on CPUs with fused multiply-add,
+        /// `taylor_derived_loop` otherwise. False (nothing done) for an order above
+        /// `kane_model::runtime::TAYLOR_MAX_ORDER`.
         #[allow(unused_variables, clippy::all)]
         pub fn taylor_derived<T: ::kane_model::__private::num_traits::Float>(
             t: T, y: &[T], p: &Params, __derived: &Derived, order: usize, out: &mut [T],
             work: &mut Vec<::kane_model::__private::taylor::Row<T>>,
         ) -> bool {
+            use ::kane_model::__private::taylor as __t;
             match order {
                 #(#arms)*
                 _ => taylor_derived_loop(t, y, p, __derived, order, out, work),

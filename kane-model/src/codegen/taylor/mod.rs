@@ -6,6 +6,7 @@
 //! of every value, and the states' next coefficient is `y_{k+1} = f_k / (k + 1)`.
 
 mod build;
+mod linear;
 pub mod recur;
 
 use num_traits::Float;
@@ -18,9 +19,9 @@ use super::ir::{Input, Section};
 pub use build::build;
 
 /// The orders generated code computes straight-line (one function each, every loop written
-/// out), spread over those the Taylor stepper takes at tolerances 1e-4 to 1e-14 (6 to 18; the
-/// stepper rounds an order up to the next of these). Not all thirteen: each costs build time.
-pub const UNROLLED_ORDERS: &[usize] = &[8, 10, 12, 15, 18];
+/// out), spread over those the Taylor stepper takes at tolerances 1e-4 to 1e-16 (it picks the
+/// one of these nearest the order it would choose). Not every order: each costs build time.
+pub const UNROLLED_ORDERS: &[usize] = &[8, 12, 16, 20];
 
 /// Why a section has no Taylor program.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -94,6 +95,45 @@ pub enum TKind {
     Sign(u32),
 }
 
+impl TKind {
+    /// The values the operation reads (a `sin`/`cos` partner is not read).
+    pub fn operands(self) -> Vec<u32> {
+        let mut out = Vec::new();
+        self.map_operands(|x| {
+            out.push(x);
+            x
+        });
+        out
+    }
+
+    /// The operation with each operand `x` replaced by `f(x)`.
+    pub fn map_operands(self, mut f: impl FnMut(u32) -> u32) -> TKind {
+        use TKind as K;
+        match self {
+            K::Time | K::State(_) | K::Const(_) | K::Input(_) => self,
+            K::Add(a, b) => K::Add(f(a), f(b)),
+            K::Sub(a, b) => K::Sub(f(a), f(b)),
+            K::Neg(a) => K::Neg(f(a)),
+            K::Mul(a, b) => K::Mul(f(a), f(b)),
+            K::Sqr(a) => K::Sqr(f(a)),
+            K::Scale(a, s) => K::Scale(f(a), f(s)),
+            K::Div(a, b) => K::Div(f(a), f(b)),
+            K::DivConst(a, s) => K::DivConst(f(a), f(s)),
+            K::Sqrt(a) => K::Sqrt(f(a)),
+            K::Exp(a) => K::Exp(f(a)),
+            K::Ln(a) => K::Ln(f(a)),
+            K::Sin(a, p) => K::Sin(f(a), p),
+            K::Cos(a, p) => K::Cos(f(a), p),
+            K::Sinh(a, p) => K::Sinh(f(a), p),
+            K::Cosh(a, p) => K::Cosh(f(a), p),
+            K::Integral(g, a, q) => K::Integral(g, f(a), f(q)),
+            K::Atan2(y, x, r) => K::Atan2(f(y), f(x), f(r)),
+            K::Abs(a) => K::Abs(f(a)),
+            K::Sign(a) => K::Sign(f(a)),
+        }
+    }
+}
+
 /// A Taylor operation and whether its value varies (reads a state or time); constant values
 /// are computed at order 0 only.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -123,9 +163,10 @@ pub struct TaylorProgram {
 }
 
 impl TaylorProgram {
-    /// The Taylor program of a right-hand side with `n_states` states.
+    /// The Taylor program of a right-hand side with `n_states` states, its linear operations
+    /// folded.
     pub fn new(section: &Section, n_states: usize) -> Result<Self, TaylorError> {
-        build(section, n_states)
+        build(section, n_states).map(linear::fold)
     }
 
     /// The normalised Taylor coefficients of the solution through `(t, y)`, orders `0..=order`,

@@ -17,6 +17,24 @@ pub const MAX_ORDER: usize = 32;
 /// One value's coefficients, orders `0..=MAX_ORDER`.
 pub type Row<T> = [T; MAX_ORDER + 1];
 
+/// Whether this CPU has fused multiply-add, which the straight-line coefficients are compiled
+/// for (x86 checks at run time, once; AArch64 always has it).
+#[inline]
+pub fn fused_multiply_add() -> bool {
+    #[cfg(any(target_arch = "x86", target_arch = "x86_64"))]
+    {
+        std::is_x86_feature_detected!("fma")
+    }
+    #[cfg(target_arch = "aarch64")]
+    {
+        true
+    }
+    #[cfg(not(any(target_arch = "x86", target_arch = "x86_64", target_arch = "aarch64")))]
+    {
+        false
+    }
+}
+
 /// `k` as `T`.
 #[inline(always)]
 pub fn count<T: Float>(k: usize) -> T {

@@ -2,7 +2,7 @@
 //! `z' = g(x) - g2(x)` has Taylor coefficients zero past order 0 exactly when `g` and `g2` agree
 //! as functions; and against closed forms.
 
-use super::super::ir::{Input, Op, SectionBuilder};
+use super::super::ir::{Input, Op, Section, SectionBuilder};
 use super::TaylorProgram;
 use crate::expr::Func;
 
@@ -183,4 +183,66 @@ fn a_section_that_is_no_right_hand_side_is_refused() {
     assert!(err.to_string().contains("speed rate"), "{err}");
     let err = TaylorProgram::new(&section, 2).unwrap_err();
     assert!(err.to_string().contains("1 results for 2 states"), "{err}");
+}
+
+/// A top-like right-hand side: `x' = x w / 2 + y w / 2 - x y / 2`, `y' = c (x y) - c (y y) + x`,
+/// `w' = 0 d` (a parameter `c`, a derived `d`): linear parts to fold, a constant state.
+fn foldable() -> Section {
+    let mut b = SectionBuilder::default();
+    let (x, y, w) = (b.input(Input::State(0)), b.input(Input::State(1)), b.input(Input::State(2)));
+    let (c, d) = (b.input(Input::Param(0)), b.input(Input::Derived(0)));
+    let two = b.constant(2.0);
+    let halves: Vec<u32> = [(x, w), (y, w), (x, y)]
+        .into_iter()
+        .map(|(p, q)| {
+            let m = b.mul(p, q);
+            b.div(m, two)
+        })
+        .collect();
+    let s = b.add(halves[0], halves[1]);
+    let xdot = b.sub(s, halves[2]);
+    let (xy, yy) = (b.mul(x, y), b.mul(y, y));
+    let (cxy, cyy) = (b.mul(c, xy), b.mul(yy, c));
+    let diff = b.sub(cxy, cyy);
+    let ydot = b.add(diff, x);
+    let zero = b.constant(0.0);
+    let wdot = b.mul(zero, d);
+    b.finish(vec![xdot, ydot, wdot])
+}
+
+#[test]
+fn folding_keeps_the_coefficients_and_drops_varying_operations() {
+    let section = foldable();
+    let plain = super::build(&section, 3).unwrap();
+    let folded = TaylorProgram::new(&section, 3).unwrap();
+    // w is constant, so x w and y w are constant multiples; the halves share one
+    // multiplication, and c (x y - y y) one.
+    assert!(
+        folded.series_op_count() < plain.series_op_count(),
+        "{} varying operations folded, {} plain",
+        folded.series_op_count(),
+        plain.series_op_count()
+    );
+    let products = |p: &TaylorProgram| {
+        p.ops
+            .iter()
+            .filter(|o| o.series && matches!(o.kind, super::TKind::Mul(..) | super::TKind::Sqr(_)))
+            .count()
+    };
+    assert_eq!(products(&plain), 4);
+    assert_eq!(products(&folded), 2, "x y and y y: w is constant");
+    let read = |i: Input| match i {
+        Input::Param(_) => 1.7,
+        Input::Derived(_) => -0.3,
+        _ => f64::NAN,
+    };
+    let y = [0.4, -0.9, 1.3];
+    let (mut a, mut b) = (vec![0.0; 3 * (ORDER + 1)], vec![0.0; 3 * (ORDER + 1)]);
+    assert!(plain.coefficients(0.0, &y, read, ORDER, &mut a, &mut Vec::new()));
+    assert!(folded.coefficients(0.0, &y, read, ORDER, &mut b, &mut Vec::new()));
+    for (j, (p, q)) in a.iter().zip(&b).enumerate() {
+        assert!((p - q).abs() <= 1e-13 * p.abs().max(1.0), "coefficient {j}: {p:e} plain, {q:e} folded");
+    }
+    assert!(b[ORDER + 5].abs() > 1e-6, "the coefficients are not trivially zero");
+    assert_eq!(&b[2 * (ORDER + 1)..2 * (ORDER + 1) + 3], &[1.3, 0.0, 0.0], "w is constant");
 }

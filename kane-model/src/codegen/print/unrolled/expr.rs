@@ -21,6 +21,8 @@ pub enum X {
     Sub(Box<X>, Box<X>),
     /// `a * b`.
     Mul(Box<X>, Box<X>),
+    /// `a * b + c` with one rounding (`mul_add`).
+    MulAdd(Box<X>, Box<X>, Box<X>),
     /// `a / b`.
     Div(Box<X>, Box<X>),
     /// `-a`.
@@ -46,6 +48,15 @@ impl X {
             (X::Zero, b) => b,
             (a, X::Zero) => a,
             (a, b) => X::Add(Box::new(a), Box::new(b)),
+        }
+    }
+
+    /// `self + t`, fused into one `mul_add` when `t` is a product.
+    pub fn plus_fused(self, t: X) -> X {
+        match (self, t) {
+            (X::Zero, t) => t,
+            (a, X::Mul(x, y)) => X::MulAdd(x, y, Box::new(a)),
+            (a, t) => a.plus(t),
         }
     }
 
@@ -100,7 +111,7 @@ impl X {
             X::Add(..) | X::Sub(..) => 1,
             X::Mul(..) | X::Div(..) => 2,
             X::Neg(_) => 3,
-            X::Zero | X::One | X::Atom(_) | X::SignOf(..) => 4,
+            X::Zero | X::One | X::Atom(_) | X::SignOf(..) | X::MulAdd(..) => 4,
         }
     }
 
@@ -118,11 +129,34 @@ impl X {
                 let a = a.operand(3, false);
                 quote!(-#a)
             }
+            X::MulAdd(..) => self.chain_tokens(),
             X::SignOf(a, s) => {
                 let (a, s) = (a.tokens(), s.tokens());
                 quote!((if #s < T::zero() { -(#a) } else { #a }))
             }
         }
+    }
+
+    /// A chain of `mul_add`s (each the addend of the next) as one statement per link,
+    /// `{ let mut __s: T = base; __s = x.mul_add(y, __s); ... __s }`: flat, where nested calls
+    /// would indent once per term.
+    fn chain_tokens(&self) -> TokenStream {
+        let mut links = Vec::new();
+        let mut at = self;
+        while let X::MulAdd(x, y, rest) = at {
+            links.push((x.operand(4, false), y.tokens()));
+            at = rest;
+        }
+        let base = at.tokens();
+        if let [(x, y)] = &links[..] {
+            return quote!(#x.mul_add(#y, #base));
+        }
+        let steps = links.iter().rev().map(|(x, y)| quote!(__s = #x.mul_add(#y, __s);));
+        quote!({
+            let mut __s: T = #base;
+            #(#steps)*
+            __s
+        })
     }
 
     /// `a op b`, both sides parenthesised where the order of operations needs it (operators

@@ -2,7 +2,8 @@
 //! `p`; out goes `taylor_order_p`, which computes what `taylor_derived_loop` computes at order `p`
 //! with every pass written out: coefficient `k` of value `v` is the local `__c{v}_{k}`, every
 //! index a constant, every Cauchy sum term by term (no loop, no work array, no bounds checks but
-//! one on `out`). The terms are added in the loop's order, so the numbers agree with it.
+//! one on `out`). Products are added by fused multiply-adds (the function is compiled for CPUs
+//! that have them), so the numbers agree with the loop's to rounding.
 
 mod expr;
 mod recur;
@@ -136,12 +137,16 @@ pub fn order_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream, o
     let passes = (1..order).map(|k| pass(program, k));
     let finish = finish(program, order);
     let n_out = Literal::usize_unsuffixed(program.results.len() * (order + 1));
-    let doc =
-        format!(" `taylor_derived` at order {order}, straight-line (the numbers of `taylor_derived_loop`).");
+    let doc = format!(
+        " `taylor_derived` at order {order}, straight-line with fused multiply-adds (the numbers of `taylor_derived_loop` to rounding)."
+    );
     quote! {
         #[doc = #doc]
+        /// # Safety
+        /// Only on a CPU with fused multiply-add (`__t::fused_multiply_add()`).
         #[allow(unused_variables, clippy::all)]
-        fn #name<T: ::kane_model::__private::num_traits::Float>(
+        #[cfg_attr(any(target_arch = "x86", target_arch = "x86_64"), target_feature(enable = "fma"))]
+        unsafe fn #name<T: ::kane_model::__private::num_traits::Float>(
             t: T, y: &[T], p: &Params, __derived: &Derived, out: &mut [T],
         ) -> bool {
             use ::kane_model::__private::taylor as __t;

@@ -1,8 +1,7 @@
 //! The recurrences of [`crate::codegen::taylor::recur`] written out for one order `k` known when
 //! printing: in come an operation and how to name any earlier coefficient; out goes coefficient
-//! `k` as one expression, every sum term by term. The terms are grouped and added in the order
-//! the loop functions add them (four interleaved partial sums, then the rest), so both compute
-//! the same numbers.
+//! `k` as one expression, every sum term by term, each product added by a fused multiply-add:
+//! the loop functions' numbers to rounding.
 
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote, ToTokens};
@@ -31,22 +30,12 @@ fn div_count(x: X, k: usize) -> X {
     }
 }
 
-/// `sum_j terms[j]` as `dot_reversed` adds it: four chains over the first multiple of four
-/// terms (term `j` on chain `j mod 4`), then the rest, `(c0 + c1) + (c2 + c3) + rest`.
+/// `sum_j terms[j]` as one chain of fused multiply-adds (the first product rounded alone).
+/// The loop functions split their sums into four chains to hide latency; straight-line code
+/// has the independent sums of other values to overlap instead (two chains, or the terms
+/// reading this pass's coefficients last, measured no faster).
 fn dot(terms: Vec<X>) -> X {
-    let quads = terms.len() / 4;
-    let mut chains = [X::Zero, X::Zero, X::Zero, X::Zero];
-    let mut tail = X::Zero;
-    for (j, t) in terms.into_iter().enumerate() {
-        if j < 4 * quads {
-            let c = std::mem::replace(&mut chains[j % 4], X::Zero);
-            chains[j % 4] = c.plus(t);
-        } else {
-            tail = tail.plus(t);
-        }
-    }
-    let [c0, c1, c2, c3] = chains;
-    c0.plus(c1).plus(c2.plus(c3)).plus(tail)
+    terms.into_iter().fold(X::Zero, X::plus_fused)
 }
 
 /// `sum_{j=lo}^{hi} x_j y_{k-j}`.
