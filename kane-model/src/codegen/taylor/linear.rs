@@ -177,14 +177,16 @@ impl<'a> Folder<'a> {
 
     /// The constant value `c`.
     fn coef_value(&mut self, c: Coef) -> u32 {
-        match (c.num, c.sym) {
-            (n, None) => self.constant(n),
-            (n, Some(s)) if n == 1.0 => s,
-            (n, Some(s)) if n == -1.0 => self.push(TKind::Neg(s)),
-            (n, Some(s)) => {
-                let k = self.constant(n);
-                self.push(TKind::Mul(k.min(s), k.max(s)))
-            }
+        let Some(s) = c.sym else {
+            return self.constant(c.num);
+        };
+        if c.num == 1.0 {
+            s
+        } else if c.num == -1.0 {
+            self.push(TKind::Neg(s))
+        } else {
+            let k = self.constant(c.num);
+            self.push(TKind::Mul(k.min(s), k.max(s)))
         }
     }
 
