@@ -85,6 +85,12 @@ fn target_dir() -> PathBuf {
     }
 }
 
+/// The cargo profile compiled models are built with: `$GYRO_SIM_MODEL_PROFILE`, else `release`
+/// (`dev` builds much faster and runs slower: the tests take it).
+fn profile() -> String {
+    std::env::var("GYRO_SIM_MODEL_PROFILE").ok().filter(|p| !p.is_empty()).unwrap_or_else(|| "release".into())
+}
+
 /// The workspace this binary was built from.
 fn workspace() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
@@ -96,7 +102,8 @@ pub fn ensure_binary(file: &ModelFile) -> Result<(PathBuf, bool), CompileError> 
     let hash = content_hash(file.source.as_bytes());
     let crate_name = format!("gyro-model-{}-{}-{}", file.name.replace('_', "-"), &hash[..12], tool_id());
     let target = target_dir();
-    let binary = target.join("release").join(&crate_name);
+    let profile = profile();
+    let binary = target.join(if profile == "dev" { "debug" } else { &profile }).join(&crate_name);
     if binary.is_file() {
         return Ok((binary, false));
     }
@@ -108,7 +115,7 @@ pub fn ensure_binary(file: &ModelFile) -> Result<(PathBuf, bool), CompileError> 
     write_crate(&dir, &crate_name, file, &sources)?;
     eprintln!("compiling the model {} (once per version of the file) with cargo:", file.path.display());
     let status = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
-        .args(["build", "--release", "--offline", "--manifest-path"])
+        .args(["build", "--profile", &profile, "--offline", "--manifest-path"])
         .arg(dir.join("Cargo.toml"))
         .arg("--target-dir")
         .arg(&target)

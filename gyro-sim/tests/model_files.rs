@@ -25,6 +25,9 @@ fn gyro_sim(args: &[&str], cache: &Path) -> Output {
         .args(args)
         .env("GYRO_SIM_CACHE", cache.join("cache"))
         .env("GYRO_SIM_TARGET_DIR", Path::new(env!("CARGO_TARGET_TMPDIR")).join("compiled-models"))
+        // The dev profile: the build (every dependency, in a target folder of its own) takes a
+        // fraction of a release build's time; what is tested does not depend on it.
+        .env("GYRO_SIM_MODEL_PROFILE", "dev")
         .output()
         .unwrap()
 }
