@@ -12,7 +12,9 @@ use super::{TKind, TaylorOp, TaylorProgram};
 
 /// `program` with its linear operations folded, if that leaves fewer varying operations. A
 /// state whose derivative is exactly zero (a product with the constant 0, as the symmetric
-/// top's axial rate) is constant: its products with other values are constant multiples.
+/// top's axial rate) is constant: its products with other values are constant multiples. A
+/// product with 0 is taken as 0 even where the other factor would be infinite: only a
+/// singular mass matrix makes one, and the simulator refuses those before integrating.
 pub fn fold(program: TaylorProgram) -> TaylorProgram {
     let mut still: Vec<u32> = Vec::new();
     let mut folded = Folder::run(&program, &still);
