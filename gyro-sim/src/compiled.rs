@@ -91,6 +91,16 @@ fn profile() -> String {
     std::env::var("GYRO_SIM_MODEL_PROFILE").ok().filter(|p| !p.is_empty()).unwrap_or_else(|| "release".into())
 }
 
+/// The folder cargo puts a profile's binaries in (`dev` and `test` share `debug`, `bench`
+/// uses `release`).
+fn profile_folder(profile: &str) -> &str {
+    match profile {
+        "dev" | "test" => "debug",
+        "bench" => "release",
+        other => other,
+    }
+}
+
 /// The workspace this binary was built from.
 fn workspace() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
@@ -103,7 +113,7 @@ pub fn ensure_binary(file: &ModelFile) -> Result<(PathBuf, bool), CompileError> 
     let crate_name = format!("gyro-model-{}-{}-{}", file.name.replace('_', "-"), &hash[..12], tool_id());
     let target = target_dir();
     let profile = profile();
-    let binary = target.join(if profile == "dev" { "debug" } else { &profile }).join(&crate_name);
+    let binary = target.join(profile_folder(&profile)).join(&crate_name);
     if binary.is_file() {
         return Ok((binary, false));
     }

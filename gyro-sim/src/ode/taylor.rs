@@ -23,8 +23,8 @@ const MIN_ORDER: usize = 2;
 const MAX_ORDER: usize = kane_model::runtime::TAYLOR_MAX_ORDER;
 /// How far above Jorba and Zou's order the stepper aims. Theirs minimises the cost of the
 /// coefficients alone; a step also costs the step-size rule, the series' evaluation and the
-/// linear operations, so fewer, longer steps of a higher order are cheaper (measured at equal
-/// error on the top and the gimbal: BENCHMARKS.md).
+/// linear operations, so fewer, longer steps of a higher order are cheaper (chosen from a sweep
+/// at equal error on the top and the gimbal: BENCHMARKS.md).
 const ORDER_LEAD: f64 = 5.0;
 
 /// The order to take where order `p` (not an integer) is best: the nearest order whose
