@@ -53,7 +53,9 @@ pub struct TaylorStepper<'a, S: System + ?Sized> {
     coeffs: Vec<f64>,
     /// Each component's `eps` relative to its tolerance, `eps / (atol + rtol |y_i|)`.
     inverse_scales: Vec<f64>,
-    /// `ln eps`, `eps` the smallest of the components' tolerances relative to `max(1, |y_i|)`.
+    /// `eps`, the smallest of the components' tolerances relative to `max(1, |y_i|)`, and its
+    /// logarithm.
+    eps: f64,
     ln_eps: f64,
     work: TaylorWork,
     stop: Option<f64>,
@@ -81,6 +83,7 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
             order: 0,
             coeffs: y0.to_vec(),
             inverse_scales: Vec::new(),
+            eps: f64::NAN,
             ln_eps: 0.0,
             work: Vec::new(),
             stop: None,
@@ -149,6 +152,11 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
             eps = eps.min(tol / v.abs().max(1.0));
         }
         self.inverse_scales.iter_mut().for_each(|s| *s = eps / *s);
+        if eps == self.eps {
+            // Often so (a component at zero sets it): the logarithm and the order are known.
+            return self.order;
+        }
+        self.eps = eps;
         self.ln_eps = eps.ln();
         let p = -self.ln_eps / 2.0 + 1.0 + ORDER_LEAD;
         if p.is_finite() {
@@ -234,10 +242,8 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
 
     /// The Taylor polynomial of the last expansion at `tau` past its start, into `out`.
     fn evaluate(&self, tau: f64, out: &mut [f64]) {
-        let n1 = self.order + 1;
-        for (i, o) in out.iter_mut().enumerate() {
-            let c = &self.coeffs[i * n1..(i + 1) * n1];
-            *o = c.iter().rev().fold(0.0, |acc, ck| acc * tau + ck);
+        for (o, c) in out.iter_mut().zip(self.coeffs.chunks_exact(self.order + 1)) {
+            *o = polynomial(c, tau);
         }
     }
 
@@ -257,6 +263,20 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
         self.evaluate(t - self.t_prev, out);
         Ok(())
     }
+}
+
+/// `sum_k c[k] x^k` as `E(x^2) + x O(x^2)`, the even and the odd coefficients each by Horner's
+/// rule: two independent chains of half the length (about half the time of one chain).
+fn polynomial(c: &[f64], x: f64) -> f64 {
+    let x2 = x * x;
+    let pairs = c.chunks_exact(2);
+    let mut even = pairs.remainder().first().copied().unwrap_or(0.0);
+    let mut odd = 0.0;
+    for pair in pairs.rev() {
+        even = even * x2 + pair[0];
+        odd = odd * x2 + pair[1];
+    }
+    even + x * odd
 }
 
 fn check_finite(t: f64, y: &[f64]) -> Result<(), OdeError> {
@@ -343,6 +363,16 @@ mod tests {
         assert_eq!(s.t(), 1.0);
         let mut y = [0.0; 2];
         assert!(s.interpolate(2.0, &mut y).is_err());
+    }
+
+    #[test]
+    fn polynomials_of_odd_and_even_length_are_summed_whole() {
+        let x = 0.7f64;
+        for n in 0..6 {
+            let c: Vec<f64> = (0..n).map(|k| 1.0 + k as f64).collect();
+            let horner = c.iter().rev().fold(0.0, |acc, ck| acc * x + ck);
+            assert!((polynomial(&c, x) - horner).abs() <= 1e-15 * horner.abs().max(1.0), "length {n}");
+        }
     }
 
     #[test]

@@ -30,12 +30,26 @@ fn div_count(x: X, k: usize) -> X {
     }
 }
 
-/// `sum_j terms[j]` as one chain of fused multiply-adds (the first product rounded alone).
-/// The loop functions split their sums into four chains to hide latency; straight-line code
-/// has the independent sums of other values to overlap instead (two chains, or the terms
-/// reading this pass's coefficients last, measured no faster).
+/// Partial sums a long sum is split into.
+const LANES: usize = 3;
+/// Terms from which a sum is split.
+const SPLIT_FROM: usize = 4;
+
+/// `sum_j terms[j]` by fused multiply-adds (the first product of a chain rounded alone): one
+/// chain, or from [`SPLIT_FROM`] terms [`LANES`] interleaved chains added at the end. Split
+/// chains are shorter, so a pass waits less on the latency of each link: the heavy top's
+/// order 16 coefficients took 0.29 us instead of 0.37-0.53 us, the gimbal's 0.65 us instead
+/// of 0.73-1.06 us (a bench of the generated functions, measured with 1-4 lanes from 4-12 terms).
 fn dot(terms: Vec<X>) -> X {
-    terms.into_iter().fold(X::Zero, X::plus_fused)
+    if terms.len() < SPLIT_FROM {
+        return terms.into_iter().fold(X::Zero, X::plus_fused);
+    }
+    let mut lanes = vec![X::Zero; LANES];
+    for (j, t) in terms.into_iter().enumerate() {
+        let lane = &mut lanes[j % LANES];
+        *lane = std::mem::replace(lane, X::Zero).plus_fused(t);
+    }
+    lanes.into_iter().fold(X::Zero, X::plus)
 }
 
 /// `sum_{j=lo}^{hi} x_j y_{k-j}`.
