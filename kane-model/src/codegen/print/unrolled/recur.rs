@@ -35,21 +35,27 @@ const LANES: usize = 3;
 /// Terms from which a sum is split.
 const SPLIT_FROM: usize = 4;
 
-/// `sum_j terms[j]` by fused multiply-adds (the first product of a chain rounded alone): one
-/// chain, or from [`SPLIT_FROM`] terms [`LANES`] interleaved chains added at the end. Split
-/// chains are shorter, so a pass waits less on the latency of each link: the heavy top's
-/// order 16 coefficients took 0.29 us instead of 0.37-0.53 us, the gimbal's 0.65 us instead
-/// of 0.73-1.06 us (a bench of the generated functions, measured with 1-4 lanes from 4-12 terms).
-fn dot(terms: Vec<X>) -> X {
-    if terms.len() < SPLIT_FROM {
-        return terms.into_iter().fold(X::Zero, X::plus_fused);
-    }
-    let mut lanes = vec![X::Zero; LANES];
-    for (j, t) in terms.into_iter().enumerate() {
-        let lane = &mut lanes[j % LANES];
-        *lane = std::mem::replace(lane, X::Zero).plus_fused(t);
-    }
-    lanes.into_iter().fold(X::Zero, X::plus)
+/// `sum_j terms[j]` by fused multiply-adds (the first product of a chain rounded alone), the
+/// terms that read coefficient `k` (`late`, computed in this pass) added last, after the others
+/// (known since the last pass): one chain, or from [`SPLIT_FROM`] terms [`LANES`] interleaved
+/// chains. Passes run one after the other, each waiting on the last, so what counts is the
+/// latency from a pass's new coefficients to its results: two fused multiply-adds here (the
+/// heavy top's orders 8, 12, 16 took 85, 162, 255 ns instead of 97, 183, 290; four-lane vector
+/// products were no faster: the passes' latency, not their work, sets the time).
+fn dot(terms: Vec<(X, bool)>) -> X {
+    let (late, early): (Vec<_>, Vec<_>) = terms.into_iter().partition(|(_, late)| *late);
+    let early: Vec<X> = early.into_iter().map(|(t, _)| t).collect();
+    let sum = if early.len() < SPLIT_FROM {
+        early.into_iter().fold(X::Zero, X::plus_fused)
+    } else {
+        let mut lanes = vec![X::Zero; LANES];
+        for (j, t) in early.into_iter().enumerate() {
+            let lane = &mut lanes[j % LANES];
+            *lane = std::mem::replace(lane, X::Zero).plus_fused(t);
+        }
+        lanes.into_iter().fold(X::Zero, X::plus)
+    };
+    late.into_iter().fold(sum, |s, (t, _)| s.plus_fused(t))
 }
 
 /// `sum_{j=lo}^{hi} x_j y_{k-j}`.
@@ -57,12 +63,12 @@ fn cauchy(c: Coef, k: usize, x: u32, y: u32, lo: usize, hi: usize) -> X {
     if lo > hi {
         return X::Zero;
     }
-    dot((lo..=hi).map(|j| c(x, j).times(c(y, k - j))).collect())
+    dot((lo..=hi).map(|j| (c(x, j).times(c(y, k - j)), j == 0 || j == k)).collect())
 }
 
 /// `sum_{j=1}^{hi} j x_j y_{k-j}`.
 fn weighted(c: Coef, k: usize, x: u32, y: u32, hi: usize) -> X {
-    dot((1..=hi).map(|j| count(j).times(c(x, j)).times(c(y, k - j))).collect())
+    dot((1..=hi).map(|j| (count(j).times(c(x, j)).times(c(y, k - j)), j == k)).collect())
 }
 
 /// A method of the number type on coefficient 0 of `a`.
