@@ -21,7 +21,7 @@ pub use build::build;
 /// The orders generated code computes straight-line (one function each, every loop written
 /// out), spread over those the Taylor stepper takes at tolerances 1e-4 to 1e-16 (it picks the
 /// one of these nearest the order it would choose). Not every order: each costs build time.
-pub const UNROLLED_ORDERS: &[usize] = &[8, 12, 16, 20];
+pub const UNROLLED_ORDERS: &[usize] = &[8, 12, 14, 16, 20];
 
 /// Why a section has no Taylor program.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
