@@ -51,12 +51,13 @@ macro_rules! check_against_duals {
 
 #[test]
 fn gimbal_and_top_coefficients_match_dual_numbers() {
-    // 14 by the loop; 16 straight-line (on a CPU with fused multiply-add).
-    let c = check_against_duals!(gimbal, 14, 0.3, [0.3, 0.4, 0.1, 0.5, -0.7, 10.0]);
-    assert!(c[3 * 15 + 14].abs() > 0.0, "high orders are computed");
+    // 13 by the loop; 16 straight-line (on a CPU with fused multiply-add).
+    assert!(!kane_model::runtime::TAYLOR_UNROLLED_ORDERS.contains(&13));
+    let c = check_against_duals!(gimbal, 13, 0.3, [0.3, 0.4, 0.1, 0.5, -0.7, 10.0]);
+    assert!(c[3 * 14 + 13].abs() > 0.0, "high orders are computed");
     check_against_duals!(gimbal, 16, 0.3, [0.3, 0.4, 0.1, 0.5, -0.7, 10.0]);
     let (h, s) = (0.5f64.sqrt(), 0.4f64);
-    for order in [14, 16] {
+    for order in [13, 16] {
         check_against_duals!(top, order, 0.0, [h * s.cos(), h * s.sin(), 0.5, 0.5, 0.3, -0.2, 10.0]);
     }
 }
