@@ -39,9 +39,8 @@ const SPLIT_FROM: usize = 4;
 /// terms that read coefficient `k` (`late`, computed in this pass) added last, after the others
 /// (known since the last pass): one chain, or from [`SPLIT_FROM`] terms [`LANES`] interleaved
 /// chains. Passes run one after the other, each waiting on the last, so what counts is the
-/// latency from a pass's new coefficients to its results: two fused multiply-adds here (the
-/// heavy top's orders 8, 12, 16 took 85, 162, 255 ns instead of 97, 183, 290; four-lane vector
-/// products were no faster: the passes' latency, not their work, sets the time).
+/// latency from a pass's new coefficients to its results: two fused multiply-adds here
+/// (`cargo bench -p gyro-sim --bench taylor_coefficients`; figures in BENCHMARKS.md).
 fn dot(terms: Vec<(X, bool)>) -> X {
     let (late, early): (Vec<_>, Vec<_>) = terms.into_iter().partition(|(_, late)| *late);
     let early: Vec<X> = early.into_iter().map(|(t, _)| t).collect();
