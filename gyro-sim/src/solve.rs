@@ -162,6 +162,9 @@ impl<M: GeneratedModel> System for ModelSystem<M> {
     fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
         M::taylor(t, y, &self.params, &self.derived, order, out, work)
     }
+    fn taylor_straight_line(&self) -> &[usize] {
+        M::INFO.taylor_straight_line
+    }
 }
 
 /// A system without some of its states (cyclic coordinates nothing asked for depends on): they
@@ -227,6 +230,9 @@ impl<S: System> System for Reduced<'_, S> {
         }
         fout.truncate(n);
         has
+    }
+    fn taylor_straight_line(&self) -> &[usize] {
+        self.inner.taylor_straight_line()
     }
 }
 

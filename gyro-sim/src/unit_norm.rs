@@ -57,6 +57,10 @@ impl<S: System + ?Sized> System for UnitNorm<'_, S> {
         self.inner.taylor(t, y, order, out, work)
     }
 
+    fn taylor_straight_line(&self) -> &[usize] {
+        self.inner.taylor_straight_line()
+    }
+
     fn project(&self, y: &mut [f64]) -> bool {
         let mut moved = false;
         for group in self.groups {

@@ -1,4 +1,6 @@
-//! `model!("path/to/model.al")`: expands a model file into its generated module items.
+//! `model!("path/to/model.al")`: expands a model file into its generated module items;
+//! `model!("path/to/model.al", taylor_orders = [8, 12, 16])` adds straight-line Taylor code for
+//! those orders (for models integrated by the Taylor method).
 //!
 //! A thin shell: it reads the file (relative to the calling crate's manifest), asks
 //! `kane_model` for the code, and turns any error into a compile error showing the model file's
@@ -10,36 +12,65 @@
 //! }
 //! ```
 
+use kane_model::codegen::CodeOptions;
 use proc_macro::TokenStream;
 use quote::quote;
-use syn::{parse_macro_input, LitStr};
+use syn::parse::{Parse, ParseStream};
+use syn::punctuated::Punctuated;
+use syn::{parse_macro_input, LitInt, LitStr, Token};
+
+/// A macro's input: the model (a path or a name) and, optionally, `taylor_orders = [..]`.
+struct MacroInput {
+    model: LitStr,
+    options: CodeOptions,
+}
+
+impl Parse for MacroInput {
+    fn parse(input: ParseStream) -> syn::Result<Self> {
+        let model: LitStr = input.parse()?;
+        let mut options = CodeOptions::default();
+        if input.parse::<Option<Token![,]>>()?.is_some() && !input.is_empty() {
+            let key: syn::Ident = input.parse()?;
+            if key != "taylor_orders" {
+                return Err(syn::Error::new(key.span(), "expected `taylor_orders = [..]`"));
+            }
+            input.parse::<Token![=]>()?;
+            let list;
+            syn::bracketed!(list in input);
+            let orders = Punctuated::<LitInt, Token![,]>::parse_terminated(&list)?;
+            options.taylor_orders = orders.iter().map(LitInt::base10_parse).collect::<syn::Result<_>>()?;
+            input.parse::<Option<Token![,]>>()?;
+        }
+        Ok(MacroInput { model, options })
+    }
+}
 
 /// Expands a model file into `Params`, `rhs`, `outputs`, state indices and a `Model` type.
 #[proc_macro]
 pub fn model(input: TokenStream) -> TokenStream {
-    let path = parse_macro_input!(input as LitStr);
-    expand(&path).unwrap_or_else(syn::Error::into_compile_error).into()
+    let input = parse_macro_input!(input as MacroInput);
+    expand(&input.model, &input.options).unwrap_or_else(syn::Error::into_compile_error).into()
 }
 
 /// Expands a canonical system built through kane-model's Rust API (`kane_model::models`), by
 /// name, into the same items as [`model!`].
 #[proc_macro]
 pub fn builtin_model(input: TokenStream) -> TokenStream {
-    let name = parse_macro_input!(input as LitStr);
-    kane_model::build::generate_builtin(&name.value())
+    let MacroInput { model: name, options } = parse_macro_input!(input as MacroInput);
+    kane_model::build::generate_builtin(&name.value(), &options)
         .map(|e| e.tokens)
         .unwrap_or_else(|e| syn::Error::new(name.span(), e.to_string()).into_compile_error())
         .into()
 }
 
-fn expand(lit: &LitStr) -> syn::Result<proc_macro2::TokenStream> {
+fn expand(lit: &LitStr, options: &CodeOptions) -> syn::Result<proc_macro2::TokenStream> {
     let dir = std::env::var("CARGO_MANIFEST_DIR").unwrap_or_else(|_| ".".into());
     let path = std::path::Path::new(&dir).join(lit.value());
     let shown = lit.value();
     let src = std::fs::read_to_string(&path).map_err(|e| {
         syn::Error::new(lit.span(), format!("cannot read model file {}: {e}", path.display()))
     })?;
-    let emitted = kane_model::build::generate_file(std::path::Path::new(&shown), &src)
+    let emitted = kane_model::build::generate_file(std::path::Path::new(&shown), &src, options)
         .map_err(|e| syn::Error::new(lit.span(), e.to_string()))?;
     let tokens = emitted.tokens;
     let full = path.display().to_string();
@@ -51,13 +82,14 @@ fn expand(lit: &LitStr) -> syn::Result<proc_macro2::TokenStream> {
 
 #[cfg(test)]
 mod tests {
-    use super::expand;
+    use super::{expand, MacroInput};
     use proc_macro2::Span;
     use syn::LitStr;
 
     #[test]
     fn a_model_file_error_becomes_a_compile_error_with_its_line() {
-        let err = expand(&LitStr::new("tests/data/bad_model.al", Span::call_site())).unwrap_err();
+        let err = expand(&LitStr::new("tests/data/bad_model.al", Span::call_site()), &Default::default())
+            .unwrap_err();
         let text = err.to_string();
         assert!(text.contains("tests/data/bad_model.al:3:18: error: `QQ` is not defined"), "{text}");
         let tokens = err.into_compile_error().to_string();
@@ -66,19 +98,38 @@ mod tests {
 
     #[test]
     fn a_missing_file_is_a_compile_error_naming_it() {
-        let err = expand(&LitStr::new("tests/data/nope.al", Span::call_site())).unwrap_err();
+        let err =
+            expand(&LitStr::new("tests/data/nope.al", Span::call_site()), &Default::default()).unwrap_err();
         assert!(err.to_string().starts_with("cannot read model file"), "{err}");
     }
 
     #[test]
     fn a_good_model_expands_and_tracks_its_file() {
-        let tokens = expand(&LitStr::new("../kane-model/models/gimbal_gyroscope.al", Span::call_site()))
-            .unwrap()
-            .to_string();
+        let gimbal = LitStr::new("../kane-model/models/gimbal_gyroscope.al", Span::call_site());
+        let tokens = expand(&gimbal, &Default::default()).unwrap().to_string();
         assert!(
             tokens.contains("pub fn rhs_derived") && tokens.contains("include_str"),
             "{}",
             &tokens[..200]
         );
+    }
+
+    #[test]
+    fn straight_line_taylor_orders_are_asked_by_name() {
+        let input: MacroInput = syn::parse_str(r#""m.al", taylor_orders = [8, 16]"#).unwrap();
+        assert_eq!(input.options.taylor_orders, vec![8, 16]);
+        let input: MacroInput = syn::parse_str(r#""m.al""#).unwrap();
+        assert!(input.options.taylor_orders.is_empty());
+        assert!(syn::parse_str::<MacroInput>(r#""m.al", orders = [8]"#).is_err());
+    }
+
+    #[test]
+    fn straight_line_code_is_written_only_when_asked() {
+        let gimbal = LitStr::new("../kane-model/models/gimbal_gyroscope.al", Span::call_site());
+        let plain = expand(&gimbal, &Default::default()).unwrap().to_string();
+        assert!(plain.contains("taylor_derived_loop") && !plain.contains("taylor_order_"));
+        let options = kane_model::codegen::CodeOptions { taylor_orders: vec![12] };
+        let asked = expand(&gimbal, &options).unwrap().to_string();
+        assert!(asked.contains("taylor_order_12") && !asked.contains("taylor_order_16"));
     }
 }

@@ -6,7 +6,7 @@ use std::path::Path;
 
 use thiserror::Error;
 
-use crate::codegen::{CodegenError, Emitted};
+use crate::codegen::{CodeOptions, CodegenError, Emitted};
 
 /// Why a model could not be generated.
 #[derive(Debug, Error)]
@@ -44,23 +44,23 @@ pub enum BuildError {
 }
 
 /// The generated code of the model file `path` (its text `source`), named after the file.
-pub fn generate_file(path: &Path, source: &str) -> Result<Emitted, BuildError> {
+pub fn generate_file(path: &Path, source: &str, options: &CodeOptions) -> Result<Emitted, BuildError> {
     let shown = path.display().to_string();
     let loaded = crate::lang::check(&shown, source)?.model;
     let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
     let codegen = |source| BuildError::Codegen { model: shown.clone(), source };
     let mut spec = loaded.into_spec(&name).map_err(codegen)?;
-    crate::codegen::generate(&mut spec).map_err(codegen)
+    crate::codegen::generate(&mut spec, options).map_err(codegen)
 }
 
 /// The generated code of the canonical system `name` of [`crate::models::builtin_spec`].
-pub fn generate_builtin(name: &str) -> Result<Emitted, BuildError> {
+pub fn generate_builtin(name: &str, options: &CodeOptions) -> Result<Emitted, BuildError> {
     let known = crate::models::BUILTIN_SPECS.join(", ");
     let spec = crate::models::builtin_spec(name)
         .ok_or_else(|| BuildError::UnknownBuiltin { name: name.to_string(), known })?;
     let codegen = |source| BuildError::Codegen { model: name.to_string(), source };
     let mut spec = spec.map_err(|e| codegen(CodegenError::Mechanics(e)))?;
-    crate::codegen::generate(&mut spec).map_err(codegen)
+    crate::codegen::generate(&mut spec, options).map_err(codegen)
 }
 
 /// For `build.rs`: reads `model` (a model file), writes its generated module to `out` (for
@@ -70,18 +70,19 @@ pub fn generate_builtin(name: &str) -> Result<Emitted, BuildError> {
 /// // build.rs
 /// fn main() {
 ///     let out = std::path::Path::new(&std::env::var("OUT_DIR").unwrap()).join("gimbal.rs");
-///     kane_model::build::build_script("models/gimbal_gyroscope.al", &out).unwrap();
+///     let options = kane_model::codegen::CodeOptions::default();
+///     kane_model::build::build_script("models/gimbal_gyroscope.al", &out, &options).unwrap();
 /// }
 /// // src/lib.rs: pub mod gimbal { include!(concat!(env!("OUT_DIR"), "/gimbal.rs")); }
 /// ```
-pub fn build_script(model: &str, out: &Path) -> Result<(), BuildError> {
+pub fn build_script(model: &str, out: &Path, options: &CodeOptions) -> Result<(), BuildError> {
     println!("cargo:rerun-if-changed={model}");
     let io = |path: &Path| {
         let path = path.display().to_string();
         move |source| BuildError::Io { path, source }
     };
     let src = std::fs::read_to_string(model).map_err(io(Path::new(model)))?;
-    let emitted = generate_file(Path::new(model), &src)?;
+    let emitted = generate_file(Path::new(model), &src, options)?;
     let text = crate::codegen::to_items(&emitted)?;
     let tmp = out.with_extension("rs.partial");
     std::fs::write(&tmp, text).map_err(io(&tmp))?;

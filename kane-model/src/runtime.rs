@@ -41,6 +41,9 @@ pub struct ModelInfo {
     pub cyclic: &'static [usize],
     /// Arithmetic operations per call of `rhs` and per evaluation of every output.
     pub op_counts: (usize, usize),
+    /// The orders whose Taylor coefficients the model computes straight-line (faster than the
+    /// loop every other order takes); empty for a model without them.
+    pub taylor_straight_line: &'static [usize],
 }
 
 impl ModelInfo {
@@ -61,8 +64,8 @@ pub type TaylorWork = Vec<crate::codegen::taylor::recur::Row<f64>>;
 /// The highest order [`GeneratedModel::taylor`] expands to.
 pub const TAYLOR_MAX_ORDER: usize = crate::codegen::taylor::recur::MAX_ORDER;
 
-/// The orders whose Taylor coefficients generated models compute straight-line (faster than the
-/// loop the others take).
+/// The orders a model asks straight-line Taylor code for by default (see
+/// [`ModelInfo::taylor_straight_line`] for the orders a model has).
 pub const TAYLOR_UNROLLED_ORDERS: &[usize] = crate::codegen::taylor::UNROLLED_ORDERS;
 
 /// A model compiled from its equations by [`crate::codegen`].

@@ -4,7 +4,7 @@ fn gimbal_source() -> String {
     let src = include_str!("../models/gimbal_gyroscope.al");
     let loaded = kane_model::lang::load("gimbal_gyroscope.al", src).unwrap();
     let mut spec = loaded.into_spec("gimbal_gyroscope").unwrap();
-    let emitted = kane_model::codegen::generate(&mut spec).unwrap();
+    let emitted = kane_model::codegen::generate(&mut spec, &Default::default()).unwrap();
     kane_model::codegen::to_source(&emitted).unwrap()
 }
 
@@ -28,7 +28,7 @@ fn a_model_without_kane_is_refused() {
 #[test]
 fn build_script_form_writes_an_includable_module() {
     let out = std::env::temp_dir().join(format!("kane-build-{}.rs", std::process::id()));
-    kane_model::build::build_script("models/gimbal_gyroscope.al", &out).unwrap();
+    kane_model::build::build_script("models/gimbal_gyroscope.al", &out, &Default::default()).unwrap();
     let text = std::fs::read_to_string(&out).unwrap();
     assert!(!text.starts_with("//!"), "an include!d file must not open with an inner doc comment");
     assert!(text.contains("pub fn rhs<T: ::kane_model::__private::num_traits::Float>"), "{}", &text[..200]);

@@ -537,6 +537,7 @@ static BLOWUP: kane_model::runtime::ModelInfo = kane_model::runtime::ModelInfo {
     outputs: &[],
     cyclic: &[],
     op_counts: (0, 0),
+    taylor_straight_line: &[],
 };
 
 impl gyro_sim::ode::System for Blowup {

@@ -57,6 +57,11 @@ pub trait System {
     fn taylor(&self, _t: f64, _y: &[f64], _order: usize, _out: &mut [f64], _work: &mut TaylorWork) -> bool {
         false
     }
+    /// The orders whose Taylor coefficients the system computes straight-line (faster than the
+    /// others); none by default.
+    fn taylor_straight_line(&self) -> &[usize] {
+        &[]
+    }
 }
 
 /// Why an integration or a stepper's request failed.

@@ -6,7 +6,8 @@
 //! Order and step follow Jorba and Zou (2005), per component, for any order. Each component's
 //! tolerance is `tol_i = atol + rtol |y_i|` (as the Runge-Kutta pairs weigh it) and
 //! `eps = min_i tol_i / max(1, |y_i|)`. The order is theirs, `-ln(eps) / 2 + 1`, plus
-//! [`ORDER_LEAD`], taken to the nearest order with straight-line code. The step is
+//! [`ORDER_LEAD`], taken to the nearest order the system computes straight-line (rounded
+//! when it has none). The step is
 //! `h = min(rho_(p-1), rho_p) (eps / e^2)^(1/p) exp(-0.7 / (p - 1))` with
 //! `rho_k = min_i (s_i / |y_ik|)^(1/k)`, `s_i = tol_i / eps`: term `p` stays near `tol_i / e^2`
 //! in every component (heyoka takes one max norm over all, which lets a large component set the
@@ -15,8 +16,6 @@
 
 use super::stepper::{Stats, StopReason, DEFAULT_MAX_STEPS};
 use super::{OdeError, System, TaylorWork, Tolerances};
-use kane_model::runtime::TAYLOR_UNROLLED_ORDERS;
-
 /// The lowest order a step takes (the step-size rule reads orders `p - 1` and `p`).
 const MIN_ORDER: usize = 2;
 /// The highest order a step takes.
@@ -28,16 +27,12 @@ const MAX_ORDER: usize = kane_model::runtime::TAYLOR_MAX_ORDER;
 /// order 14, 5 without it).
 const ORDER_LEAD: f64 = 4.0;
 
-/// The order to take where order `p` (not an integer) is best: the nearest order whose
-/// coefficients generated models compute straight-line ([`TAYLOR_UNROLLED_ORDERS`], much faster
-/// than the others; the cost per unit time is flat near its minimum).
-fn straight_line_order(p: f64) -> usize {
+/// The order to take where order `p` (not an integer) is best: the nearest of the orders
+/// whose coefficients the system computes straight-line (`straight`, much faster than the
+/// others; the cost per unit time is flat near its minimum), else `p` rounded.
+fn straight_line_order(p: f64, straight: &[usize]) -> usize {
     let distance = |o: &usize| (*o as f64 - p).abs();
-    TAYLOR_UNROLLED_ORDERS
-        .iter()
-        .copied()
-        .min_by(|a, b| distance(a).total_cmp(&distance(b)))
-        .unwrap_or(p.ceil() as usize)
+    straight.iter().copied().min_by(|a, b| distance(a).total_cmp(&distance(b))).unwrap_or(p.round() as usize)
 }
 
 /// A Taylor-method stepper for `sys`.
@@ -161,7 +156,8 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
         self.ln_eps = eps.ln();
         let p = -self.ln_eps / 2.0 + 1.0 + ORDER_LEAD;
         if p.is_finite() {
-            straight_line_order(p.max(MIN_ORDER as f64)).clamp(MIN_ORDER, MAX_ORDER)
+            straight_line_order(p.max(MIN_ORDER as f64), self.sys.taylor_straight_line())
+                .clamp(MIN_ORDER, MAX_ORDER)
         } else {
             MAX_ORDER
         }
@@ -312,6 +308,23 @@ mod tests {
             }
             true
         }
+        fn taylor_straight_line(&self) -> &[usize] {
+            kane_model::runtime::TAYLOR_UNROLLED_ORDERS
+        }
+    }
+
+    /// The oscillator computing every order alike (no straight-line orders).
+    struct LoopOnly;
+    impl System for LoopOnly {
+        fn dim(&self) -> usize {
+            2
+        }
+        fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+            Oscillator.rhs(t, y, dy)
+        }
+        fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], w: &mut TaylorWork) -> bool {
+            Oscillator.taylor(t, y, order, out, w)
+        }
     }
 
     /// The same equations without Taylor coefficients.
@@ -378,12 +391,27 @@ mod tests {
 
     #[test]
     fn orders_go_to_the_nearest_straight_line_one() {
-        assert_eq!(straight_line_order(12.9), 12);
-        assert_eq!(straight_line_order(13.5), 14);
-        assert_eq!(straight_line_order(15.5), 16);
-        assert_eq!(straight_line_order(6.0), 8);
-        assert_eq!(straight_line_order(2.0), 8);
-        assert_eq!(straight_line_order(23.5), 20);
+        let straight = kane_model::runtime::TAYLOR_UNROLLED_ORDERS;
+        assert_eq!(straight_line_order(12.9, straight), 12);
+        assert_eq!(straight_line_order(13.5, straight), 14);
+        assert_eq!(straight_line_order(15.5, straight), 16);
+        assert_eq!(straight_line_order(6.0, straight), 8);
+        assert_eq!(straight_line_order(2.0, straight), 8);
+        assert_eq!(straight_line_order(23.5, straight), 20);
+        assert_eq!(straight_line_order(13.4, &[]), 13);
+    }
+
+    #[test]
+    fn a_system_without_straight_line_orders_takes_the_order_it_needs() {
+        let tol = Tolerances { rtol: 1e-12, atol: 1e-12 };
+        let mut s = TaylorStepper::new(&LoopOnly, 0.0, &[1.0, 0.0], tol).unwrap();
+        // -ln(1e-12) / 2 + 1 + ORDER_LEAD = 18.8, rounded.
+        assert_eq!(s.order(), 19);
+        s.set_stop_time(2.0);
+        while s.step().unwrap() == StopReason::StepTaken {}
+        let mut y = [0.0; 2];
+        s.interpolate(2.0, &mut y).unwrap();
+        assert!((y[0] - 2.0f64.cos()).abs() < 1e-11, "{}", y[0]);
     }
 
     #[test]

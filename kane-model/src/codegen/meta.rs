@@ -45,6 +45,8 @@ pub struct Meta {
     pub cyclic: Vec<usize>,
     /// Operations per `rhs` call and per evaluation of every output.
     pub op_counts: (usize, usize),
+    /// The orders whose Taylor coefficients the generated code computes straight-line.
+    pub taylor_straight_line: Vec<usize>,
 }
 
 impl Meta {
@@ -79,6 +81,7 @@ impl Meta {
             outputs,
             cyclic: lowered.program.cyclic.clone(),
             op_counts: lowered.program.op_counts(),
+            taylor_straight_line: Vec::new(),
         }
     }
 
@@ -107,6 +110,7 @@ impl Meta {
             outputs: Box::leak(outputs.into_boxed_slice()),
             cyclic: Box::leak(self.cyclic.clone().into_boxed_slice()),
             op_counts: self.op_counts,
+            taylor_straight_line: Box::leak(self.taylor_straight_line.clone().into_boxed_slice()),
         }))
     }
 }

@@ -106,6 +106,17 @@ impl Model {
             // a_i . b_j through the lowest common ancestor L: (a . L)(L . b), each along a chain.
             let (up_a, up_b) = self.paths_to_common(a, b)?;
             let common = *up_a.last().unwrap_or(&a);
+            if let (Some((ax_a, angle_a)), Some((ax_b, angle_b))) =
+                (self.single_axis_chain(&up_a)?, self.single_axis_chain(&up_b)?)
+            {
+                if ax_a == ax_b {
+                    // Both hang from L by rotations about one axis: a . b is one rotation.
+                    let angle = self.ar.sub(angle_b, angle_a)?;
+                    let m = self.axis_rotation(ax_a, angle)?;
+                    self.dcm_cache.insert((a, b), m);
+                    return Ok(m);
+                }
+            }
             let down = self.chain_dcm(&up_b)?;
             let up = self.chain_dcm(&up_a)?;
             let a_l = transpose(&up);
@@ -121,14 +132,64 @@ impl Model {
         Ok(m)
     }
 
-    /// `L . x` for the chain `x, parent(x), ..., L`.
+    /// `L . x` for the chain `x, parent(x), ..., L`. Consecutive rotations about the same axis
+    /// are one rotation by the sum of their angles, so a chain of relative angles gives
+    /// `cos(q1 + q2)`, not the products of every angle's sine and cosine.
     fn chain_dcm(&mut self, chain: &[FrameId]) -> Result<Mat3> {
         let mut m = self.dcm(chain[chain.len() - 1], chain[chain.len() - 1])?;
+        let mut run: Option<(u8, Vec<ExprId>)> = None;
         for w in chain.windows(2).rev() {
-            let step = self.dcm(w[1], w[0])?;
-            m = self.mat_mul(&m, &step)?;
+            let simple = match &self.frames[w[0].index()].orientation {
+                Some(Orientation::Axis { axis, angle }) if self.frames[w[0].index()].parent == Some(w[1]) => {
+                    Some((*axis, *angle))
+                }
+                _ => None,
+            };
+            match (simple, &mut run) {
+                (Some((axis, angle)), Some((run_axis, angles))) if axis.unsigned_abs() == *run_axis => {
+                    angles.push(if axis < 0 { self.ar.neg(angle)? } else { angle });
+                }
+                (Some((axis, angle)), _) => {
+                    m = self.apply_run(&m, run.take())?;
+                    let angle = if axis < 0 { self.ar.neg(angle)? } else { angle };
+                    run = Some((axis.unsigned_abs(), vec![angle]));
+                }
+                (None, _) => {
+                    m = self.apply_run(&m, run.take())?;
+                    let step = self.dcm(w[1], w[0])?;
+                    m = self.mat_mul(&m, &step)?;
+                }
+            }
         }
-        Ok(m)
+        self.apply_run(&m, run)
+    }
+
+    /// The axis and total angle of the chain `x, parent(x), ..., L` when every step is a simple
+    /// rotation about that one axis (a chain of one frame turns by 0 about any axis: `None`).
+    fn single_axis_chain(&mut self, chain: &[FrameId]) -> Result<Option<(u8, ExprId)>> {
+        let mut axis_seen = None;
+        let mut angles = Vec::with_capacity(chain.len());
+        for w in chain.windows(2) {
+            let frame = &self.frames[w[0].index()];
+            let Some(Orientation::Axis { axis, angle }) = frame.orientation.clone() else { return Ok(None) };
+            if frame.parent != Some(w[1]) || axis_seen.is_some_and(|a| a != axis.unsigned_abs()) {
+                return Ok(None);
+            }
+            axis_seen = Some(axis.unsigned_abs());
+            angles.push(if axis < 0 { self.ar.neg(angle)? } else { angle });
+        }
+        match axis_seen {
+            Some(axis) => Ok(Some((axis, self.ar.add(&angles)?))),
+            None => Ok(None),
+        }
+    }
+
+    /// `m` times the rotation about `axis` by the sum of `angles` (`m` itself when `None`).
+    fn apply_run(&mut self, m: &Mat3, run: Option<(u8, Vec<ExprId>)>) -> Result<Mat3> {
+        let Some((axis, angles)) = run else { return Ok(*m) };
+        let angle = self.ar.add(&angles)?;
+        let step = self.axis_rotation(axis, angle)?;
+        self.mat_mul(m, &step)
     }
 
     fn mat_mul(&mut self, a: &Mat3, b: &Mat3) -> Result<Mat3> {

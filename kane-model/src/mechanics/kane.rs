@@ -12,6 +12,10 @@ use super::ids::{FrameId, PointId};
 use super::model::{Load, Model};
 use super::vector::{Dyadic, Vector};
 
+/// Most terms an equation's collected canonical form may have: a larger one is not formed (the
+/// expression is kept as derived, its shared subexpressions named, never multiplied out).
+pub const COLLECT_TERMS_BUDGET: usize = 4_000;
+
 /// Kane's equations of a model: `q' = kinematics`, `mass_matrix * u' = forcing`.
 #[derive(Clone, Debug)]
 pub struct KaneEquations {
@@ -212,6 +216,15 @@ impl Model {
         Ok(())
     }
 
+    /// The collected canonical form of `e` where it is within [`COLLECT_TERMS_BUDGET`] terms,
+    /// else `e` itself (never expanded past the budget).
+    pub fn collected_form_within_budget(&mut self, e: ExprId) -> Result<ExprId> {
+        if self.ar.expanded_terms_bound(e) > COLLECT_TERMS_BUDGET {
+            return Ok(e);
+        }
+        self.collected_form(e)
+    }
+
     /// The collected canonical form of `e`: trigonometric identities applied in the state
     /// variables, terms grouped by state monomial, parameter-only parts kept whole.
     pub fn collected_form(&mut self, e: ExprId) -> Result<ExprId> {
@@ -223,9 +236,10 @@ impl Model {
         Ok(ar.collect_state(e, |sym| kinds.get(sym.index()).copied().unwrap_or(true))?)
     }
 
-    /// `e` or its collected canonical form, whichever has the smaller expression graph.
+    /// `e` or its collected canonical form, whichever has the smaller expression graph; `e`
+    /// itself, never expanded, when the canonical form could pass [`COLLECT_TERMS_BUDGET`] terms.
     fn smaller_form(&mut self, e: ExprId) -> Result<ExprId> {
-        let s = self.collected_form(e)?;
+        let s = self.collected_form_within_budget(e)?;
         Ok(if self.ar.graph_size(s) < self.ar.graph_size(e) { s } else { e })
     }
 

@@ -30,7 +30,7 @@ mod vector_ops;
 pub use error::{MechanicsError, Result};
 pub use ids::{BodyId, FrameId, Mat3, ParticleId, PointId};
 pub use inertia::Shape;
-pub use kane::KaneEquations;
+pub use kane::{KaneEquations, COLLECT_TERMS_BUDGET};
 pub use masses::{MassId, MassView};
 pub use model::{Body, Load, Model, Orientation, Particle};
 pub use vector::{Dyadic, Vector};

@@ -49,7 +49,7 @@ fn reads(
 ) -> Result<Vec<usize>, CodegenError> {
     let mut read = vec![false; states.len()];
     for &e in components {
-        let c = spec.model.collected_form(e)?;
+        let c = spec.model.collected_form_within_budget(e)?;
         let ar = &spec.model.ar;
         let form = if ar.free_symbols(&[c]).len() < ar.free_symbols(&[e]).len() { c } else { e };
         let free = ar.free_symbols(&[form]);

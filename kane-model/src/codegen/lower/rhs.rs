@@ -111,7 +111,11 @@ fn hoisted_roots(ar: &mut Arena, eqs: &KaneEquations, params: &[SymbolId]) -> Re
         let diag = ar.mul(&[mm[a][a], mm[c][c]])?;
         let off = ar.powi(mm[a][c], 2)?;
         let det = ar.sub(diag, off)?;
-        let det = ar.collect_state(det, is_param)?;
+        let det = if ar.expanded_terms_bound(det) <= crate::mechanics::COLLECT_TERMS_BUDGET {
+            ar.collect_state(det, is_param)?
+        } else {
+            det
+        };
         roots.push(hoisted.rewrite(ar, det, &is_param)?);
         dets.push(((a, c), roots.len() - 1));
     }

@@ -8,7 +8,17 @@ use super::super::meta::Meta;
 
 /// The `ModelInfo` expression of a model.
 pub fn info(meta: &Meta) -> TokenStream {
-    let Meta { name, states, state_units, n_coordinates, params, param_units, cyclic, .. } = meta;
+    let Meta {
+        name,
+        states,
+        state_units,
+        n_coordinates,
+        params,
+        param_units,
+        cyclic,
+        taylor_straight_line,
+        ..
+    } = meta;
     let (rhs_ops, out_ops) = meta.op_counts;
     let outputs = meta.outputs.iter().map(|o| {
         let (oname, unit, kind, columns, reads) = (&o.name, &o.unit, &o.kind, &o.columns, &o.reads);
@@ -35,6 +45,7 @@ pub fn info(meta: &Meta) -> TokenStream {
             outputs: &[#(#outputs),*],
             cyclic: &[#(#cyclic),*],
             op_counts: (#rhs_ops, #out_ops),
+            taylor_straight_line: &[#(#taylor_straight_line),*],
         }
     }
 }

@@ -14,8 +14,9 @@ use super::super::taylor::TaylorProgram;
 use super::metadata;
 use super::section::{self, Scalar, SectionStyle};
 
-/// The module's items.
-pub fn module(spec: &ModelSpec, lowered: &Lowered) -> TokenStream {
+/// The module's items, with straight-line Taylor code for `taylor_orders` (see
+/// [`super::super::taylor::TaylorProgram::straight_line_orders`]).
+pub fn module(spec: &ModelSpec, lowered: &Lowered, taylor_orders: &[usize]) -> TokenStream {
     let program = &lowered.program;
     let param_idents: Vec<Ident> =
         lowered.params.iter().map(|s| rust_ident(&spec.model.ar.symbol_info(*s).name)).collect();
@@ -30,8 +31,12 @@ pub fn module(spec: &ModelSpec, lowered: &Lowered) -> TokenStream {
     let compute = functions(program, &param_idents, &quaternion);
     // A right-hand side whose every operation has a recurrence (all do) gets Taylor coefficients.
     let taylor = TaylorProgram::new(&program.rhs, ns).ok();
-    let taylor_fn = taylor.as_ref().map(|t| super::taylor::taylor_fn(t, &input_tokens(&param_idents, true)));
-    let info = metadata::info(&super::super::meta::Meta::of(spec, lowered));
+    let taylor_fn = taylor
+        .as_ref()
+        .map(|t| super::taylor::taylor_fn(t, &input_tokens(&param_idents, true), taylor_orders));
+    let mut meta = super::super::meta::Meta::of(spec, lowered);
+    meta.taylor_straight_line = taylor_orders.to_vec();
+    let info = metadata::info(&meta);
     let model_impl = model_impl(spec, lowered, &param_idents, taylor.is_some());
     quote! {
         /// Number of states: coordinates, then speeds.

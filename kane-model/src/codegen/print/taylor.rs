@@ -1,7 +1,7 @@
 //! The Taylor coefficients printed: in comes a [`TaylorProgram`] and how its inputs are read;
 //! out goes `taylor_derived_loop`, straight-line in the operations (one call of a recurrence of
 //! `kane_model::__private::taylor` per operation) with a loop over the order; one straight-line
-//! function per order of [`UNROLLED_ORDERS`] ([`super::unrolled`]); and `taylor_derived`, which
+//! function per order asked ([`super::unrolled`]); and `taylor_derived`, which
 //! takes the straight-line function of the order asked where there is one and the CPU has fused
 //! multiply-add, else the loop.
 
@@ -9,28 +9,33 @@ use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote, ToTokens};
 
 use super::super::ir::Input;
-use super::super::taylor::{TKind, TaylorProgram, UNROLLED_ORDERS};
+use super::super::taylor::{TKind, TaylorProgram};
 use super::section::{constant, Scalar};
 use super::unrolled::{order_fn, order_fn_name};
 
 /// `taylor_derived` (the dispatch by order), the straight-line functions it calls and
-/// `taylor_derived_loop`: the normalised Taylor coefficients of the solution through `(t, y)`.
-pub fn taylor_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream) -> TokenStream {
+/// `taylor_derived_loop`: the normalised Taylor coefficients of the solution through `(t, y)`;
+/// straight-line code for `orders` only.
+pub fn taylor_fn(
+    program: &TaylorProgram,
+    input: &dyn Fn(Input) -> TokenStream,
+    orders: &[usize],
+) -> TokenStream {
     let looped = loop_fn(program, input);
-    let orders = UNROLLED_ORDERS.iter().map(|&o| order_fn(program, input, o));
-    let arms = UNROLLED_ORDERS.iter().map(|&o| {
+    let arms = orders.iter().map(|&o| {
         let (name, o) = (order_fn_name(o), Literal::usize_unsuffixed(o));
         // SAFETY: the CPU has fused multiply-add, which is all the function assumes.
         quote!(#o if __t::fused_multiply_add() => unsafe { #name(t, y, p, __derived, out) },)
     });
+    let orders = orders.iter().map(|&o| order_fn(program, input, o));
     quote! {
         /// The normalised Taylor coefficients of the solution through `(t, y)`, orders
         /// `0..=order`, into `out` (state `i`'s coefficient `k` at `out[i * (order + 1) + k]`),
-        /// with `d = derive(p)`; `work` is scratch. Straight-line code for the orders
-        /// `kane_model::runtime::TAYLOR_UNROLLED_ORDERS` on CPUs with fused multiply-add,
-        /// `taylor_derived_loop` otherwise. False (nothing done) for an order above
+        /// with `d = derive(p)`; `work` is scratch. Straight-line code for the orders of
+        /// `INFO.taylor_straight_line` on CPUs with fused multiply-add, `taylor_derived_loop`
+        /// otherwise. False (nothing done) for an order above
         /// `kane_model::runtime::TAYLOR_MAX_ORDER`.
-        #[allow(unused_variables, clippy::all)]
+        #[allow(unused_variables, unused_imports, clippy::all)]
         pub fn taylor_derived<T: ::kane_model::__private::num_traits::Float>(
             t: T, y: &[T], p: &Params, __derived: &Derived, order: usize, out: &mut [T],
             work: &mut Vec<::kane_model::__private::taylor::Row<T>>,

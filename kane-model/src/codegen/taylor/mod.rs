@@ -18,10 +18,16 @@ use super::ir::{Input, Section};
 
 pub use build::build;
 
-/// The orders generated code computes straight-line (one function each, every loop written
-/// out), spread over those the Taylor stepper takes at tolerances 1e-4 to 1e-16 (it picks the
-/// one of these nearest the order it would choose). Not every order: each costs build time.
+/// The orders a model asks straight-line code for by default (one function each, every loop
+/// written out), spread over those the Taylor stepper takes at tolerances 1e-4 to 1e-16 (it
+/// picks the one of a model's orders nearest the order it would choose). Not every order: each
+/// costs build time.
 pub const UNROLLED_ORDERS: &[usize] = &[8, 12, 14, 16, 20];
+
+/// The largest straight-line pass count ([`TaylorProgram::straight_line_cost`]) written out:
+/// past it the loop is as fast (measured: BENCHMARKS.md, "Straight-line or loop") and the code
+/// only costs build time.
+pub const STRAIGHT_LINE_BUDGET: usize = 20_000;
 
 /// Why a section has no Taylor program.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -206,6 +212,37 @@ impl TaylorProgram {
         }
         recur::finish(w, order, y, &self.results, out);
         true
+    }
+
+    /// Terms the straight-line code of `order` writes out: a varying product-like operation
+    /// (a Cauchy sum) costs `k` terms at pass `k`, any other varying operation one.
+    pub fn straight_line_cost(&self, order: usize) -> usize {
+        let series = self.ops.iter().filter(|o| o.series && !matches!(o.kind, TKind::Time | TKind::State(_)));
+        let (mut cauchy, mut linear) = (0usize, 0usize);
+        for op in series {
+            match op.kind {
+                TKind::Add(..) | TKind::Sub(..) | TKind::Neg(_) | TKind::Scale(..) | TKind::DivConst(..) => {
+                    linear += 1
+                }
+                _ => cauchy += 1,
+            }
+        }
+        cauchy.saturating_mul(order * (order + 1) / 2).saturating_add(linear.saturating_mul(order))
+    }
+
+    /// The orders of `asked` whose straight-line code is within [`STRAIGHT_LINE_BUDGET`],
+    /// ascending and without repeats.
+    pub fn straight_line_orders(&self, asked: &[usize]) -> Vec<usize> {
+        let mut orders: Vec<usize> = asked
+            .iter()
+            .copied()
+            .filter(|&o| {
+                (2..=recur::MAX_ORDER).contains(&o) && self.straight_line_cost(o) <= STRAIGHT_LINE_BUDGET
+            })
+            .collect();
+        orders.sort_unstable();
+        orders.dedup();
+        orders
     }
 
     /// Arithmetic operations whose value varies (each costs up to `k` products at order `k`).
