@@ -21,6 +21,10 @@ pub use render::EomsText;
 /// is printed in named intermediates instead (its collected form would not read well anyway).
 pub const COLLECT_BUDGET: u64 = 2_000;
 
+/// Most terms the expansions of all the collected quantities of a model may build together
+/// (bounds the time collecting takes); the smallest quantities are collected first.
+pub const COLLECT_TOTAL: u64 = 100_000;
+
 /// How one quantity is printed.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shown {
@@ -106,19 +110,28 @@ pub fn printed_eoms(m: &mut LoadedModel) -> Result<Option<PrintedEoms>, EomsErro
     }))
 }
 
-/// Each quantity collected when its expansion stays within [`COLLECT_BUDGET`] terms, else
-/// kept as derived, to be printed in named intermediates.
+/// Each quantity collected when its expansion stays within [`COLLECT_BUDGET`] terms and, the
+/// smallest first, all the collected ones within [`COLLECT_TOTAL`]; the others kept as derived,
+/// to be printed in named intermediates.
 fn shown_all(ar: &mut Arena, p: &Presenter, labelled: &[(String, ExprId)]) -> Result<Vec<Shown>, EomsError> {
     let roots: Vec<ExprId> = labelled.iter().map(|(_, x)| *x).collect();
     let bounds = ar.expansion_bounds(&roots);
+    let mut by_size: Vec<usize> = (0..roots.len()).collect();
+    by_size.sort_by_key(|i| (bounds[*i], *i));
+    let mut collect = vec![false; roots.len()];
+    let mut spent = 0u64;
+    for i in by_size {
+        spent = spent.saturating_add(bounds[i]);
+        if bounds[i] > COLLECT_BUDGET || spent > COLLECT_TOTAL {
+            break;
+        }
+        collect[i] = true;
+    }
+    // Collected in file order: the order of a collected sum's terms depends on it.
     let mut out = Vec::with_capacity(roots.len());
-    for ((label, x), bound) in labelled.iter().zip(bounds) {
-        let collected = if bound > COLLECT_BUDGET {
-            None
-        } else {
-            p.tidy_within(ar, *x, COLLECT_BUDGET).map_err(named(label))?
-        };
-        out.push(collected.map_or(Shown::Named(*x), Shown::Collected));
+    for (((label, x), bound), wanted) in labelled.iter().zip(bounds).zip(collect) {
+        let c = if wanted { p.tidy_within(ar, *x, bound).map_err(named(label))? } else { None };
+        out.push(c.map_or(Shown::Named(*x), Shown::Collected));
     }
     Ok(out)
 }
