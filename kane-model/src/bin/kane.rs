@@ -26,7 +26,8 @@ enum Command {
         /// The model file.
         file: PathBuf,
     },
-    /// Print the kinematic equations, partial velocities, mass matrix and forcing.
+    /// Print the kinematic equations, partial velocities, mass matrix and forcing; quantities
+    /// too large to collect in named intermediates z1, z2, ... (Autolev's Z variables).
     Eoms {
         /// The model file.
         file: PathBuf,
@@ -163,7 +164,8 @@ fn check(file: PathBuf) -> Result<(), String> {
     Ok(())
 }
 
-/// `kane eoms`: the equations of motion, simplified and collected, as text, LaTeX or JSON.
+/// `kane eoms`: the equations of motion, simplified and collected (or in named intermediates),
+/// as text, LaTeX or JSON.
 fn eoms(file: PathBuf, format: Format) -> Result<(), String> {
     let mut m = load(&file)?;
     let p = lang::printed_eoms(&mut m).map_err(|e| format!("{}: {e}", file.display()))?;
@@ -177,15 +179,11 @@ fn eoms(file: PathBuf, format: Format) -> Result<(), String> {
         }
         Format::Json => {
             let table = partial_velocities(&mut m)?;
-            let ar = &m.model.ar;
-            let text = |xs: &[kane_model::expr::Collected]| -> Vec<String> {
-                xs.iter().map(|x| ar.collected_text(x)).collect()
-            };
-            let mass: Vec<Vec<String>> = p.mass_matrix.iter().map(|r| text(r)).collect();
+            let t = p.texts(&m.model.ar);
             let v = serde_json::json!({
-                "coordinates": p.coordinates, "speeds": p.speeds, "kinematics": text(&p.kinematics),
-                "partial_velocities": table.lines().collect::<Vec<_>>(),
-                "mass_matrix": mass, "forcing": text(&p.forcing), "equations": text(&p.equations),
+                "coordinates": p.coordinates, "speeds": p.speeds, "intermediates": t.intermediates,
+                "kinematics": t.kinematics, "partial_velocities": table.lines().collect::<Vec<_>>(),
+                "mass_matrix": t.mass_matrix, "forcing": t.forcing, "equations": t.equations,
             });
             println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
         }

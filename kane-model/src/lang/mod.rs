@@ -31,7 +31,7 @@ pub use ast::{BinOp, Expr, ExprKind, Stmt, StmtKind};
 pub use check::{check, Checked, OVERRIDE_MARKER};
 pub use compare::{compare, Comparison, Outcome, Relation};
 pub use diagnostic::{line_column, Diagnostic, Report, Severity};
-pub use eoms::{printed_eoms, PrintedEoms};
+pub use eoms::{printed_eoms, EomsError, EomsText, PrintedEoms, Shown, COLLECT_BUDGET, COLLECT_TOTAL};
 pub use interp::value::Value;
 pub use interp::{CodeRequest, InputValue, LoadedModel};
 pub use parser::parse_expression;

@@ -3,7 +3,7 @@
 
 use rustc_hash::FxHashMap;
 
-use crate::expr::{Abbreviations, Arena, Collected, ExprError, ExprId, SymbolKind};
+use crate::expr::{Abbreviations, Arena, Collected, ExprError, ExprId, SymbolKind, MAX_EXPANDED_TERMS};
 
 use super::interp::value::Value;
 use super::interp::Binding;
@@ -56,10 +56,25 @@ impl Presenter {
     /// `e` simplified and collected, parameters in the file's names; `e` as it is when
     /// expanding it would give too many terms.
     pub fn tidy(&self, ar: &mut Arena, e: ExprId) -> Result<Collected, ExprError> {
+        let budget = u64::try_from(MAX_EXPANDED_TERMS).unwrap_or(u64::MAX);
+        Ok(self.tidy_within(ar, e, budget)?.unwrap_or_else(|| Collected::whole(ar, e)))
+    }
+
+    /// [`Presenter::tidy`], or `None` when expanding `e` may build a sum of more than `budget`
+    /// terms (judged before expanding, see [`Arena::expansion_bounds`]).
+    pub fn tidy_within(
+        &self,
+        ar: &mut Arena,
+        e: ExprId,
+        budget: u64,
+    ) -> Result<Option<Collected>, ExprError> {
+        if ar.expansion_bounds(&[e])[0] > budget {
+            return Ok(None);
+        }
         let params: Vec<bool> = ar.symbols().map(|(_, s)| s.kind == SymbolKind::Constant).collect();
         match ar.tidy(e, |s| params.get(s.index()).copied().unwrap_or(false), &self.names) {
-            Err(ExprError::TooLarge(_)) => Ok(Collected::whole(ar, e)),
-            other => other,
+            Err(ExprError::TooLarge(_)) => Ok(None),
+            other => other.map(Some),
         }
     }
 
@@ -87,5 +102,17 @@ mod tests {
         let Some(super::Value::Scalar(x)) = m.value("X") else { panic!("X is a scalar") };
         assert_eq!(p.text(&mut m.model.ar, x).unwrap(), "(K2 - K1)*sin(Q)^2");
         assert_eq!(p.defined.iter().map(|d| d.0.as_str()).collect::<Vec<_>>(), ["K1", "K2"]);
+    }
+
+    #[test]
+    fn tidy_within_declines_what_would_swell() {
+        let src = "NEWTONIAN N\nCONSTANTS K\nVARIABLES Q{12}'\n\
+                   X = (SIN(Q1) + COS(Q1))*(SIN(Q2) + COS(Q2))*(SIN(Q3) + COS(Q3))*(SIN(Q4) + COS(Q4))*\
+                   (SIN(Q5) + COS(Q5))*(SIN(Q6) + COS(Q6))*(SIN(Q7) + COS(Q7))*(SIN(Q8) + COS(Q8))\n";
+        let mut m = super::super::load("t.al", src).unwrap();
+        let p = m.presenter().unwrap();
+        let Some(super::Value::Scalar(x)) = m.value("X") else { panic!("X is a scalar") };
+        assert_eq!(p.tidy_within(&mut m.model.ar, x, 255).unwrap(), None);
+        assert!(p.tidy_within(&mut m.model.ar, x, 256).unwrap().is_some());
     }
 }

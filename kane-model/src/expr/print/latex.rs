@@ -1,5 +1,7 @@
 //! LaTeX: `\frac{m L^{2} \sin\left(q_{1}\right)}{2} - \dot{q}_{1}`.
 
+use rustc_hash::FxHashMap;
+
 use super::super::arena::Arena;
 use super::super::node::{ExprId, Func, SymbolId, SymbolKind};
 use super::super::number::Number;
@@ -7,6 +9,7 @@ use super::layout::{layout, Prec, Syntax};
 
 struct Latex<'a> {
     ar: &'a Arena,
+    names: Option<&'a FxHashMap<ExprId, String>>,
 }
 
 const GREEK: [&str; 24] = [
@@ -15,7 +18,7 @@ const GREEK: [&str; 24] = [
 ];
 
 /// `q1''` -> `\ddot{q}_{1}`, `theta` -> `\theta`, `I_B` -> `I_{B}`.
-fn symbol_latex(name: &str, order: u32) -> String {
+pub(super) fn symbol_latex(name: &str, order: u32) -> String {
     let base = name.trim_end_matches('\'');
     let split = base.find(|c: char| c.is_ascii_digit() || c == '_').unwrap_or(base.len());
     let (stem, rest) = base.split_at(split);
@@ -64,8 +67,8 @@ impl Syntax for Latex<'_> {
         };
         symbol_latex(&info.name, order)
     }
-    fn named(&mut self, _: ExprId) -> Option<String> {
-        None
+    fn named(&mut self, id: ExprId) -> Option<String> {
+        self.names.and_then(|n| n.get(&id)).map(|name| symbol_latex(name, 0))
     }
     fn paren(&mut self, x: String) -> String {
         format!("\\left({x}\\right)")
@@ -129,7 +132,12 @@ impl Syntax for Latex<'_> {
 impl Arena {
     /// LaTeX for `e`, with `q1'` as `\dot{q}_{1}` and quotients as `\frac`.
     pub fn to_latex(&self, e: ExprId) -> String {
-        layout(self, e, &mut Latex { ar: self }, true).0
+        layout(self, e, &mut Latex { ar: self, names: None }, true).0
+    }
+
+    /// LaTeX in which the subexpressions in `names` are written by name (`z12` as `z_{12}`).
+    pub fn to_latex_named(&self, e: ExprId, names: &FxHashMap<ExprId, String>) -> String {
+        layout(self, e, &mut Latex { ar: self, names: Some(names) }, true).0
     }
 }
 

@@ -3,4 +3,7 @@
 mod collected;
 mod latex;
 pub(crate) mod layout;
+mod named;
 mod text;
+
+pub use named::Intermediates;
