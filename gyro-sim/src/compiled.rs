@@ -1,8 +1,9 @@
 //! The compiled path: in comes a checked model file; out goes the path of a gyro-sim binary
 //! with that model compiled in (the integrator and the model inlined together, as for the
-//! built-in models). Binaries are cached by the file's content and the tool's identity and built
-//! once, offline, with cargo; a later run of the same file reuses the binary, an edited file
-//! builds a new one.
+//! built-in models). Binaries are cached by the file's equations (its text without its INPUT
+//! lines) and the tool's identity and built once, offline, with cargo; a later run of the same
+//! file reuses the binary, and so does a file whose INPUT values alone changed (the binary reads
+//! them from the file at run time); any other edit builds a new one.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -40,9 +41,21 @@ pub fn content_hash(bytes: &[u8]) -> String {
     format!("{h:016x}")
 }
 
-/// The key under which a model file's compiled model is registered: its content's hash.
+/// The key under which a model file's compiled model is registered: the hash of its
+/// equations, [`equations_text`].
 pub fn registry_key(source: &str) -> String {
-    format!("file:{}", content_hash(source.as_bytes()))
+    format!("file:{}", content_hash(equations_text(source).as_bytes()))
+}
+
+/// A model file's text without its INPUT lines (values, units, initial conditions and run
+/// settings, which the compiled binary reads from the file at run time): what its generated
+/// code depends on.
+pub fn equations_text(source: &str) -> String {
+    let is_input = |line: &str| {
+        let word: String = line.trim_start().chars().take_while(|c| c.is_ascii_alphabetic()).collect();
+        word.eq_ignore_ascii_case("input")
+    };
+    source.lines().filter(|l| !is_input(l)).collect::<Vec<_>>().join("\n")
 }
 
 /// This tool's identity (its binary's size and modification time): a rebuilt simulator builds
@@ -109,7 +122,7 @@ fn workspace() -> PathBuf {
 /// The compiled binary for `file`: the cached one, or one built now (cargo's progress shown
 /// on standard error). True in the second value when it was built.
 pub fn ensure_binary(file: &ModelFile) -> Result<(PathBuf, bool), CompileError> {
-    let hash = content_hash(file.source.as_bytes());
+    let hash = content_hash(equations_text(&file.source).as_bytes());
     let crate_name = format!("gyro-model-{}-{}-{}", file.name.replace('_', "-"), &hash[..12], tool_id());
     let target = target_dir();
     let profile = profile();
@@ -187,4 +200,19 @@ fn main() -> std::process::ExitCode {{
         path = file.path.display().to_string(),
         outputs = outputs.iter().map(|o| format!("{o:?}.to_string()")).collect::<Vec<_>>().join(", "),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn input_values_do_not_change_the_key_and_equations_do() {
+        let a = "CONSTANTS M\nINPUT M = 1 kg, TFINAL = 5\nKANE()\n";
+        let b = "CONSTANTS M\n  input M = 2 kg\nKANE()\n";
+        let c = "CONSTANTS M, K\nINPUT M = 1 kg, TFINAL = 5\nKANE()\n";
+        assert_eq!(registry_key(a), registry_key(b));
+        assert_ne!(registry_key(a), registry_key(c));
+        assert_eq!(equations_text("INPUTS\nX"), "INPUTS\nX", "only the INPUT command is left out");
+    }
 }

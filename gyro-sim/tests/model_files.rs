@@ -147,9 +147,20 @@ fn the_compiled_path_builds_once_per_file_version() {
     let worst = compiled_rows.iter().flatten().zip(instant_rows.iter().flatten());
     let worst = worst.map(|(x, y)| (x - y).abs() / x.abs().max(1.0)).fold(0.0, f64::max);
     assert!(worst < 1e-12, "compiled vs instant {worst:e}");
-    // An edit builds exactly once more.
+    // An edit of INPUT values alone needs no build, and the binary runs with the new values.
     let edited = std::fs::read_to_string(&model).unwrap().replace("OFF = 0.05", "OFF = 0.08");
-    std::fs::write(&model, edited).unwrap();
+    std::fs::write(&model, &edited).unwrap();
+    let input_edit = gyro_sim(&args, &dir);
+    assert!(input_edit.status.success() && !text(&input_edit).contains("compiling"), "{}", text(&input_edit));
+    assert!(text(&input_edit).contains("ran compiled"), "{}", text(&input_edit));
+    let compiled_rows = rows(&out);
+    assert!(gyro_sim(&[&args[..], &["--engine", "instant"]].concat(), &dir).status.success());
+    let worst = compiled_rows.iter().flatten().zip(rows(&out).iter().flatten());
+    let worst = worst.map(|(x, y)| (x - y).abs() / x.abs().max(1.0)).fold(0.0, f64::max);
+    assert!(worst < 1e-12, "compiled vs instant after the INPUT edit {worst:e}");
+    assert_ne!(compiled_rows, instant_rows, "the new offset moves the rotor");
+    // Any other edit builds exactly once more.
+    std::fs::write(&model, edited + "% an edit outside INPUT\n").unwrap();
     let after_edit = gyro_sim(&args, &dir);
     assert!(after_edit.status.success() && text(&after_edit).contains("compiling"), "{}", text(&after_edit));
     let settled = gyro_sim(&args, &dir);

@@ -16,9 +16,6 @@ mod chain_rigid_rel_5 {
     kane_derive::model!("models/chain_rigid_rel_5.al");
 }
 
-// Generation of the 8-link chains fails today ("expanding this expression would give 357505
-// terms or more"), so their modules are built only with the feature `chain8-generated`.
-#[cfg(feature = "chain8-generated")]
 mod chain_rigid_rel_8 {
     kane_derive::model!("models/chain_rigid_rel_8.al");
 }
@@ -27,7 +24,6 @@ mod chain_particle_rel_5 {
     kane_derive::model!("models/chain_particle_rel_5.al");
 }
 
-#[cfg(feature = "chain8-generated")]
 mod chain_particle_rel_8 {
     kane_derive::model!("models/chain_particle_rel_8.al");
 }
@@ -138,16 +134,8 @@ fn generated_rigid_chain_5_matches_sympy() {
 }
 
 #[test]
-#[cfg_attr(
-    not(feature = "chain8-generated"),
-    ignore = "generating the 8-link chain fails today (an expansion over the term limit); run with \
-              --features chain8-generated once it works"
-)]
 fn generated_rigid_chain_8_matches_sympy() {
-    #[cfg(feature = "chain8-generated")]
     generated_matches_sympy::<chain_rigid_rel_8::Model>("chain_rigid_rel_8.al");
-    #[cfg(not(feature = "chain8-generated"))]
-    panic!("the generated module needs --features chain8-generated");
 }
 
 #[test]
@@ -156,14 +144,6 @@ fn generated_particle_chain_5_matches_sympy() {
 }
 
 #[test]
-#[cfg_attr(
-    not(feature = "chain8-generated"),
-    ignore = "generating the 8-link chain fails today (an expansion over the term limit); run with \
-              --features chain8-generated once it works"
-)]
 fn generated_particle_chain_8_matches_sympy() {
-    #[cfg(feature = "chain8-generated")]
     generated_matches_sympy::<chain_particle_rel_8::Model>("chain_particle_rel_8.al");
-    #[cfg(not(feature = "chain8-generated"))]
-    panic!("the generated module needs --features chain8-generated");
 }

@@ -145,7 +145,7 @@ enum EngineChoice {
 /// A model file compiled into this binary (the compiled path's cached binaries).
 #[derive(Clone)]
 pub struct CompiledModel {
-    /// Its registry key ([`crate::compiled::registry_key`] of the file's text).
+    /// Its registry key ([`crate::compiled::registry_key`] of the file's equations).
     pub key: String,
     /// The compiled model.
     pub entry: ModelEntry,
@@ -209,7 +209,12 @@ fn run_command(
         .map_err(|e| format!("{}: cannot read the model file: {e}", file_path.display()))?;
     let key = crate::compiled::registry_key(&source);
     let (entry, run, file) = match compiled.filter(|c| c.key == key) {
-        Some(c) => (c.entry, c.run, None),
+        Some(c) => {
+            // The binary's equations; INPUT values (perhaps edited since it was built) from the file.
+            let file = ModelFile::load(&file_path).map_err(|e| e.to_string())?;
+            let current = crate::instant::instant_entry(file.program.clone());
+            (with_values_of(c.entry, &current), file.run.clone(), None)
+        }
         None => {
             let file = ModelFile::load(&file_path).map_err(|e| e.to_string())?;
             eprint!("{}", file.warnings);
@@ -234,6 +239,26 @@ fn run_command(
         }
     }
     finish(&scene, &registry, args)
+}
+
+/// `compiled` with its parameter defaults and initial state taken from `current` (the same
+/// equations, by name): a model file's INPUT values as they are now.
+fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
+    let (info, now) = (compiled.info, current.info);
+    let params = (current.default_params)();
+    let initial = (current.initial_state)();
+    let param_values: Vec<f64> = info
+        .param_names
+        .iter()
+        .map(|n| now.param_names.iter().position(|m| m.eq_ignore_ascii_case(n)).map_or(f64::NAN, |i| params[i]))
+        .collect();
+    let state_values: Vec<f64> =
+        info.state_names.iter().map(|n| now.state(n).map_or(f64::NAN, |i| initial[i])).collect();
+    ModelEntry {
+        default_params: std::sync::Arc::new(move || param_values.clone()),
+        initial_state: std::sync::Arc::new(move || state_values.clone()),
+        ..compiled
+    }
 }
 
 /// `registry` with the model file `scene` names, if it names one, on the instant engine.

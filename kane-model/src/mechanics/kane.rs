@@ -219,7 +219,7 @@ impl Model {
     /// The collected canonical form of `e` where it is within [`COLLECT_TERMS_BUDGET`] terms,
     /// else `e` itself (never expanded past the budget).
     pub fn collected_form_within_budget(&mut self, e: ExprId) -> Result<ExprId> {
-        if self.ar.expanded_terms_bound(e) > COLLECT_TERMS_BUDGET {
+        if self.ar.expansion_bounds(&[e])[0] > COLLECT_TERMS_BUDGET as u64 {
             return Ok(e);
         }
         self.collected_form(e)

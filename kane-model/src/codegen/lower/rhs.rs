@@ -111,7 +111,7 @@ fn hoisted_roots(ar: &mut Arena, eqs: &KaneEquations, params: &[SymbolId]) -> Re
         let diag = ar.mul(&[mm[a][a], mm[c][c]])?;
         let off = ar.powi(mm[a][c], 2)?;
         let det = ar.sub(diag, off)?;
-        let det = if ar.expanded_terms_bound(det) <= crate::mechanics::COLLECT_TERMS_BUDGET {
+        let det = if ar.expansion_bounds(&[det])[0] <= crate::mechanics::COLLECT_TERMS_BUDGET as u64 {
             ar.collect_state(det, is_param)?
         } else {
             det
