@@ -1,36 +1,56 @@
 //! The models compiled into gyro-sim from their model files at build time
 //! (`kane_derive::model!`). A new model is one module here and one line in [`register`]. Each
-//! asks straight-line Taylor code for the orders the Taylor stepper takes
-//! (`kane_model::runtime::TAYLOR_UNROLLED_ORDERS`).
+//! asks for everything the simulator can run it with: Taylor coefficients (straight-line at the
+//! orders the Taylor stepper takes, `kane_model::runtime::TAYLOR_UNROLLED_ORDERS`) and lanes.
 
 use crate::registry::Registry;
 
 /// The 3-DOF gimballed gyroscope of the paper.
 pub mod gimbal_gyroscope {
-    kane_derive::model!("../kane-model/models/gimbal_gyroscope.al", taylor_orders = [8, 12, 14, 16, 20]);
+    kane_derive::model!(
+        "../kane-model/models/gimbal_gyroscope.al",
+        taylor,
+        lanes,
+        taylor_orders = [8, 12, 14, 16, 20]
+    );
 }
 
 /// The EJS heavy symmetric top.
 pub mod heavy_top {
-    kane_derive::model!("../kane-model/models/heavy_top.al", taylor_orders = [8, 12, 14, 16, 20]);
+    kane_derive::model!(
+        "../kane-model/models/heavy_top.al",
+        taylor,
+        lanes,
+        taylor_orders = [8, 12, 14, 16, 20]
+    );
 }
 
 /// A torque-free rigid body (EJS "Free Rotation", Feynman's plate): Euler parameters and body
 /// rates, principal moments I1, I2, I3.
 pub mod free_body {
-    kane_derive::model!("../kane-model/models/free_body.al", taylor_orders = [8, 12, 14, 16, 20]);
+    kane_derive::model!(
+        "../kane-model/models/free_body.al",
+        taylor,
+        lanes,
+        taylor_orders = [8, 12, 14, 16, 20]
+    );
 }
 
 /// The EJS heavy symmetric top in its non-spinning axle frame: the spin angle is cyclic, so the
 /// step follows the nutation (spin-aware).
 pub mod heavy_top_axle {
-    kane_derive::model!("../kane-model/models/heavy_top_axle.al", taylor_orders = [8, 12, 14, 16, 20]);
+    kane_derive::model!(
+        "../kane-model/models/heavy_top_axle.al",
+        taylor,
+        lanes,
+        taylor_orders = [8, 12, 14, 16, 20]
+    );
 }
 
 /// The same top built through kane-model's Rust API (`kane_model::models::HeavyTop`), with
 /// energy, angular-momentum and orientation outputs.
 pub mod heavy_top_rust {
-    kane_derive::builtin_model!("heavy_top_rust", taylor_orders = [8, 12, 14, 16, 20]);
+    kane_derive::builtin_model!("heavy_top_rust", taylor, lanes, taylor_orders = [8, 12, 14, 16, 20]);
 }
 
 /// `registry` with the compiled models added.

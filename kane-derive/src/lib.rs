@@ -1,6 +1,7 @@
-//! `model!("path/to/model.al")`: expands a model file into its generated module items;
-//! `model!("path/to/model.al", taylor_orders = [8, 12, 16])` adds straight-line Taylor code for
-//! those orders (for models integrated by the Taylor method).
+//! `model!("path/to/model.al")`: expands a model file into its generated module items (`rhs`,
+//! outputs, metadata); `model!("path/to/model.al", taylor, lanes, taylor_orders = [8, 12, 16])`
+//! adds Taylor coefficients (straight-line at those orders) and `rhs_lanes`, each only where a
+//! run needs it.
 //!
 //! A thin shell: it reads the file (relative to the calling crate's manifest), asks
 //! `kane_model` for the code, and turns any error into a compile error showing the model file's
@@ -19,7 +20,8 @@ use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
 use syn::{parse_macro_input, LitInt, LitStr, Token};
 
-/// A macro's input: the model (a path or a name) and, optionally, `taylor_orders = [..]`.
+/// A macro's input: the model (a path or a name) and what to generate beyond `rhs`:
+/// `taylor`, `lanes`, `taylor_orders = [..]`, comma-separated.
 struct MacroInput {
     model: LitStr,
     options: CodeOptions,
@@ -29,17 +31,26 @@ impl Parse for MacroInput {
     fn parse(input: ParseStream) -> syn::Result<Self> {
         let model: LitStr = input.parse()?;
         let mut options = CodeOptions::default();
-        if input.parse::<Option<Token![,]>>()?.is_some() && !input.is_empty() {
+        while input.parse::<Option<Token![,]>>()?.is_some() && !input.is_empty() {
             let key: syn::Ident = input.parse()?;
-            if key != "taylor_orders" {
-                return Err(syn::Error::new(key.span(), "expected `taylor_orders = [..]`"));
+            match key.to_string().as_str() {
+                "taylor" => options.taylor = true,
+                "lanes" => options.lanes = true,
+                "taylor_orders" => {
+                    input.parse::<Token![=]>()?;
+                    let list;
+                    syn::bracketed!(list in input);
+                    let orders = Punctuated::<LitInt, Token![,]>::parse_terminated(&list)?;
+                    options.taylor_orders =
+                        orders.iter().map(LitInt::base10_parse).collect::<syn::Result<_>>()?;
+                }
+                _ => {
+                    return Err(syn::Error::new(
+                        key.span(),
+                        "expected `taylor`, `lanes` or `taylor_orders = [..]`",
+                    ))
+                }
             }
-            input.parse::<Token![=]>()?;
-            let list;
-            syn::bracketed!(list in input);
-            let orders = Punctuated::<LitInt, Token![,]>::parse_terminated(&list)?;
-            options.taylor_orders = orders.iter().map(LitInt::base10_parse).collect::<syn::Result<_>>()?;
-            input.parse::<Option<Token![,]>>()?;
         }
         Ok(MacroInput { model, options })
     }
@@ -82,7 +93,7 @@ fn expand(lit: &LitStr, options: &CodeOptions) -> syn::Result<proc_macro2::Token
 
 #[cfg(test)]
 mod tests {
-    use super::{expand, MacroInput};
+    use super::{expand, CodeOptions, MacroInput};
     use proc_macro2::Span;
     use syn::LitStr;
 
@@ -116,10 +127,13 @@ mod tests {
 
     #[test]
     fn straight_line_taylor_orders_are_asked_by_name() {
-        let input: MacroInput = syn::parse_str(r#""m.al", taylor_orders = [8, 16]"#).unwrap();
+        let input: MacroInput = syn::parse_str(r#""m.al", taylor_orders = [8, 16], lanes"#).unwrap();
         assert_eq!(input.options.taylor_orders, vec![8, 16]);
+        assert!(input.options.lanes && !input.options.taylor);
         let input: MacroInput = syn::parse_str(r#""m.al""#).unwrap();
-        assert!(input.options.taylor_orders.is_empty());
+        assert_eq!(input.options, CodeOptions::default());
+        let input: MacroInput = syn::parse_str(r#""m.al", taylor,"#).unwrap();
+        assert!(input.options.taylor);
         assert!(syn::parse_str::<MacroInput>(r#""m.al", orders = [8]"#).is_err());
     }
 
@@ -127,9 +141,13 @@ mod tests {
     fn straight_line_code_is_written_only_when_asked() {
         let gimbal = LitStr::new("../kane-model/models/gimbal_gyroscope.al", Span::call_site());
         let plain = expand(&gimbal, &Default::default()).unwrap().to_string();
-        assert!(plain.contains("taylor_derived_loop") && !plain.contains("taylor_order_"));
-        let options = kane_model::codegen::CodeOptions { taylor_orders: vec![12] };
+        assert!(!plain.contains("taylor_derived") && !plain.contains("rhs_lanes"));
+        let options = CodeOptions { taylor: true, ..Default::default() };
+        let looped = expand(&gimbal, &options).unwrap().to_string();
+        assert!(looped.contains("taylor_derived_loop") && !looped.contains("taylor_order_"));
+        let options = CodeOptions { taylor_orders: vec![12], lanes: true, ..Default::default() };
         let asked = expand(&gimbal, &options).unwrap().to_string();
         assert!(asked.contains("taylor_order_12") && !asked.contains("taylor_order_16"));
+        assert!(asked.contains("LaneModel for Model"));
     }
 }

@@ -93,11 +93,8 @@ pub trait GeneratedModel {
     /// Output `k` at `(t, y)` into `out` (its columns); `rates` are `u'` when the output needs
     /// them (see [`OutputInfo::needs_rates`]), else ignored.
     fn output(k: usize, t: f64, y: &[f64], rates: &[f64], p: &Self::Params, out: &mut [f64]);
-    /// `dy = f(t, y)` in any number type, the parameters `p` (in `INFO.param_names` order) and
-    /// the derived quantities `d` ([`GeneratedModel::derived_values`]) in it too: with a lane
-    /// type, several members (parameter sets) in one evaluation.
-    fn rhs_lanes<T: num_traits::Float>(t: T, y: &[T], p: &[T], d: &[T], dy: &mut [T]);
-    /// The derived quantities as numbers, in the order `rhs_lanes` reads them.
+    /// The derived quantities as numbers, in the order `derive` computes them (and
+    /// [`LaneModel::rhs_lanes`] reads them).
     fn derived_values(d: &Self::Derived) -> &[f64];
     /// Output `k` at `(t, y)` into `out` and its time derivative along `y' = dy` into `rate`
     /// (dual numbers through the output's code); meaningful only for an output that reads no
@@ -128,6 +125,14 @@ pub trait GeneratedModel {
     ) -> bool {
         false
     }
+}
+
+/// A generated model with `rhs_lanes` (generated where asked: for batches of members).
+pub trait LaneModel: GeneratedModel {
+    /// `dy = f(t, y)` in any number type, the parameters `p` (in `INFO.param_names` order) and
+    /// the derived quantities `d` ([`GeneratedModel::derived_values`]) in it too: with a lane
+    /// type, several members (parameter sets) in one evaluation.
+    fn rhs_lanes<T: num_traits::Float>(t: T, y: &[T], p: &[T], d: &[T], dy: &mut [T]);
 }
 
 /// A unit quaternion (scalar first, non-negative) from direction cosines `r` (row by row, an

@@ -7,7 +7,7 @@
 mod lanes;
 mod stepper;
 
-use kane_model::runtime::GeneratedModel;
+use kane_model::runtime::{GeneratedModel, LaneModel};
 
 pub use lanes::Lanes;
 pub use stepper::{integrate_lanes, LaneSystem};
@@ -16,13 +16,13 @@ use crate::ode::tableau::Tableau;
 use crate::ode::{OdeError, Stats, Tolerances};
 
 /// A generated model with `N` parameter sets, one per lane.
-pub struct ModelLanes<M: GeneratedModel, const N: usize> {
+pub struct ModelLanes<M: LaneModel, const N: usize> {
     params: Vec<Lanes<N>>,
     derived: Vec<Lanes<N>>,
     _model: std::marker::PhantomData<M>,
 }
 
-impl<M: GeneratedModel, const N: usize> ModelLanes<M, N> {
+impl<M: LaneModel, const N: usize> ModelLanes<M, N> {
     /// The lanes of `members` (exactly `N` parameter sets).
     pub fn new(members: &[M::Params; N]) -> Self {
         let names = M::INFO.param_names;
@@ -38,7 +38,7 @@ impl<M: GeneratedModel, const N: usize> ModelLanes<M, N> {
     }
 }
 
-impl<M: GeneratedModel, const N: usize> LaneSystem<N> for ModelLanes<M, N> {
+impl<M: LaneModel, const N: usize> LaneSystem<N> for ModelLanes<M, N> {
     fn dim(&self) -> usize {
         M::INFO.state_names.len()
     }
@@ -50,7 +50,7 @@ impl<M: GeneratedModel, const N: usize> LaneSystem<N> for ModelLanes<M, N> {
 
 /// Each member's state at `t_end` from `(0, initial)`, `N` members at a time in lock step (the
 /// last group padded with copies of its last member); the summed cost.
-pub fn final_states<M: GeneratedModel, const N: usize>(
+pub fn final_states<M: LaneModel, const N: usize>(
     members: &[(M::Params, Vec<f64>)],
     t_end: f64,
     tab: &Tableau,

@@ -235,7 +235,7 @@ fn run_command(
         let problem = crate::resolve::resolve(&scene, &registry).map_err(|e| e.to_string())?;
         plausible(file, &problem)?;
         if args.engine == EngineChoice::Compiled {
-            return run_compiled(file);
+            return run_compiled(file, scene.integrator.method == crate::ode::TAYLOR);
         }
     }
     finish(&scene, &registry, args)
@@ -250,7 +250,9 @@ fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
     let param_values: Vec<f64> = info
         .param_names
         .iter()
-        .map(|n| now.param_names.iter().position(|m| m.eq_ignore_ascii_case(n)).map_or(f64::NAN, |i| params[i]))
+        .map(|n| {
+            now.param_names.iter().position(|m| m.eq_ignore_ascii_case(n)).map_or(f64::NAN, |i| params[i])
+        })
         .collect();
     let state_values: Vec<f64> =
         info.state_names.iter().map(|n| now.state(n).map_or(f64::NAN, |i| initial[i])).collect();
@@ -288,9 +290,10 @@ fn model_scene(path: &Path, run: &FileRun, entry: &ModelEntry, args: &RunArgs) -
     Ok(scene)
 }
 
-/// Builds (or finds) the compiled binary and runs it with the same arguments.
-fn run_compiled(file: &ModelFile) -> Result<ExitCode, String> {
-    let (binary, built) = crate::compiled::ensure_binary(file).map_err(|e| e.to_string())?;
+/// Builds (or finds) the compiled binary (with Taylor coefficients when `taylor`) and runs it
+/// with the same arguments.
+fn run_compiled(file: &ModelFile, taylor: bool) -> Result<ExitCode, String> {
+    let (binary, built) = crate::compiled::ensure_binary(file, taylor).map_err(|e| e.to_string())?;
     if built {
         eprintln!("compiled: {}", binary.display());
     }

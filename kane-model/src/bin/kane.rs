@@ -5,6 +5,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
+use kane_model::codegen::CodeOptions;
 use kane_model::expr::{ExprId, SymbolId, Tape};
 use kane_model::lang::{self, LoadedModel};
 use kane_model::mechanics::KaneEquations;
@@ -56,10 +57,16 @@ enum Command {
         /// Print the operation counts of rhs and outputs.
         #[arg(long)]
         stats: bool,
-        /// Orders whose Taylor coefficients are written out straight-line, for the Taylor
-        /// method (e.g. 8,12,16; none by default: every order takes the loop).
+        /// Taylor coefficients too, for the Taylor method (a loop over the order).
+        #[arg(long)]
+        taylor: bool,
+        /// Orders whose Taylor coefficients are also written out straight-line (e.g. 8,12,16;
+        /// implies --taylor).
         #[arg(long, value_delimiter = ',')]
         taylor_orders: Vec<usize>,
+        /// `rhs_lanes` too, for batches of members integrated in lock step.
+        #[arg(long)]
+        lanes: bool,
     },
     /// Check hand-derived equations (U1' = ... or ZERO[1] = ...) and quantities (V_P_A> = ...)
     /// against the derived ones, and say how they differ.
@@ -131,7 +138,9 @@ fn run(command: Command) -> Result<(), String> {
         Command::Check { file } => check(file),
         Command::Eoms { file, format } => eoms(file, format),
         Command::Eval { file, set, json } => eval(file, set, json),
-        Command::Gen { file, out, stats, taylor_orders } => gen(file, out, stats, taylor_orders),
+        Command::Gen { file, out, stats, taylor, taylor_orders, lanes } => {
+            gen(file, out, stats, CodeOptions { taylor, taylor_orders, lanes })
+        }
         Command::Compare { file, hand } => compare(file, hand),
         Command::Show { file, name, frame } => show(file, name, frame),
     }
@@ -261,9 +270,8 @@ fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
 
 /// `kane gen`: the generated Rust module, its report and generation time in its header,
 /// written atomically.
-fn gen(file: PathBuf, out: Option<PathBuf>, stats: bool, taylor_orders: Vec<usize>) -> Result<(), String> {
+fn gen(file: PathBuf, out: Option<PathBuf>, stats: bool, options: CodeOptions) -> Result<(), String> {
     let started = std::time::Instant::now();
-    let options = kane_model::codegen::CodeOptions { taylor_orders };
     let emitted = kane_model::build::generate_file(&file, &read(&file)?, &options).map_err(|e| match e {
         kane_model::build::BuildError::Model(report) => report.render(),
         other => other.to_string(),

@@ -14,7 +14,10 @@ use super::vector::{Dyadic, Vector};
 
 /// Most terms an equation's collected canonical form may have: a larger one is not formed (the
 /// expression is kept as derived, its shared subexpressions named, never multiplied out).
-pub const COLLECT_TERMS_BUDGET: usize = 4_000;
+pub const COLLECT_TERMS_BUDGET: usize = 1_000;
+
+/// Most terms the collected forms of all of a model's equations may have together.
+pub const COLLECT_TERMS_TOTAL: u64 = 20_000;
 
 /// Kane's equations of a model: `q' = kinematics`, `mass_matrix * u' = forcing`.
 #[derive(Clone, Debug)]
@@ -202,16 +205,39 @@ impl Model {
         terms.into_iter().map(|t| Ok(self.ar.add(&t)?)).collect()
     }
 
-    /// Replaces each entry of `M` and `f` by its trigonometric canonical form in the state, terms
-    /// collected by state monomial, where that takes fewer operations to evaluate.
+    /// Replaces entries of `M` and `f` by their trigonometric canonical form in the state, terms
+    /// collected by state monomial, where that takes fewer operations to evaluate: the
+    /// smallest entries first, while their canonical forms stay within [`COLLECT_TERMS_TOTAL`]
+    /// terms together (collecting costs time and, in large models, saves no operations).
     pub fn simplify_equations(&mut self, eqs: &mut KaneEquations) -> Result<()> {
-        for row in eqs.mass_matrix.iter_mut() {
-            for x in row.iter_mut() {
-                *x = self.smaller_form(*x)?;
+        let n = eqs.forcing.len();
+        let mut slots: Vec<(usize, usize)> = (0..n).flat_map(|i| (i..n).map(move |j| (i, j))).collect();
+        slots.extend((0..n).map(|i| (n, i)));
+        let entry = |eqs: &KaneEquations, (i, j): (usize, usize)| {
+            if i == n {
+                eqs.forcing[j]
+            } else {
+                eqs.mass_matrix[i][j]
             }
-        }
-        for f in eqs.forcing.iter_mut() {
-            *f = self.smaller_form(*f)?;
+        };
+        let roots: Vec<ExprId> = slots.iter().map(|s| entry(eqs, *s)).collect();
+        let bounds = self.ar.expansion_bounds(&roots);
+        let mut order: Vec<usize> = (0..slots.len()).collect();
+        order.sort_by_key(|k| bounds[*k]);
+        let mut total = 0u64;
+        for k in order {
+            total = total.saturating_add(bounds[k]);
+            if bounds[k] > COLLECT_TERMS_BUDGET as u64 || total > COLLECT_TERMS_TOTAL {
+                break;
+            }
+            let (i, j) = slots[k];
+            let x = self.smaller_form(roots[k])?;
+            if i == n {
+                eqs.forcing[j] = x;
+            } else {
+                eqs.mass_matrix[i][j] = x;
+                eqs.mass_matrix[j][i] = x;
+            }
         }
         Ok(())
     }

@@ -1,6 +1,7 @@
 //! The model module printed: in come a spec and its lowered program; out go the items of a Rust
-//! module (`Params`, `derive`, `rhs_derived`, `rhs`, `output`, `jacobian`, `taylor_derived`,
-//! `INFO` and a `Model` implementing [`crate::runtime::GeneratedModel`]).
+//! module (`Params`, `derive`, `rhs_derived`, `rhs`, `output`, `jacobian`, `INFO` and a `Model`
+//! implementing [`crate::runtime::GeneratedModel`]; `taylor_derived` and `rhs_lanes` with
+//! [`crate::runtime::LaneModel`] where asked).
 
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
@@ -14,9 +15,19 @@ use super::super::taylor::TaylorProgram;
 use super::metadata;
 use super::section::{self, Scalar, SectionStyle};
 
-/// The module's items, with straight-line Taylor code for `taylor_orders` (see
-/// [`super::super::taylor::TaylorProgram::straight_line_orders`]).
-pub fn module(spec: &ModelSpec, lowered: &Lowered, taylor_orders: &[usize]) -> TokenStream {
+/// What the module holds beyond `rhs` and the outputs.
+pub struct Extras<'a> {
+    /// Taylor coefficients (`taylor_derived` and its loop).
+    pub taylor: bool,
+    /// Orders with straight-line Taylor code (see
+    /// [`super::super::taylor::TaylorProgram::straight_line_orders`]).
+    pub taylor_orders: &'a [usize],
+    /// `rhs_lanes` and the `LaneModel` implementation.
+    pub lanes: bool,
+}
+
+/// The module's items.
+pub fn module(spec: &ModelSpec, lowered: &Lowered, extras: &Extras) -> TokenStream {
     let program = &lowered.program;
     let param_idents: Vec<Ident> =
         lowered.params.iter().map(|s| rust_ident(&spec.model.ar.symbol_info(*s).name)).collect();
@@ -29,13 +40,14 @@ pub fn module(spec: &ModelSpec, lowered: &Lowered, taylor_orders: &[usize]) -> T
     let params_items = params_items(spec, lowered, &param_idents);
     let quaternion: Vec<bool> = spec.outputs.iter().map(|o| is_quaternion(&o.kind)).collect();
     let compute = functions(program, &param_idents, &quaternion);
+    let lanes = extras.lanes.then(|| rhs_lanes_fn(program));
     // A right-hand side whose every operation has a recurrence (all do) gets Taylor coefficients.
-    let taylor = TaylorProgram::new(&program.rhs, ns).ok();
-    let taylor_fn = taylor
-        .as_ref()
-        .map(|t| super::taylor::taylor_fn(t, &input_tokens(&param_idents, true), taylor_orders));
+    let taylor = if extras.taylor { TaylorProgram::new(&program.rhs, ns).ok() } else { None };
+    let orders = if taylor.is_some() { extras.taylor_orders } else { &[] };
+    let taylor_fn =
+        taylor.as_ref().map(|t| super::taylor::taylor_fn(t, &input_tokens(&param_idents, true), orders));
     let mut meta = super::super::meta::Meta::of(spec, lowered);
-    meta.taylor_straight_line = taylor_orders.to_vec();
+    meta.taylor_straight_line = orders.to_vec();
     let info = metadata::info(&meta);
     let model_impl = model_impl(spec, lowered, &param_idents, taylor.is_some());
     quote! {
@@ -57,6 +69,7 @@ pub fn module(spec: &ModelSpec, lowered: &Lowered, taylor_orders: &[usize]) -> T
             pub v: [f64; #n_derived],
         }
         #compute
+        #lanes
         #taylor_fn
         /// The model's metadata: names, units, outputs.
         pub const INFO: ::kane_model::runtime::ModelInfo = #info;
@@ -134,6 +147,13 @@ fn rhs_lanes_fn(program: &Program) -> TokenStream {
             #body
             #( dy[#idx] = #values; )*
         }
+
+        impl ::kane_model::runtime::LaneModel for Model {
+            #[inline]
+            fn rhs_lanes<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &[T], d: &[T], dy: &mut [T]) {
+                rhs_lanes(t, y, p, d, dy)
+            }
+        }
     }
 }
 
@@ -147,7 +167,6 @@ fn functions(program: &Program, params: &[Ident], quaternion: &[bool]) -> TokenS
     let (rhs_body, rhs_values) = section::print(&program.rhs, &generic);
     let rhs_idx: Vec<usize> = (0..rhs_values.len()).collect();
     let outputs = super::outputs::output_fns(program, quaternion, &generic);
-    let rhs_lanes = rhs_lanes_fn(program);
     let ns = rhs_values.len();
     quote! {
         /// The parameter-only subexpressions of `rhs`.
@@ -169,8 +188,6 @@ fn functions(program: &Program, params: &[Ident], quaternion: &[bool]) -> TokenS
         pub fn rhs<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, dy: &mut [T]) {
             rhs_derived(t, y, p, &derive(p), dy)
         }
-
-        #rhs_lanes
 
         #outputs
 
@@ -246,10 +263,6 @@ fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident], taylor: boo
             }
             fn output(k: usize, t: f64, y: &[f64], rates: &[f64], p: &Params, out: &mut [f64]) {
                 output(k, t, y, rates, p, out)
-            }
-            #[inline]
-            fn rhs_lanes<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &[T], d: &[T], dy: &mut [T]) {
-                rhs_lanes(t, y, p, d, dy)
             }
             fn derived_values(d: &Derived) -> &[f64] {
                 &d.v

@@ -23,7 +23,7 @@ pub const COLLECT_BUDGET: u64 = 2_000;
 
 /// Most terms the expansions of all the collected quantities of a model may build together
 /// (bounds the time collecting takes); the smallest quantities are collected first.
-pub const COLLECT_TOTAL: u64 = 100_000;
+pub const COLLECT_TOTAL: u64 = 10_000;
 
 /// How one quantity is printed.
 #[derive(Clone, Debug, PartialEq)]
@@ -172,13 +172,14 @@ mod tests {
 
     #[test]
     fn what_would_swell_is_printed_in_intermediates() {
-        let mut m = crate::lang::load("chain6.al", &chain(6)).unwrap();
+        // Relative angles compose into angle sums, so a chain swells only from a dozen links.
+        let mut m = crate::lang::load("chain16.al", &chain(16)).unwrap();
         let p = printed_eoms(&mut m).unwrap().unwrap();
         assert!(matches!(p.kinematics[0], Shown::Collected(_)), "a short quantity stays collected");
         assert!(matches!(p.equations[0], Shown::Named(_)));
         let text = p.to_text(&m.model.ar);
         assert!(text.starts_with("% Intermediates") && text.contains("\nz1 = "), "{text}");
-        assert!(text.len() < 60_000, "{}", text.len());
+        assert!(text.len() < 1_500_000, "{}", text.len());
         let latex = p.to_latex(&mut m.model.ar);
         assert!(latex.contains("\nz_{1} &= "), "{latex}");
     }
