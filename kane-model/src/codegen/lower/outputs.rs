@@ -41,7 +41,8 @@ pub fn lower(spec: &mut ModelSpec, params: &[SymbolId]) -> Result<Vec<OutputCode
 /// The states `components` depend on, read from their collected form, where coordinates that
 /// cancel (|a_P| does not depend on the gimbal's q1) are gone; the code evaluates the original
 /// form, which is better conditioned (the expanded one cancels large terms when the gimbals
-/// spin fast).
+/// spin fast). A component too large to collect (a long chain's kinetic energy) reads the
+/// states of its original form.
 fn reads(
     spec: &mut ModelSpec,
     components: &[ExprId],
@@ -49,7 +50,10 @@ fn reads(
 ) -> Result<Vec<usize>, CodegenError> {
     let mut read = vec![false; states.len()];
     for &e in components {
-        let c = spec.model.collected_form(e)?;
+        let c = match spec.model.collected_form(e) {
+            Err(crate::mechanics::MechanicsError::Expr(crate::expr::ExprError::TooLarge(_))) => e,
+            c => c?,
+        };
         let ar = &spec.model.ar;
         let form = if ar.free_symbols(&[c]).len() < ar.free_symbols(&[e]).len() { c } else { e };
         let free = ar.free_symbols(&[form]);
