@@ -25,6 +25,8 @@ pub struct Lowered {
     pub params: Vec<SymbolId>,
     /// The states, coordinates then speeds.
     pub states: Vec<SymbolId>,
+    /// True when `rhs` is the order-n form (explicit `u'`), false for the mass-matrix form.
+    pub order_n: bool,
 }
 
 /// Lowers `spec`: the mass-matrix form (the equations simplified, collected by state monomial,
@@ -53,7 +55,7 @@ fn mass_matrix(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
     let nq = eqs.coordinates.len();
     let cyclic = (0..nq).filter(|i| !rhs_free.contains(&states[*i])).collect();
     let program = Program { derive, rhs, outputs, cyclic, n_coordinates: nq };
-    Ok(Lowered { program, params, states })
+    Ok(Lowered { program, params, states, order_n: false })
 }
 
 /// The order-n form of `spec` lowered, when the model is a tree it fits.
@@ -77,7 +79,7 @@ fn order_n(spec: &mut ModelSpec) -> Result<Option<Lowered>, CodegenError> {
     let nq = kinematics.len();
     let cyclic = (0..nq).filter(|i| !rhs_free.contains(&states[*i])).collect();
     let program = Program { derive, rhs, outputs, cyclic, n_coordinates: nq };
-    Ok(Some(Lowered { program, params, states }))
+    Ok(Some(Lowered { program, params, states, order_n: true }))
 }
 
 /// The constants `roots` read, in order of first appearance; an error for a time-dependent

@@ -98,16 +98,8 @@ fn order(
     model: &Model,
     found: Vec<(FrameId, FrameId, usize, i8, usize)>,
 ) -> Option<(Vec<Link>, FxHashMap<FrameId, usize>)> {
-    let depth = |mut f: FrameId| {
-        let mut d = 0;
-        while let Some(p) = model.frames[f.index()].parent {
-            d += 1;
-            f = p;
-        }
-        d
-    };
     let mut sorted = found;
-    sorted.sort_by_key(|l| (depth(l.0), l.0));
+    sorted.sort_by_key(|l| (depth(model, l.0), l.0));
     let mut of_frame = FxHashMap::default();
     let mut links = Vec::with_capacity(sorted.len());
     let z = model.ar.zero();
@@ -117,6 +109,16 @@ fn order(
         links.push(Link { frame, parent, axis, sign, speed, offset: [z; 3] });
     }
     Some((links, of_frame))
+}
+
+/// The number of frames above `f` in the orientation tree.
+fn depth(model: &Model, mut f: FrameId) -> usize {
+    let mut d = 0;
+    while let Some(p) = model.frames[f.index()].parent {
+        d += 1;
+        f = p;
+    }
+    d
 }
 
 /// True when `e` reads constants only.
@@ -181,32 +183,32 @@ struct Step<'a> {
 }
 
 impl Step<'_> {
-    /// Where the point at `r` from `a` (placed at `place`) is; `None` when it fits no link.
+    /// Where the point at `r` from `a` (placed at `place`) is: `r` must have parameter-only
+    /// measure numbers in the deepest frame among its terms' and `a`'s; `None` when it fits no
+    /// link.
     fn through(self, a: PointId, place: Attach, r: &Vector) -> Result<Option<Attach>> {
         let model = self.model;
-        let mut frame: Option<(FrameId, V3)> = None;
-        for (f, m) in &r.terms {
-            if m.iter().all(|x| model.ar.is_zero(*x)) {
-                continue;
-            }
-            if !m.iter().all(|x| parameter_only(model, *x)) || frame.is_some_and(|g| g.0 != *f) {
-                return Ok(None);
-            }
-            frame = Some((*f, *m));
-        }
-        let link_of = |f: FrameId| self.of_frame.get(&f).copied();
         let here = match place {
             Attach::Base => None,
             Attach::Link(k, _) => Some(k),
         };
-        let Some((f, m)) = frame else { return Ok(Some(place)) };
-        if f == model.newtonian && here.is_none() {
+        let mut frames: Vec<FrameId> = r.terms.iter().map(|t| t.0).collect();
+        frames.extend(here.map(|k| self.links[k].frame));
+        let Some(target) = frames.into_iter().max_by_key(|f| (depth(model, *f), *f)) else {
+            return Ok(Some(place));
+        };
+        let m = model.express(r, target)?;
+        if !m.iter().all(|x| parameter_only(model, *x)) {
+            return Ok(None);
+        }
+        if target == model.newtonian {
             return Ok(Some(Attach::Base));
         }
-        let Some(k) = link_of(f) else { return Ok(None) };
-        if here == Some(k) {
-            let Attach::Link(_, o) = place else { return Ok(None) };
-            return Ok(Some(Attach::Link(k, add(&mut model.ar, &o, &m)?)));
+        let Some(&k) = self.of_frame.get(&target) else { return Ok(None) };
+        if let Attach::Link(h, o) = place {
+            if h == k {
+                return Ok(Some(Attach::Link(k, add(&mut model.ar, &o, &m)?)));
+            }
         }
         if self.links[k].parent != here {
             return Ok(None);
