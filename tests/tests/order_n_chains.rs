@@ -3,6 +3,7 @@
 //! particles, gravity and applied loads), it is the form generated for longer chains, and its
 //! operation count grows linearly with the number of links.
 
+use kane_model::codegen::taylor::TaylorProgram;
 use kane_model::codegen::{ir::Input, lower, Lowered};
 use kane_model::spec::ModelSpec;
 use kane_tests::{interpreted_rhs, normwise};
@@ -149,6 +150,10 @@ fn check(c: Chain) {
     if c.links >= 5 {
         assert!(lowered.order_n, "{} links: the order-n form is generated", c.links);
     }
+    // Every operation of the order-n form (quotients and integer powers too) has a Taylor
+    // recurrence.
+    let states = 2 * c.links;
+    assert!(TaylorProgram::new(&lowered.program.rhs, states).is_ok());
 }
 
 #[test]

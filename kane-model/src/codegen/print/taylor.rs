@@ -13,12 +13,18 @@ use super::super::taylor::{TKind, TaylorProgram, UNROLLED_ORDERS};
 use super::section::{constant, Scalar};
 use super::unrolled::{order_fn, order_fn_name};
 
+/// The largest Taylor program written out straight-line.
+const UNROLLED_MAX_OPS: usize = 2000;
+
 /// `taylor_derived` (the dispatch by order), the straight-line functions it calls and
 /// `taylor_derived_loop`: the normalised Taylor coefficients of the solution through `(t, y)`.
 pub fn taylor_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream) -> TokenStream {
     let looped = loop_fn(program, input);
-    let orders = UNROLLED_ORDERS.iter().map(|&o| order_fn(program, input, o));
-    let arms = UNROLLED_ORDERS.iter().map(|&o| {
+    // Straight-line code grows as operations times order squared: a large right-hand side (a
+    // long chain's order-n form) keeps the loop alone.
+    let unrolled: &[usize] = if program.ops.len() <= UNROLLED_MAX_OPS { UNROLLED_ORDERS } else { &[] };
+    let orders = unrolled.iter().map(|&o| order_fn(program, input, o));
+    let arms = unrolled.iter().map(|&o| {
         let (name, o) = (order_fn_name(o), Literal::usize_unsuffixed(o));
         // SAFETY: the CPU has fused multiply-add, which is all the function assumes.
         quote!(#o if __t::fused_multiply_add() => unsafe { #name(t, y, p, __derived, out) },)
