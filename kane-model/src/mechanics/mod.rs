@@ -21,6 +21,7 @@ mod linearize;
 mod loads;
 mod masses;
 mod model;
+mod order_n;
 mod outputs;
 mod point;
 mod table;

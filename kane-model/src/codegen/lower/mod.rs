@@ -1,6 +1,8 @@
 //! Lowering: in comes a [`ModelSpec`]; out goes a [`Program`] (straight-line sections for
 //! `derive`, `rhs` and each output) with the parameters it reads. Nothing here knows Rust.
 
+mod choose;
+mod explicit;
 pub(crate) mod exprs;
 mod hoist;
 mod ldlt;
@@ -23,11 +25,19 @@ pub struct Lowered {
     pub params: Vec<SymbolId>,
     /// The states, coordinates then speeds.
     pub states: Vec<SymbolId>,
+    /// True when `rhs` is the order-n form (explicit `u'`), false for the mass-matrix form.
+    pub order_n: bool,
 }
 
-/// Lowers `spec`: the equations simplified (collected by state monomial), parameter-only parts
-/// hoisted into `derive`, the solve of `M u' = f` and every output lowered.
+/// Lowers `spec`: the mass-matrix form (the equations simplified, collected by state monomial,
+/// parameter-only parts hoisted into `derive`, the solve of `M u' = f` and every output lowered)
+/// or, for a tree of simple rotations where it takes fewer operations, the order-n form.
 pub fn lower(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
+    choose::lower(spec)
+}
+
+/// The mass-matrix form of `spec` lowered.
+fn mass_matrix(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
     let mut eqs = spec.equations.clone();
     // Generated code runs many times: the collected form is worth its derivation cost.
     spec.model.simplify_equations(&mut eqs)?;
@@ -45,7 +55,31 @@ pub fn lower(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
     let nq = eqs.coordinates.len();
     let cyclic = (0..nq).filter(|i| !rhs_free.contains(&states[*i])).collect();
     let program = Program { derive, rhs, outputs, cyclic, n_coordinates: nq };
-    Ok(Lowered { program, params, states })
+    Ok(Lowered { program, params, states, order_n: false })
+}
+
+/// The order-n form of `spec` lowered, when the model is a tree it fits.
+fn order_n(spec: &mut ModelSpec) -> Result<Option<Lowered>, CodegenError> {
+    let Some(rates) = spec.model.order_n_rates(&spec.equations)? else { return Ok(None) };
+    let eqs = &spec.equations;
+    let (kinematics, speeds, rate_symbols) =
+        (eqs.kinematics.clone(), eqs.speeds.clone(), eqs.speed_derivatives.clone());
+    let states = spec.states();
+    let mut all: Vec<ExprId> = rates.clone();
+    all.extend(&kinematics);
+    let rhs_free = spec.model.ar.free_symbols(&all);
+    for o in &spec.outputs {
+        all.extend(&o.components);
+    }
+    let params = parameters(spec, &all, &states, &rate_symbols)?;
+    let form =
+        explicit::Explicit { states: &states, speeds: &speeds, kinematics: &kinematics, rates: &rates };
+    let (derive, rhs) = explicit::lower(&mut spec.model.ar, &form, &params)?;
+    let outputs = outputs::lower(spec, &params)?;
+    let nq = kinematics.len();
+    let cyclic = (0..nq).filter(|i| !rhs_free.contains(&states[*i])).collect();
+    let program = Program { derive, rhs, outputs, cyclic, n_coordinates: nq };
+    Ok(Some(Lowered { program, params, states, order_n: true }))
 }
 
 /// The constants `roots` read, in order of first appearance; an error for a time-dependent
