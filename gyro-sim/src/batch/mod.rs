@@ -7,7 +7,7 @@
 mod lanes;
 mod stepper;
 
-use kane_model::runtime::{GeneratedModel, LaneModel};
+use kane_model::runtime::LaneModel;
 
 pub use lanes::Lanes;
 pub use stepper::{integrate_lanes, LaneSystem};
