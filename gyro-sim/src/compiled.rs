@@ -138,11 +138,12 @@ pub fn ensure_binary(file: &ModelFile, taylor: bool) -> Result<(PathBuf, bool), 
     if !sources.join("gyro-sim").join("Cargo.toml").is_file() {
         return Err(CompileError::NoSources(sources.display().to_string()));
     }
-    let dir = cache_dir().join("models").join(&crate_name);
-    write_crate(&dir, &crate_name, file, &sources, taylor)?;
+    // One package for every model file (a binary each), so its dependencies build once.
+    let dir = cache_dir().join("models").join(format!("gyro-models-{}", tool_id()));
+    write_model(&dir, &crate_name, file, &sources, taylor)?;
     eprintln!("compiling the model {} (once per version of the file) with cargo:", file.path.display());
     let status = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
-        .args(["build", "--profile", &profile, "--offline", "--manifest-path"])
+        .args(["build", "--profile", &profile, "--offline", "--bin", &crate_name, "--manifest-path"])
         .arg(dir.join("Cargo.toml"))
         .arg("--target-dir")
         .arg(&target)
@@ -154,36 +155,42 @@ pub fn ensure_binary(file: &ModelFile, taylor: bool) -> Result<(PathBuf, bool), 
     Ok((binary, true))
 }
 
-/// Writes the crate: the model file, a manifest against the workspace's crates (its lock file
-/// copied, so the build resolves offline to the same versions) and a `main` registering the
-/// model under its content key.
-fn write_crate(
+/// Writes one model into the models package at `dir`: the package's manifest against the
+/// workspace's crates (its lock file copied, so the build resolves offline to the same
+/// versions) when it has none, the model file under `models/NAME/` and a binary `src/bin/NAME.rs`
+/// registering the model under its key.
+fn write_model(
     dir: &Path,
-    crate_name: &str,
+    bin_name: &str,
     file: &ModelFile,
     sources: &Path,
     taylor: bool,
 ) -> Result<(), CompileError> {
     let io = |e: std::io::Error| CompileError::Io { path: dir.display().to_string(), reason: e.to_string() };
-    std::fs::create_dir_all(dir.join("src")).map_err(io)?;
-    let model_file = format!("{}.al", file.name);
+    std::fs::create_dir_all(dir.join("src").join("bin")).map_err(io)?;
+    // The file keeps its name (the model is named after it), in a folder of this binary's.
+    std::fs::create_dir_all(dir.join("models").join(bin_name)).map_err(io)?;
+    let model_file = format!("models/{bin_name}/{}.al", file.name);
     std::fs::write(dir.join(&model_file), &file.source).map_err(io)?;
     let path = |c: &str| format!("{:?}", sources.join(c).display().to_string());
     let manifest = format!(
-        "[package]\nname = \"{crate_name}\"\nversion = \"0.0.0\"\nedition = \"2021\"\npublish = false\n\n[dependencies]\ngyro-sim = {{ path = {} }}\nkane-derive = {{ path = {} }}\nkane-model = {{ path = {} }}\n\n[profile.release]\ndebug = false\n\n[workspace]\n",
+        "[package]\nname = \"gyro-models\"\nversion = \"0.0.0\"\nedition = \"2021\"\npublish = false\nautobins = true\n\n[dependencies]\ngyro-sim = {{ path = {} }}\nkane-derive = {{ path = {} }}\nkane-model = {{ path = {} }}\n\n[profile.release]\ndebug = false\n\n[workspace]\n",
         path("gyro-sim"),
         path("kane-derive"),
         path("kane-model"),
     );
-    std::fs::write(dir.join("Cargo.toml"), manifest).map_err(io)?;
-    if let Ok(lock) = std::fs::read_to_string(sources.join("Cargo.lock")) {
-        std::fs::write(dir.join("Cargo.lock"), lock).map_err(io)?;
+    if std::fs::read_to_string(dir.join("Cargo.toml")).ok().as_deref() != Some(manifest.as_str()) {
+        std::fs::write(dir.join("Cargo.toml"), manifest).map_err(io)?;
+        if let Ok(lock) = std::fs::read_to_string(sources.join("Cargo.lock")) {
+            std::fs::write(dir.join("Cargo.lock"), lock).map_err(io)?;
+        }
     }
-    std::fs::write(dir.join("src").join("main.rs"), main_source(file, &model_file, taylor)).map_err(io)?;
+    let main = main_source(file, &model_file, taylor);
+    std::fs::write(dir.join("src").join("bin").join(format!("{bin_name}.rs")), main).map_err(io)?;
     Ok(())
 }
 
-/// The generated crate's `main.rs`.
+/// A model's binary in the models package (`model_file` relative to the package).
 fn main_source(file: &ModelFile, model_file: &str, taylor: bool) -> String {
     let FileRun { t_final, step, abserr, relerr, outputs } = &file.run;
     let extras = if taylor { ", taylor" } else { "" };
@@ -203,7 +210,7 @@ fn main() -> std::process::ExitCode {{
         outputs: vec![{outputs}],
     }};
     let entry = gyro_sim::registry::ModelEntry::of::<model::Model>();
-    let key = gyro_sim::compiled::registry_key(include_str!(concat!("../", {model_file:?})));
+    let key = gyro_sim::compiled::registry_key(include_str!(concat!("../../", {model_file:?})));
     let compiled = gyro_sim::cli::CompiledModel {{ key, entry, run }};
     gyro_sim::cli::main_with(gyro_sim::registry::Registry::builtin(), Some(compiled))
 }}
