@@ -262,10 +262,10 @@ impl Model {
         Ok(ar.collect_state(e, |sym| kinds.get(sym.index()).copied().unwrap_or(true))?)
     }
 
-    /// `e` or its collected canonical form, whichever has the smaller expression graph; `e`
-    /// itself, never expanded, when the canonical form could pass [`COLLECT_TERMS_BUDGET`] terms.
+    /// `e` or its collected canonical form, whichever has the smaller expression graph (the
+    /// caller has checked the form's size against [`COLLECT_TERMS_BUDGET`]).
     fn smaller_form(&mut self, e: ExprId) -> Result<ExprId> {
-        let s = self.collected_form_within_budget(e)?;
+        let s = self.collected_form(e)?;
         Ok(if self.ar.graph_size(s) < self.ar.graph_size(e) { s } else { e })
     }
 
