@@ -91,9 +91,7 @@ fn a_forty_link_chain_prints_in_intermediates_and_reads_back_equal() {
     let (ok, out, err) = kane(&["eoms", path.to_str().unwrap()]);
     std::fs::remove_file(&path).ok();
     assert!(ok, "{err}");
-    // 3.2 MB since relative rotations compose into angle sums (0.74 MB before): each angle sum
-    // is printed whole; issue 23 keeps the 1 MB aim open. The bound catches a regression.
-    assert!(out.len() < 4_000_000, "eoms printed {} bytes", out.len());
+    assert!(out.len() < 1_000_000, "eoms printed {} bytes", out.len());
     assert!(out.starts_with("% Intermediates") && out.contains("\nz1 = "), "no intermediates");
 
     let derived = load("chain.al", &src).unwrap();

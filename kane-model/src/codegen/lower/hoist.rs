@@ -13,6 +13,7 @@ pub struct Hoisted {
     pub defs: Vec<(SymbolId, ExprId)>,
     by_def: FxHashMap<ExprId, SymbolId>,
     memo: FxHashMap<ExprId, ExprId>,
+    param_only: FxHashMap<ExprId, bool>,
 }
 
 impl Hoisted {
@@ -28,7 +29,7 @@ impl Hoisted {
         }
         let out = if is_leaf(ar, e) {
             e
-        } else if param_only(ar, e, is_param) {
+        } else if self.param_only(ar, e, is_param) {
             self.constant(ar, e)?
         } else {
             match ar.node(e).clone() {
@@ -79,7 +80,7 @@ impl Hoisted {
         is_param: &dyn Fn(SymbolId) -> bool,
     ) -> Result<ExprId, ExprError> {
         let (mut fixed, rest): (Vec<ExprId>, Vec<ExprId>) =
-            parts.iter().partition(|p| param_only(ar, **p, is_param));
+            parts.iter().partition(|p| self.param_only(ar, **p, is_param));
         let mut out = Vec::with_capacity(parts.len());
         if !is_sum {
             if let Some(pos) = fixed.iter().position(|p| *p == ar.minus_one()) {
@@ -100,15 +101,30 @@ impl Hoisted {
             ar.mul(&out)
         }
     }
+
+    /// True for an expression in the parameters alone (numbers included); remembered per node,
+    /// so a DAG is walked once however often its parts are asked about.
+    fn param_only(&mut self, ar: &Arena, e: ExprId, is_param: &dyn Fn(SymbolId) -> bool) -> bool {
+        if let Some(&p) = self.param_only.get(&e) {
+            return p;
+        }
+        for id in ar.bottom_up(&[e], |x| self.param_only.contains_key(&x)) {
+            if self.param_only.contains_key(&id) {
+                continue;
+            }
+            let p = match ar.node(id) {
+                Node::Symbol(s) => is_param(*s),
+                Node::Rational(_) | Node::Float(_) => true,
+                n => n.children().iter().all(|c| self.param_only[c]),
+            };
+            self.param_only.insert(id, p);
+        }
+        self.param_only[&e]
+    }
 }
 
 fn is_leaf(ar: &Arena, e: ExprId) -> bool {
     matches!(ar.node(e), Node::Rational(_) | Node::Float(_) | Node::Symbol(_))
-}
-
-/// True for an expression in the parameters alone (numbers included).
-fn param_only(ar: &Arena, e: ExprId, is_param: &dyn Fn(SymbolId) -> bool) -> bool {
-    ar.free_symbols(&[e]).into_iter().all(is_param)
 }
 
 #[cfg(test)]

@@ -1,21 +1,41 @@
 //! Printing a [`Collected`] expression: `(K2 - K1)*sin(Q2)^2*U1' - Y`, in text or LaTeX.
 
+use rustc_hash::FxHashMap;
+
 use super::super::arena::Arena;
 use super::super::node::ExprId;
 use super::super::tidy::{Collected, CollectedTerm};
 
-/// How the pieces are spelled.
-struct Style {
-    piece: fn(&Arena, ExprId) -> String,
+/// How the pieces are spelled, and the names some subexpressions are written by.
+struct Style<'a> {
     open: &'static str,
     close: &'static str,
     latex: bool,
+    names: Option<&'a FxHashMap<ExprId, String>>,
 }
 
-const TEXT: Style = Style { piece: Arena::to_text, open: "(", close: ")", latex: false };
-const LATEX: Style = Style { piece: Arena::to_latex, open: "\\left(", close: "\\right)", latex: true };
+impl<'a> Style<'a> {
+    fn text(names: Option<&'a FxHashMap<ExprId, String>>) -> Style<'a> {
+        Style { open: "(", close: ")", latex: false, names }
+    }
 
-impl Style {
+    fn latex(names: Option<&'a FxHashMap<ExprId, String>>) -> Style<'a> {
+        Style { open: "\\left(", close: "\\right)", latex: true, names }
+    }
+
+    /// One piece (a coefficient summand or a factor), by its name when it has one.
+    fn piece(&self, ar: &Arena, x: ExprId) -> String {
+        match (self.names, self.latex) {
+            (Some(names), false) => names.get(&x).cloned().unwrap_or_else(|| ar.to_text_named(x, names)),
+            (Some(names), true) => match names.get(&x) {
+                Some(name) => super::latex::symbol_latex(name, 0),
+                None => ar.to_latex_named(x, names),
+            },
+            (None, false) => ar.to_text(x),
+            (None, true) => ar.to_latex(x),
+        }
+    }
+
     /// Factors joined by `*`, or in LaTeX by a space (`\cdot` before a digit).
     fn join(&self, parts: Vec<String>) -> String {
         let mut s = String::new();
@@ -43,7 +63,7 @@ impl Style {
                 (_, false) => " + ",
             });
             // A summand is never a sum, so it needs no parentheses.
-            s.push_str(&(self.piece)(ar, *x));
+            s.push_str(&self.piece(ar, *x));
         }
         s
     }
@@ -52,7 +72,7 @@ impl Style {
     fn term(&self, ar: &Arena, t: &CollectedTerm) -> String {
         let mut parts = Vec::new();
         if let Some(k) = t.scale {
-            parts.push((self.piece)(ar, k));
+            parts.push(self.piece(ar, k));
         }
         if !t.inner.is_empty() {
             let inner = self.collected(ar, &Collected { terms: t.inner.clone() });
@@ -71,7 +91,7 @@ impl Style {
             _ if t.factors.is_empty() && !t.negative => parts.push(self.signed_sum(ar, &t.coefficient)),
             _ => parts.push(format!("{}{}{}", self.open, self.signed_sum(ar, &t.coefficient), self.close)),
         }
-        parts.extend(t.factors.iter().map(|f| (self.piece)(ar, *f)));
+        parts.extend(t.factors.iter().map(|f| self.piece(ar, *f)));
         if parts.is_empty() {
             parts.push("1".into());
         }
@@ -84,7 +104,7 @@ impl Style {
             return None;
         };
         let r = ar.as_rational(*x).filter(|r| !r.is_integer() && !t.factors.is_empty())?;
-        let mut parts: Vec<String> = t.factors.iter().map(|f| (self.piece)(ar, *f)).collect();
+        let mut parts: Vec<String> = t.factors.iter().map(|f| self.piece(ar, *f)).collect();
         if r.numer() != 1 {
             parts.insert(0, r.numer().to_string());
         }
@@ -112,11 +132,23 @@ impl Style {
 impl Arena {
     /// Plain text of a collected expression, e.g. `(K2 - K1)*sin(Q2)^2*U1' - Y`.
     pub fn collected_text(&self, c: &Collected) -> String {
-        TEXT.collected(self, c)
+        Style::text(None).collected(self, c)
+    }
+
+    /// Plain text of a collected expression in which the subexpressions in `names` are
+    /// written by name.
+    pub fn collected_text_named(&self, c: &Collected, names: &FxHashMap<ExprId, String>) -> String {
+        Style::text(Some(names)).collected(self, c)
     }
 
     /// LaTeX of a collected expression, e.g. `\left(K_{2} - K_{1}\right) \sin\left(Q_{2}\right)^{2}`.
     pub fn collected_latex(&self, c: &Collected) -> String {
-        LATEX.collected(self, c)
+        Style::latex(None).collected(self, c)
+    }
+
+    /// LaTeX of a collected expression in which the subexpressions in `names` are written by
+    /// name.
+    pub fn collected_latex_named(&self, c: &Collected, names: &FxHashMap<ExprId, String>) -> String {
+        Style::latex(Some(names)).collected(self, c)
     }
 }

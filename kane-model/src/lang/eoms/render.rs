@@ -8,6 +8,10 @@ use super::{PrintedEoms, Shown};
 /// Terms per line of a long LaTeX equation.
 const TERMS_PER_LINE: usize = 4;
 
+/// Longest text of a piece of a collected quantity (a factor such as `cos(Q1 + Q2 + Q3)`)
+/// still written out at each use; a longer one used more than once is named.
+const LONGEST_INLINE_PIECE: usize = 24;
+
 /// The printed quantities as plain-text expressions.
 #[derive(Clone, Debug, PartialEq)]
 pub struct EomsText {
@@ -23,19 +27,31 @@ pub struct EomsText {
     pub equations: Vec<String>,
 }
 
-/// The quantities of `xs` printed in named intermediates.
-fn named_roots<'a>(xs: impl IntoIterator<Item = &'a Shown>) -> Vec<ExprId> {
-    xs.into_iter()
-        .filter_map(|s| match s {
-            Shown::Named(x) => Some(*x),
-            Shown::Collected(_) => None,
-        })
-        .collect()
+/// The intermediates for printing `xs`: the quantities printed in named intermediates, and
+/// the long pieces (factors, coefficient summands) that collected quantities repeat.
+fn intermediates<'a>(ar: &Arena, xs: impl IntoIterator<Item = &'a Shown>) -> Intermediates {
+    let mut roots = Vec::new();
+    for s in xs {
+        match s {
+            Shown::Named(x) => roots.push(*x),
+            Shown::Collected(c) => long_pieces(ar, c, &mut roots),
+        }
+    }
+    Intermediates::new(ar, &roots)
+}
+
+/// The pieces of `c` whose text is longer than [`LONGEST_INLINE_PIECE`], once per use.
+fn long_pieces(ar: &Arena, c: &Collected, out: &mut Vec<ExprId>) {
+    for t in &c.terms {
+        let pieces = t.scale.iter().chain(t.coefficient.iter().map(|(_, x)| x)).chain(&t.factors);
+        out.extend(pieces.filter(|x| ar.to_text(**x).len() > LONGEST_INLINE_PIECE));
+        long_pieces(ar, &Collected { terms: t.inner.clone() }, out);
+    }
 }
 
 fn text(ar: &Arena, z: &Intermediates, s: &Shown) -> String {
     match s {
-        Shown::Collected(c) => ar.collected_text(c),
+        Shown::Collected(c) => ar.collected_text_named(c, &z.names),
         Shown::Named(x) => z.text(ar, *x),
     }
 }
@@ -44,7 +60,7 @@ impl PrintedEoms {
     /// Every quantity as plain text, with the intermediates they use.
     pub fn texts(&self, ar: &Arena) -> EomsText {
         let all = self.kinematics.iter().chain(self.mass_matrix.iter().flatten());
-        let z = Intermediates::new(ar, &named_roots(all.chain(&self.forcing).chain(&self.equations)));
+        let z = intermediates(ar, all.chain(&self.forcing).chain(&self.equations));
         let each = |xs: &[Shown]| xs.iter().map(|s| text(ar, &z, s)).collect::<Vec<String>>();
         EomsText {
             intermediates: z.text_lines(ar),
@@ -99,19 +115,19 @@ impl PrintedEoms {
             lhs.push(dot.map_or_else(|| format!("\\dot{{{q}}}"), |x| ar.to_latex(x)));
         }
         let ar = &*ar;
-        let z = Intermediates::new(ar, &named_roots(self.kinematics.iter().chain(&self.equations)));
+        let z = intermediates(ar, self.kinematics.iter().chain(&self.equations));
         let mut lines: Vec<String> =
             z.latex_lines(ar).into_iter().map(|(name, def)| format!("{name} &= {def}")).collect();
         for (lhs, k) in lhs.iter().zip(&self.kinematics) {
             let rhs = match k {
-                Shown::Collected(c) => ar.collected_latex(c),
+                Shown::Collected(c) => ar.collected_latex_named(c, &z.names),
                 Shown::Named(x) => z.latex(ar, *x),
             };
             lines.push(format!("{lhs} &= {rhs}"));
         }
         for x in &self.equations {
             match x {
-                Shown::Collected(c) => lines.extend(latex_rows(ar, c)),
+                Shown::Collected(c) => lines.extend(latex_rows(ar, &z, c)),
                 Shown::Named(x) => lines.push(format!("0 &= {}", z.latex(ar, *x))),
             }
         }
@@ -123,7 +139,7 @@ impl PrintedEoms {
 }
 
 /// `0 = c` as rows of a few terms each.
-fn latex_rows(ar: &Arena, c: &Collected) -> Vec<String> {
+fn latex_rows(ar: &Arena, z: &Intermediates, c: &Collected) -> Vec<String> {
     let chunks: Vec<Collected> =
         c.terms.chunks(TERMS_PER_LINE).map(|t| Collected { terms: t.to_vec() }).collect();
     if chunks.is_empty() {
@@ -131,7 +147,7 @@ fn latex_rows(ar: &Arena, c: &Collected) -> Vec<String> {
     }
     let mut lines = Vec::with_capacity(chunks.len());
     for (i, c) in chunks.iter().enumerate() {
-        let text = ar.collected_latex(c);
+        let text = ar.collected_latex_named(c, &z.names);
         let sign = if i > 0 && !c.terms[0].negative { "+ " } else { "" };
         let lead = if i == 0 { "0 &= " } else { "&\\quad " };
         lines.push(format!("{lead}{sign}{text}"));
