@@ -1,7 +1,7 @@
 """Write an n-link chain as a model file in our Autolev dialect (to standard output).
 
     python3 chain_model.py --links N [--angles {relative,absolute}] [--plane {planar,spatial}]
-                           [--links-kind {particle,rigid}] [--inputs]
+                           [--links-kind {particle,rigid}] [--cart] [--inputs]
 
 Defaults: relative angles, planar, point masses. The output is one model file: check it with
 `kane check FILE`, derive it with `kane eoms FILE`, generate it with `kane gen FILE`. `--inputs`
@@ -29,6 +29,9 @@ kinematics Qi' = Ui):
   physical, so `kane check` has no warning), spatial `INERTIA Bi, Ii, Ki, Ii` (transverse Ii,
   axial Ki about axis 2).
 
+With `--cart`, the pivot O is a cart C (a particle of mass MC) sliding along N1> by X, with
+`X' = UX` and `V_O_N> = UX*N1>`: the pendulum on a cart.
+
 Velocities are by V2PTS from the link's joint (both points are fixed in the link's frame).
 The SymPy side of the same chains is sympy_chain.py (same names, signs and mass centres).
 """
@@ -36,7 +39,7 @@ import argparse
 import sys
 
 
-def chain_model(n, angles="relative", plane="planar", kind="particle", inputs=False):
+def chain_model(n, angles="relative", plane="planar", kind="particle", inputs=False, cart=False):
     """The model file text of the chain, one statement a line."""
     assert n >= 1
     rigid = kind == "rigid"
@@ -58,10 +61,15 @@ def chain_model(n, angles="relative", plane="planar", kind="particle", inputs=Fa
         out += ["FRAMES " + ", ".join(F[1:]), "POINTS O",
                 "PARTICLES " + ", ".join(f"P{i}" for i in range(1, n + 1)),
                 f"CONSTANTS L{{{n}}}, M{{{n}}}, G"]
-    out.append(f"VARIABLES Q{{{n}}}', U{{{n}}}'")
+    if cart:
+        out += ["PARTICLES C", "CONSTANTS MC"]
+    out.append(f"VARIABLES Q{{{n}}}', U{{{n}}}'" + (", X', UX'" if cart else ""))
     out += [f"SIMPROT({parent(i)}, {F[i]}, {axis[i]}, Q{i})" for i in range(1, n + 1)]
     out += [f"Q{i}' = U{i}" for i in range(1, n + 1)]
-    out.append("V_O_N> = 0>")
+    if cart:
+        out += ["X' = UX", "V_O_N> = UX*N1>", "V_C_N> = UX*N1>", "MASS C = MC"]
+    else:
+        out.append("V_O_N> = 0>")
     if rigid:
         J = ["O"] + [f"J{i}" for i in range(1, n)]
         for i in range(1, n + 1):
@@ -89,9 +97,12 @@ def chain_model(n, angles="relative", plane="planar", kind="particle", inputs=Fa
             if spatial:
                 vals += [f"K{i} = 0.001" for i in range(1, n + 1)]
         vals.append("G = 9.81")
+        if cart:
+            vals.append("MC = 1")
         out.append("INPUT " + ", ".join(vals))
         out.append("INPUT " + ", ".join([f"Q{i} = 0.1" for i in range(1, n + 1)]
-                                        + [f"U{i} = 0" for i in range(1, n + 1)]))
+                                        + [f"U{i} = 0" for i in range(1, n + 1)]
+                                        + (["X = 0", "UX = 0"] if cart else [])))
     return "\n".join(out) + "\n"
 
 
@@ -101,9 +112,10 @@ def main(argv=None):
     ap.add_argument("--angles", choices=["relative", "absolute"], default="relative")
     ap.add_argument("--plane", choices=["planar", "spatial"], default="planar")
     ap.add_argument("--links-kind", choices=["particle", "rigid"], default="particle")
+    ap.add_argument("--cart", action="store_true", help="pivot on a cart sliding along N1>")
     ap.add_argument("--inputs", action="store_true", help="append INPUT lines")
     a = ap.parse_args(argv)
-    sys.stdout.write(chain_model(a.links, a.angles, a.plane, a.links_kind, a.inputs))
+    sys.stdout.write(chain_model(a.links, a.angles, a.plane, a.links_kind, a.inputs, a.cart))
 
 
 if __name__ == "__main__":

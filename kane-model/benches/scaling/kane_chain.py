@@ -4,9 +4,10 @@
                           [--kane PATH] [--target-dir DIR] [--out kane_results.csv]
     python3 kane_chain.py --table [--out kane_results.csv] [--sympy sympy_results.csv]
 
-Variants are named PLANE-ANGLES-KIND as in sympy_chain.py; `V=5,10,20` gives a variant its own
-n (the others take --ns). Default: the three planar variants of sympy_results.csv at
-5,10,20,40,80,200 and spatial-relative-rigid at 5,10,20. Needs the release CLI
+Variants are named PLANE-ANGLES-KIND as in sympy_chain.py (a `-cart` suffix pivots the chain
+on a cart); `V=5,10,20` gives a variant its own n (the others take --ns). Default: the three
+planar variants of sympy_results.csv at 5,10,20,40,80,200 and spatial-relative-rigid at
+5,10,20. Needs the release CLI
 (`cargo build --release -p kane-model --bin kane`) and, for the compile and rhs columns, cargo
 working offline. Every case's model file is `chain_model.py --links N ... --inputs` (the INPUT
 lines give every parameter a default; they are not folded into the equations). Per case:
@@ -117,10 +118,13 @@ fn main() {
 
 
 def parse_variant(v):
-    plane, angles, kind = v.split("-")
+    """PLANE-ANGLES-KIND, or PLANE-ANGLES-KIND-cart for the chain pivoted on a cart."""
+    parts = v.split("-")
+    assert len(parts) == 3 or (len(parts) == 4 and parts[3] == "cart"), v
+    plane, angles, kind = parts[:3]
     assert plane in ("planar", "spatial") and angles in ("relative", "absolute"), v
     assert kind in ("particle", "rigid"), v
-    return plane, angles, kind
+    return plane, angles, kind + ("-cart" if len(parts) == 4 else "")
 
 
 class Step:
@@ -321,7 +325,8 @@ class Bench:
 def chain_text(n, plane, angles, kind):
     sys.path.insert(0, HERE)
     from chain_model import chain_model
-    return chain_model(n, angles, plane, kind, inputs=True)
+    links, _, cart = kind.partition("-")
+    return chain_model(n, angles, plane, links, inputs=True, cart=cart == "cart")
 
 
 def git_commit():

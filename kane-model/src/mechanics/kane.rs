@@ -104,9 +104,16 @@ impl Model {
         Ok((v.clone(), self.eliminate_dependent_vector(&a)?))
     }
 
+    /// The partial velocities of `v`, remembered: FR(), FRSTAR() and KANE() ask for the same.
     fn partials_of(&mut self, v: &Vector) -> Result<Vec<Vector>> {
         let speeds = self.independent_speeds();
-        speeds.iter().map(|u| self.partial(v, *u)).collect()
+        let key = (v.terms.clone(), speeds);
+        if let Some(p) = self.kinematics_cache.partials.get(&key) {
+            return Ok(p.clone());
+        }
+        let p = key.1.iter().map(|u| self.partial(v, *u)).collect::<Result<Vec<Vector>>>()?;
+        self.kinematics_cache.partials.insert(key, p.clone());
+        Ok(p)
     }
 
     fn mass_partials(&mut self, m: &MassMotion) -> Result<Partials> {

@@ -113,7 +113,12 @@ pub enum Load {
 pub(crate) struct KinematicsCache {
     pub(crate) velocity: FxHashMap<(PointId, FrameId), Vector>,
     pub(crate) acceleration: FxHashMap<(PointId, FrameId), Vector>,
+    /// Partial velocities of a vector (its terms) with respect to the speeds listed.
+    pub(crate) partials: FxHashMap<PartialsKey, Vec<Vector>>,
 }
+
+/// A vector's terms and the speeds its partial velocities are taken with respect to.
+pub(crate) type PartialsKey = (Vec<(FrameId, [ExprId; 3])>, Vec<SymbolId>);
 
 /// Nonholonomic constraints `sum(c u) + c0 = 0`, solved for the dependent speeds.
 #[derive(Clone, Debug)]
