@@ -120,3 +120,58 @@ fn a_forty_link_chain_prints_in_intermediates_and_reads_back_equal() {
         assert_close(&format!("ZERO[{}]", i + 1), printed[n * n + n + i], zero);
     }
 }
+
+/// The chain of rigid links pinned end to end (bodies `Bi` with mass centres at mid-link).
+fn rigid_chain(n: usize) -> String {
+    let b: Vec<String> = (1..=n).map(|i| format!("B{i}")).collect();
+    let joint = |i: usize| if i == 0 { "O".to_string() } else { format!("J{i}") };
+    let mut out = vec![
+        "NEWTONIAN N".to_string(),
+        format!("BODIES {}", b.join(", ")),
+        format!("POINTS O, {}", (1..n).map(joint).collect::<Vec<_>>().join(", ")),
+        format!("CONSTANTS L{{{n}}}, M{{{n}}}, I{{{n}}}, G"),
+        format!("VARIABLES Q{{{n}}}', U{{{n}}}'"),
+        "V_O_N> = 0>".into(),
+    ];
+    for i in 1..=n {
+        let parent = if i == 1 { "N" } else { &b[i - 2] };
+        out.push(format!("SIMPROT({parent}, B{i}, 3, Q{i})\nQ{i}' = U{i}"));
+        out.push(format!(
+            "P_{}_B{i}O> = L{i}/2*B{i}1>\nV2PTS(N, B{i}, {}, B{i}O)",
+            joint(i - 1),
+            joint(i - 1)
+        ));
+        if i < n {
+            out.push(format!(
+                "P_{}_{}> = L{i}*B{i}1>\nV2PTS(N, B{i}, {}, {})",
+                joint(i - 1),
+                joint(i),
+                joint(i - 1),
+                joint(i)
+            ));
+        }
+        out.push(format!("MASS B{i} = M{i}\nINERTIA B{i}, 0, I{i}, I{i}"));
+    }
+    out.extend(["GRAVITY(-G*N2>)".to_string(), "ZERO = FR() + FRSTAR()".into(), "KANE()".into()]);
+    out.join("\n") + "\n"
+}
+
+#[test]
+fn a_long_partial_velocity_table_is_left_out_unless_asked_for() {
+    let path = std::env::temp_dir().join(format!("kane_eoms_rigid{LINKS}_{}.al", std::process::id()));
+    std::fs::write(&path, rigid_chain(LINKS)).unwrap();
+    let file = path.to_str().unwrap();
+    let (ok, out, err) = kane(&["eoms", file]);
+    let (ok_all, all, err_all) = kane(&["eoms", file, "--partials"]);
+    std::fs::remove_file(&path).ok();
+    assert!(ok && ok_all, "{err}{err_all}");
+    assert!(out.len() < 1_000_000, "eoms printed {} bytes", out.len());
+    let note = out.lines().last().unwrap();
+    assert!(note.contains("left out") && note.contains("--partials"), "{note}");
+    assert!(!out.contains("V_B40O_N> / U1 ="));
+    assert!(all.starts_with(out.rsplit_once("\n% Partial").unwrap().0), "the equations are the same");
+    assert!(
+        all.contains("V_B40O_N> / U1 = ") && all.contains("W_B40_N> / U40 = N3>"),
+        "the table is printed whole"
+    );
+}

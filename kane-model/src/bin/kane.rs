@@ -35,6 +35,10 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value = "text")]
         format: Format,
+        /// Print the partial velocity table however long it is (by default a table longer
+        /// than 64 KB is left out, with a note).
+        #[arg(long)]
+        partials: bool,
     },
     /// Evaluate the equations at one state (values from INPUT unless set; angles in radians).
     Eval {
@@ -136,7 +140,7 @@ fn ops(m: &LoadedModel, roots: &[ExprId]) -> usize {
 fn run(command: Command) -> Result<(), String> {
     match command {
         Command::Check { file } => check(file),
-        Command::Eoms { file, format } => eoms(file, format),
+        Command::Eoms { file, format, partials } => eoms(file, format, partials),
         Command::Eval { file, set, json } => eval(file, set, json),
         Command::Gen { file, out, stats, taylor, taylor_orders, lanes } => {
             gen(file, out, stats, CodeOptions { taylor, taylor_orders, lanes })
@@ -175,7 +179,7 @@ fn check(file: PathBuf) -> Result<(), String> {
 
 /// `kane eoms`: the equations of motion, simplified and collected (or in named intermediates),
 /// as text, LaTeX or JSON.
-fn eoms(file: PathBuf, format: Format) -> Result<(), String> {
+fn eoms(file: PathBuf, format: Format, partials: bool) -> Result<(), String> {
     let mut m = load(&file)?;
     let p = lang::printed_eoms(&mut m).map_err(|e| format!("{}: {e}", file.display()))?;
     let p = p.ok_or_else(|| format!("{}: the file derives no equations; call KANE()", file.display()))?;
@@ -183,15 +187,30 @@ fn eoms(file: PathBuf, format: Format) -> Result<(), String> {
         Format::Latex => print!("{}", p.to_latex(&mut m.model.ar)),
         Format::Text => {
             print!("{}", p.to_text(&m.model.ar));
-            println!("\n% Partial velocities and partial angular velocities");
-            print!("{}", partial_velocities(&mut m)?);
+            let table = partial_velocities(&mut m)?;
+            if partials || table.len() <= PARTIALS_TABLE_BUDGET {
+                println!("\n% Partial velocities and partial angular velocities");
+                print!("{table}");
+            } else {
+                println!(
+                    "\n% Partial velocities and partial angular velocities: {} rows ({} KB) left out; \
+                     --partials prints them",
+                    table.lines().count(),
+                    table.len() / 1000
+                );
+            }
         }
         Format::Json => {
-            let table = partial_velocities(&mut m)?;
+            let mut table = partial_velocities(&mut m)?;
+            let left_out = !partials && table.len() > PARTIALS_TABLE_BUDGET;
+            if left_out {
+                table.clear();
+            }
             let t = p.texts(&m.model.ar);
             let v = serde_json::json!({
                 "coordinates": p.coordinates, "speeds": p.speeds, "intermediates": t.intermediates,
                 "kinematics": t.kinematics, "partial_velocities": table.lines().collect::<Vec<_>>(),
+                "partial_velocities_left_out": left_out,
                 "mass_matrix": t.mass_matrix, "forcing": t.forcing, "equations": t.equations,
             });
             println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
@@ -199,6 +218,9 @@ fn eoms(file: PathBuf, format: Format) -> Result<(), String> {
     }
     Ok(())
 }
+
+/// Longest partial velocity table `kane eoms` prints without `--partials`, in bytes.
+const PARTIALS_TABLE_BUDGET: usize = 64_000;
 
 /// The partial velocity table of the bodies' frames and mass centres.
 fn partial_velocities(m: &mut LoadedModel) -> Result<String, String> {
