@@ -156,6 +156,7 @@ fn check(file: PathBuf) -> Result<(), String> {
     let checked = lang::check(&file.display().to_string(), &src).map_err(|r| r.render())?;
     eprint!("{}", checked.warnings.render());
     let m = checked.model;
+    let bookkeeping = lang::bookkeeping_summary(&m, &src);
     match &m.equations {
         Some(e) => {
             let mm: Vec<ExprId> = e.mass_matrix.iter().flatten().copied().collect();
@@ -173,6 +174,9 @@ fn check(file: PathBuf) -> Result<(), String> {
             );
         }
         None => println!("{}: ok: no KANE() in this file", file.display()),
+    }
+    if let Some(b) = bookkeeping {
+        println!("{}: bookkeeping {b}", file.display());
     }
     Ok(())
 }

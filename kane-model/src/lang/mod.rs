@@ -28,12 +28,12 @@ mod token;
 pub mod units;
 
 pub use ast::{BinOp, Expr, ExprKind, Stmt, StmtKind};
-pub use check::{check, Checked, OVERRIDE_MARKER};
+pub use check::{bookkeeping_summary, check, Checked, OVERRIDE_MARKER};
 pub use compare::{compare, Comparison, Outcome, Relation};
 pub use diagnostic::{line_column, Diagnostic, Report, Severity};
 pub use eoms::{printed_eoms, EomsError, EomsText, PrintedEoms, Shown, COLLECT_BUDGET, COLLECT_TOTAL};
 pub use interp::value::Value;
-pub use interp::{CodeRequest, InputValue, LoadedModel};
+pub use interp::{Bookkeeping, CodeRequest, InputValue, LoadedModel};
 pub use parser::parse_expression;
 pub use present::Presenter;
 pub use show::show;
@@ -54,7 +54,7 @@ pub fn parse(file: &str, source: &str) -> Result<Vec<Stmt>, Report> {
 pub fn load(file: &str, source: &str) -> Result<LoadedModel, Report> {
     let (stmts, mut errors) = parser::parse(source);
     let mut it = interp::Interpreter::new();
-    it.run(&stmts);
+    it.run(&stmts, source, &errors);
     errors.extend(std::mem::take(&mut it.errors));
     if errors.is_empty() {
         Ok(it.finish())

@@ -32,10 +32,12 @@ pub fn parse(src: &str) -> (Vec<Stmt>, Vec<Diagnostic>) {
                 // A statement with a bad character is reported once, for that character.
                 let (from, to) = (line[0].span.start, t.span.start);
                 if !bad_lines.iter().any(|b| (from..=to).contains(b)) {
-                    let mut p = Parser { toks: &line, pos: 0, src, depth: 0, paren_primes: false };
-                    match p.statement() {
-                        Ok(s) => stmts.push(s),
-                        Err(e) => errors.push(e),
+                    for piece in statements_of_line(&line) {
+                        let mut p = Parser { toks: piece, pos: 0, src, depth: 0, paren_primes: false };
+                        match p.statement() {
+                            Ok(s) => stmts.push(s),
+                            Err(e) => errors.push(e),
+                        }
                     }
                 }
                 line.clear();
@@ -46,6 +48,30 @@ pub fn parse(src: &str) -> (Vec<Stmt>, Vec<Diagnostic>) {
     }
     errors.sort_by_key(|d| d.span.start);
     (stmts, errors)
+}
+
+/// The statements of one line: `;` ends a statement (Autolev's terminator, which only hides
+/// the result), so `A = 1; B = 2;` is two statements; a `;` inside brackets is left to them.
+fn statements_of_line(line: &[Token]) -> Vec<&[Token]> {
+    let mut out = Vec::new();
+    let (mut depth, mut from) = (0i32, 0);
+    for (i, t) in line.iter().enumerate() {
+        match t.tok {
+            Tok::Punct('(' | '[' | '{') => depth += 1,
+            Tok::Punct(')' | ']' | '}') => depth -= 1,
+            Tok::Punct(';') if depth <= 0 => {
+                if i > from {
+                    out.push(&line[from..i]);
+                }
+                from = i + 1;
+            }
+            _ => {}
+        }
+    }
+    if from < line.len() {
+        out.push(&line[from..]);
+    }
+    out
 }
 
 struct Parser<'a> {
@@ -74,6 +100,24 @@ pub fn parse_expression(src: &str) -> Result<Expr, Diagnostic> {
 }
 
 type PResult<T> = Result<T, Diagnostic>;
+
+/// Commands that change only Autolev's own session (how it prints, saves, beeps or pauses):
+/// accepted, and reported as ignored.
+pub const SESSION_COMMANDS: &[&str] = &[
+    "AUTOEPS",
+    "AUTOEPSILON",
+    "AUTORHS",
+    "AUTOZ",
+    "BEEP",
+    "BEEPSOUND",
+    "DISPLAY",
+    "ENCODE",
+    "FACTORING",
+    "OVERWRITE",
+    "PAUSE",
+    "PRINT",
+    "SAVE",
+];
 
 fn decl_kind(word: &str) -> Option<DeclKind> {
     Some(match word {
@@ -207,6 +251,12 @@ impl<'a> Parser<'a> {
             let items = self.decl_items()?;
             return Ok(StmtKind::Declare { kind, items });
         }
+        if word == "UNITSYSTEM" {
+            return self.unit_system_stmt();
+        }
+        if SESSION_COMMANDS.contains(&word.as_str()) {
+            return Ok(self.session_stmt(word));
+        }
         match word.as_str() {
             "MASS" if !matches!(next, Some(Tok::Punct('('))) => self.mass_stmt(),
             "INERTIA" if !matches!(next, Some(Tok::Punct('('))) => self.inertia_stmt(),
@@ -225,6 +275,39 @@ impl<'a> Parser<'a> {
                 self.assignment_or_expr()
             }
         }
+    }
+
+    /// `UNITSYSTEM KG, METER, SEC` (or with parentheses): the units of mass, length and time.
+    fn unit_system_stmt(&mut self) -> PResult<StmtKind> {
+        self.pos += 1;
+        let parens = self.eat('(');
+        let mut out = Vec::new();
+        while !self.at_end() && !self.is_punct(')') {
+            let (n, _, span) = self.name()?;
+            out.push((n.to_ascii_uppercase(), span));
+            if !self.eat(',') {
+                break;
+            }
+        }
+        if parens {
+            self.expect(')', "to close UNITSYSTEM's list")?;
+        }
+        Ok(StmtKind::UnitSystem(out))
+    }
+
+    /// A command of Autolev's session (ENCODE, SAVE, PAUSE, AUTOZ ON, ...), its arguments kept
+    /// as written.
+    fn session_stmt(&mut self, command: String) -> StmtKind {
+        self.pos += 1;
+        let text = if self.at_end() {
+            String::new()
+        } else {
+            let from = self.toks[self.pos].span.start;
+            let to = self.toks[self.toks.len() - 1].span.end;
+            self.src[from..to].trim().to_string()
+        };
+        self.pos = self.toks.len();
+        StmtKind::Session { command, text }
     }
 
     /// `MASS B = m, ...`.
@@ -287,19 +370,41 @@ impl<'a> Parser<'a> {
             let primes = self.primes();
             self.expect('=', "after the name in INPUT")?;
             let value = self.expr()?;
-            let unit = match self.peek() {
-                Some(Tok::Name { text, .. }) => {
-                    self.pos += 1;
-                    Some(text.to_ascii_uppercase())
-                }
-                _ => None,
-            };
+            let unit = self.unit_tag();
             out.push(InputItem { name: n, primes, value, unit, span: start..self.end() });
             if !self.eat(',') {
                 break;
             }
         }
         Ok(StmtKind::Input(out))
+    }
+
+    /// The unit after an INPUT value or an OUTPUT name, when one follows: unit words joined by
+    /// `*`, `/`, `^` and `.` (`M/S^2`, `KG.M^2`, `RAD/(SEC*SEC)`), upper-cased, `.` as `*`;
+    /// up to the next `,` outside parentheses.
+    fn unit_tag(&mut self) -> Option<String> {
+        if !matches!(self.peek(), Some(Tok::Name { .. })) {
+            return None;
+        }
+        let mut text = String::new();
+        let mut depth = 0;
+        while let Some(t) = self.peek() {
+            match t {
+                Tok::Punct(',') if depth == 0 => break,
+                Tok::Punct('(') => depth += 1,
+                Tok::Punct(')') => depth -= 1,
+                _ => {}
+            }
+            text.push_str(&match t {
+                Tok::Name { text, .. } => text.to_ascii_uppercase(),
+                Tok::Number { text, .. } if text == "." => "*".into(),
+                Tok::Number { text, .. } => text.clone(),
+                Tok::Punct(c) => c.to_string(),
+                _ => break,
+            });
+            self.pos += 1;
+        }
+        Some(text)
     }
 
     /// `OUTPUT NAME [UNIT], ...`.
@@ -310,13 +415,7 @@ impl<'a> Parser<'a> {
             let (n, _, span) = self.name()?;
             let p = self.primes();
             let n = format!("{n}{}", "'".repeat(p as usize));
-            let unit = match self.peek() {
-                Some(Tok::Name { text, .. }) => {
-                    self.pos += 1;
-                    Some(text.to_ascii_uppercase())
-                }
-                _ => None,
-            };
+            let unit = self.unit_tag();
             out.push((n, span, unit));
             if !self.eat(',') {
                 break;

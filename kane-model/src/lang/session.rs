@@ -26,7 +26,7 @@ impl Session {
         let (stmts, mut errors) = parser::parse(source);
         let mut it = Interpreter::new();
         if errors.is_empty() {
-            it.run(&stmts);
+            it.run(&stmts, source, &[]);
             errors = std::mem::take(&mut it.errors);
         }
         if !errors.is_empty() {

@@ -6,6 +6,7 @@
 //! In: a file name and its source. Out: the loaded model with its warnings, or a report of every
 //! error (with the warnings).
 
+mod bookkeeping;
 mod consistency;
 mod coordinates;
 mod loads;
@@ -16,6 +17,7 @@ mod zero;
 use super::diagnostic::{Report, Severity};
 use super::interp::LoadedModel;
 
+pub use bookkeeping::bookkeeping_summary;
 pub use marker::MARKER as OVERRIDE_MARKER;
 
 /// A model file that loaded and passed the checks.

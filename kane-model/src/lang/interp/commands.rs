@@ -18,8 +18,14 @@ impl Interpreter {
     /// A statement that is a bare expression: a command, or a value shown by Autolev.
     pub(crate) fn command(&mut self, e: &Expr) -> IResult<()> {
         let ExprKind::Call { name, args } = &e.kind else {
-            self.eval(e)?;
-            return Ok(());
+            return match (self.eval(e), &e.kind) {
+                (Err(d), ExprKind::Name { name, suffix: 0, primes: 0 })
+                    if d.message.ends_with("is not defined") =>
+                {
+                    Err(unknown_command(name, &e.span))
+                }
+                (r, _) => r.map(|_| ()),
+            };
         };
         let upper = name.to_ascii_uppercase();
         match upper.as_str() {
@@ -51,10 +57,13 @@ impl Interpreter {
                 Ok(())
             }
             "EXPAND" | "FACTOR" | "ARRANGE" | "EXPLICIT" => self.rewrite_in_place(name, args, e),
-            _ => {
-                self.call(name, args, e)?;
-                Ok(())
-            }
+            _ => match self.call(name, args, e) {
+                Err(mut d) if d.message.starts_with("unknown function") => {
+                    d.message = d.message.replacen("unknown function", "unknown command", 1);
+                    Err(d)
+                }
+                other => other.map(|_| ()),
+            },
         }
     }
 
@@ -269,5 +278,14 @@ impl Interpreter {
             }
             _ => Err(bad()),
         }
+    }
+}
+
+/// The error for a statement that is one word naming neither a command nor a defined name.
+fn unknown_command(name: &str, span: &Span) -> Diagnostic {
+    let d = Diagnostic::error(span.clone(), format!("unknown command `{name}`"));
+    match super::functions::nearest_command(&name.to_ascii_uppercase()) {
+        Some(k) => d.with_help(format!("did you mean `{k}`?")),
+        None => d.with_help("a statement is a declaration, an assignment or a command such as KANE()"),
     }
 }

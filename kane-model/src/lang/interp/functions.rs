@@ -115,6 +115,89 @@ fn unknown_function(name: &str, upper: &str, span: &Span) -> Diagnostic {
         return Diagnostic::error(span.clone(), format!("{upper}() ({what}) is not supported"))
             .with_help("remove it or compute it outside the model file");
     }
-    Diagnostic::error(span.clone(), format!("unknown function `{name}`"))
-        .with_help("see the README for the supported Autolev functions and commands")
+    let d = Diagnostic::error(span.clone(), format!("unknown function `{name}`"));
+    match nearest_command(upper) {
+        Some(k) => d.with_help(format!(
+            "did you mean `{k}`? See the README for the supported functions and commands"
+        )),
+        None => d.with_help("see the README for the supported Autolev functions and commands"),
+    }
+}
+
+/// The commands and functions a file may call (elementary functions included).
+pub(crate) const KNOWN_CALLS: &[&str] = &[
+    "A1PT",
+    "A2PTS",
+    "ABS",
+    "ACOS",
+    "ANGVEL",
+    "ARRANGE",
+    "ASIN",
+    "ATAN",
+    "ATAN2",
+    "CM",
+    "COEF",
+    "COLS",
+    "CONSTRAIN",
+    "COS",
+    "COSH",
+    "CROSS",
+    "D",
+    "DET",
+    "DIAGMAT",
+    "DIRCOS",
+    "DOT",
+    "DT",
+    "ELEMENT",
+    "EVALUATE",
+    "EXP",
+    "EXPAND",
+    "EXPLICIT",
+    "EXPRESS",
+    "FACTOR",
+    "FORCE",
+    "FR",
+    "FRSTAR",
+    "GRAVITY",
+    "INERTIA",
+    "KANE",
+    "KE",
+    "KINDIFFS",
+    "LOG",
+    "MAG",
+    "MASS",
+    "MATRIX",
+    "MOMENTUM",
+    "PARTIALS",
+    "REPLACE",
+    "RHS",
+    "ROWS",
+    "SIMPROT",
+    "SIN",
+    "SINH",
+    "SOLVE",
+    "SQRT",
+    "TAN",
+    "TANH",
+    "TORQUE",
+    "TRACE",
+    "TRANSPOSE",
+    "UNITVEC",
+    "V1PT",
+    "V2PTS",
+    "VECTOR",
+];
+
+/// The known command, function or session command nearest to `upper` (at most two edits
+/// away, and fewer than its length), for a did-you-mean.
+pub(crate) fn nearest_command(upper: &str) -> Option<&'static str> {
+    let session = super::super::parser::SESSION_COMMANDS.iter();
+    KNOWN_CALLS
+        .iter()
+        .chain(session)
+        .chain(&["UNITSYSTEM", "UNITS", "INPUT", "OUTPUT", "CODE"])
+        .map(|k| (super::names::edit_distance(upper, k), *k))
+        .filter(|(d, k)| *d <= 2 && *d < k.len())
+        .min()
+        .map(|(_, k)| k)
 }

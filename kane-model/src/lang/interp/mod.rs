@@ -9,6 +9,7 @@
 //! spelling of their declaration for printing.
 
 mod assign;
+mod cascade;
 mod commands;
 mod eval;
 mod functions;
@@ -32,6 +33,7 @@ use crate::mechanics::{BodyId, FrameId, KaneEquations, Model, ParticleId, PointI
 use super::ast::{Expr, Stmt};
 use super::diagnostic::Diagnostic;
 use super::token::Span;
+use super::units::size::UnitSystem;
 pub(crate) use sources::{LoadSource, Sources};
 use value::Value;
 
@@ -61,6 +63,18 @@ pub struct InputValue {
     pub span: Span,
 }
 
+/// A bookkeeping command of the file and what became of it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bookkeeping {
+    /// The command, upper-cased (`UNITSYSTEM`, `AUTOZ`, `ENCODE`, ...).
+    pub command: String,
+    /// Where it is in the source.
+    pub span: Span,
+    /// True when it changes the model's numbers (UNITSYSTEM converts INPUT values); false
+    /// when it is ignored (it changes only how Autolev prints, saves or pauses).
+    pub applied: bool,
+}
+
 /// A CODE request.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CodeRequest {
@@ -84,6 +98,8 @@ pub struct LoadedModel {
     pub outputs: Vec<(String, Option<String>)>,
     /// CODE requests.
     pub code: Vec<CodeRequest>,
+    /// Commands that only keep Autolev's books (UNITSYSTEM, AUTOZ, ENCODE, ...), in order.
+    pub bookkeeping: Vec<Bookkeeping>,
     bindings: FxHashMap<String, Binding>,
     arrays: FxHashMap<String, Vec<(Vec<i64>, Value)>>,
     pub(crate) sources: Sources,
@@ -142,6 +158,8 @@ pub(crate) struct Interpreter {
     pub(crate) units: FxHashMap<String, String>,
     pub(crate) outputs: Vec<(String, Option<String>)>,
     pub(crate) code: Vec<CodeRequest>,
+    pub(crate) unit_system: UnitSystem,
+    pub(crate) bookkeeping: Vec<Bookkeeping>,
     pub(crate) errors: Vec<Diagnostic>,
     pub(crate) solved: FxHashMap<String, ExprId>,
     pub(crate) sources: Sources,
@@ -208,16 +226,30 @@ impl Interpreter {
             units: FxHashMap::default(),
             outputs: Vec::new(),
             code: Vec::new(),
+            unit_system: UnitSystem::default(),
+            bookkeeping: Vec::new(),
             errors: Vec::new(),
             solved: FxHashMap::default(),
             sources: Sources::default(),
         }
     }
 
-    pub(crate) fn run(&mut self, stmts: &[Stmt]) {
+    /// Runs `stmts` of `source` in order, after the parser's `parse_errors`: each failing
+    /// statement's error is kept unless it follows from an earlier failure (see [`cascade`]).
+    pub(crate) fn run(&mut self, stmts: &[Stmt], source: &str, parse_errors: &[Diagnostic]) {
+        let mut tainted = cascade::Tainted::default();
+        let mut failed_lines = parse_errors.iter().map(|d| d.span.start).peekable();
         for s in stmts {
+            while let Some(at) = failed_lines.next_if(|at| *at < s.span.start) {
+                tainted.add_line_of(source, at);
+            }
             if let Err(d) = self.statement(s) {
-                self.errors.push(d);
+                if !tainted.explains(&d.message) && !tainted.explains_statement(source, &s.span) {
+                    self.errors.push(d);
+                }
+                if cascade::sets_something(&s.kind) {
+                    tainted.add(source, &s.span);
+                }
             }
         }
     }
@@ -230,6 +262,7 @@ impl Interpreter {
             units: self.units,
             outputs: self.outputs,
             code: self.code,
+            bookkeeping: self.bookkeeping,
             bindings: self.bindings,
             arrays: self.arrays,
             sources: self.sources,

@@ -7,8 +7,11 @@
 use super::super::ast::{DeclItem, DeclKind, Expr, InputItem, Stmt, StmtKind};
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
+use super::super::units::size::{unit_size, UnitSystem};
 use super::super::units::{unit_expression, unit_word};
-use super::{entity_key, is_degrees, At, Binding, CodeRequest, IResult, InputValue, Interpreter};
+use super::{
+    entity_key, is_degrees, At, Binding, Bookkeeping, CodeRequest, IResult, InputValue, Interpreter,
+};
 
 impl Interpreter {
     /// Runs one statement.
@@ -29,11 +32,20 @@ impl Interpreter {
                 }
                 Ok(())
             }
+            StmtKind::UnitSystem(words) => self.unit_system(words, &s.span),
+            StmtKind::Session { command, .. } => {
+                self.bookkeeping.push(Bookkeeping {
+                    command: command.clone(),
+                    span: s.span.clone(),
+                    applied: false,
+                });
+                Ok(())
+            }
             StmtKind::Input(items) => self.input(items),
             StmtKind::Output(items) => {
                 for (n, span, u) in items {
                     if let Some(u) = u {
-                        unit_word(u, span)?;
+                        unit_size(u).map_err(|e| unit_error(span, e))?;
                     }
                     self.outputs.push((n.clone(), u.clone()));
                 }
@@ -89,18 +101,36 @@ impl Interpreter {
         }
     }
 
-    /// `INPUT a = value [unit], ...`: values kept in internal units (degrees become radians).
+    /// `UNITSYSTEM KG, METER, SEC`: the units INPUT values with a unit tag are converted into.
+    fn unit_system(&mut self, words: &[(String, Span)], span: &Span) -> IResult<()> {
+        let names: Vec<String> = words.iter().map(|(w, _)| w.clone()).collect();
+        self.unit_system = UnitSystem::from_words(&names).map_err(|(i, e)| {
+            Diagnostic::error(words[i].1.clone(), e).with_help(
+                "UNITSYSTEM names one unit each of mass, length and time, e.g. UNITSYSTEM KG, METER, SEC",
+            )
+        })?;
+        self.bookkeeping.push(Bookkeeping {
+            command: "UNITSYSTEM".into(),
+            span: span.clone(),
+            applied: true,
+        });
+        Ok(())
+    }
+
+    /// `INPUT a = value [unit], ...`: values kept in internal units: a value with a unit tag is
+    /// converted into the unit system (angles into radians); one without is taken as written,
+    /// in radians unless UNITS gives its name in degrees.
     fn input(&mut self, items: &[InputItem]) -> IResult<()> {
         for item in items {
-            if let Some(u) = &item.unit {
-                unit_word(u, &item.span)?;
-            }
+            let factor = match &item.unit {
+                Some(u) => self.unit_system.factor(unit_size(u).map_err(|e| unit_error(&item.span, e))?),
+                None => 1.0,
+            };
             let v = self.number(&item.value)?;
             let name = format!("{}{}", item.name, "'".repeat(item.primes as usize));
-            let in_degrees = item.unit.as_deref() == Some("DEG")
-                || (item.unit.is_none()
-                    && self.units.get(&name.to_ascii_uppercase()).is_some_and(|u| is_degrees(u)));
-            let value = if in_degrees { v.to_radians() } else { v };
+            let in_degrees = item.unit.is_none()
+                && self.units.get(&name.to_ascii_uppercase()).is_some_and(|u| is_degrees(u));
+            let value = if in_degrees { v.to_radians() } else { v * factor };
             self.inputs.push(InputValue { name, value, unit: item.unit.clone(), span: item.span.clone() });
         }
         Ok(())
@@ -158,6 +188,16 @@ impl Interpreter {
         }
         Ok(())
     }
+}
+
+/// A unit tag that is not a unit, at `span`.
+fn unit_error(span: &Span, e: String) -> Diagnostic {
+    let unknown = e.strip_prefix("unknown unit `").and_then(|w| w.strip_suffix('`'));
+    if let Some(Err(d)) = unknown.map(|w| unit_word(w, span)) {
+        return d;
+    }
+    Diagnostic::error(span.clone(), e)
+        .with_help("a unit is unit names joined by *, / and ^ (or .), e.g. M/S^2, KG*M^2, KG.M^2 or RAD/SEC")
 }
 
 /// `Q` with ranges `[(1,3)]` -> `Q1, Q2, Q3`; `P` with `[(1,2),(1,3)]` -> `P11, P12, ..., P23`.

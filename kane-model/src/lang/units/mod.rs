@@ -2,6 +2,8 @@
 //! unit word; out: its text, upper-cased, or an error naming an unknown unit and listing the
 //! known ones. [`normalised`] makes unit texts comparable regardless of case and spacing.
 
+pub mod size;
+
 use super::ast::{BinOp, Expr, ExprKind};
 use super::diagnostic::Diagnostic;
 use super::interp::names::edit_distance;
@@ -50,7 +52,7 @@ pub fn unit_expression(e: &Expr) -> Result<String, Diagnostic> {
 /// `word` upper-cased if it is a known unit, else an error at `span` naming it.
 pub fn unit_word(word: &str, span: &Span) -> Result<String, Diagnostic> {
     let upper = word.to_ascii_uppercase();
-    if KNOWN_UNITS.contains(&upper.as_str()) {
+    if size::word_size(&upper).is_some() {
         return Ok(upper);
     }
     let nearest = KNOWN_UNITS

@@ -1,0 +1,48 @@
+//! The summary line of a file's bookkeeping commands: which were applied (UNITSYSTEM) and
+//! which ignored (they change only Autolev's own printing, saving and pausing).
+
+use super::super::interp::LoadedModel;
+
+/// `applied: UNITSYSTEM (line 2); ignored (Autolev's session only): AUTOZ (line 8), ...`, or
+/// `None` when the file has no bookkeeping commands.
+pub fn bookkeeping_summary(model: &LoadedModel, source: &str) -> Option<String> {
+    let line = |at: usize| source[..at.min(source.len())].matches('\n').count() + 1;
+    let list = |applied: bool| {
+        let items: Vec<String> = model
+            .bookkeeping
+            .iter()
+            .filter(|b| b.applied == applied)
+            .map(|b| format!("{} (line {})", b.command, line(b.span.start)))
+            .collect();
+        items.join(", ")
+    };
+    let mut parts = Vec::new();
+    let applied = list(true);
+    if !applied.is_empty() {
+        parts.push(format!("applied: {applied}"));
+    }
+    let ignored = list(false);
+    if !ignored.is_empty() {
+        parts
+            .push(format!("ignored (they change only Autolev's own printing, saving or pausing): {ignored}"));
+    }
+    (!parts.is_empty()).then(|| parts.join("; "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::bookkeeping_summary;
+
+    #[test]
+    fn applied_and_ignored_commands_are_listed_with_their_lines() {
+        let src = "UNITSYSTEM KG, METER, SEC\nAUTOZ ON\nCONSTANTS M;\nENCODE M\nPAUSE\n";
+        let m = crate::lang::load("b.al", src).unwrap();
+        assert_eq!(
+            bookkeeping_summary(&m, src).unwrap(),
+            "applied: UNITSYSTEM (line 1); ignored (they change only Autolev's own printing, saving or \
+             pausing): AUTOZ (line 2), ENCODE (line 4), PAUSE (line 5)"
+        );
+        let plain = crate::lang::load("p.al", "CONSTANTS M\n").unwrap();
+        assert_eq!(bookkeeping_summary(&plain, "CONSTANTS M\n"), None);
+    }
+}
