@@ -27,8 +27,11 @@ fn gyro_sim(args: &[&str], cache: &Path) -> Output {
         .env("GYRO_SIM_CACHE", cache.join("cache"))
         .env("GYRO_SIM_TARGET_DIR", Path::new(env!("CARGO_TARGET_TMPDIR")).join("compiled-models"))
         // The dev profile: the build (every dependency, in a target folder of its own) takes a
-        // fraction of a release build's time; what is tested does not depend on it.
+        // fraction of a release build's time; what is tested does not depend on it. Built once,
+        // so without debug information or incremental state.
         .env("GYRO_SIM_MODEL_PROFILE", "dev")
+        .env("CARGO_PROFILE_DEV_DEBUG", "false")
+        .env("CARGO_INCREMENTAL", "0")
         .output()
         .unwrap()
 }

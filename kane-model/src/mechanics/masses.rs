@@ -127,6 +127,17 @@ impl Model {
         self.gravity_on_masses(g, false)
     }
 
+    /// Uniform gravity on the bodies and particles `only` (Autolev's `GRAVITY(G>, B, C)`); each
+    /// must have its mass given.
+    pub fn add_gravity_to(&mut self, g: &Vector, only: &[MassId]) -> Result<()> {
+        for id in only {
+            let view = self.mass_view(*id);
+            let f = self.scale(g, view.mass()?)?;
+            self.add_force(view.point, f);
+        }
+        Ok(())
+    }
+
     /// The force `mass * g` at each mass centre, once per mass; a mass not given is an error
     /// (before any force is applied) when `every` is set, and skipped otherwise.
     fn gravity_on_masses(&mut self, g: &Vector, every: bool) -> Result<()> {

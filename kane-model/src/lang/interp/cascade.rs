@@ -4,7 +4,7 @@
 
 use rustc_hash::FxHashSet;
 
-use super::super::ast::StmtKind;
+use super::super::ast::{Stmt, StmtKind};
 use super::super::parser::SESSION_COMMANDS;
 use super::super::token::Span;
 
@@ -18,7 +18,23 @@ impl Tainted {
     /// Adds the names in `source[span]`.
     pub(crate) fn add(&mut self, source: &str, span: &Span) {
         let text = source.get(span.start..span.end.min(source.len())).unwrap_or("");
-        self.names.extend(identifiers(text).map(|w| w.to_ascii_uppercase()));
+        self.names.extend(identifiers(text).map(|w| w.trim_end_matches('>').to_ascii_uppercase()));
+    }
+
+    /// Adds what the failed statement `s` would have set up: the names it declares, the name it
+    /// assigns, or, for a command, MASS or INERTIA, every name it mentions. Units, INPUT,
+    /// OUTPUT, CODE and session commands set up nothing later statements use.
+    pub(crate) fn add_statement(&mut self, source: &str, s: &Stmt) {
+        match &s.kind {
+            StmtKind::Declare { items, .. } => {
+                self.names.extend(items.iter().map(|i| i.name.to_ascii_uppercase()))
+            }
+            StmtKind::Assign { target, .. } => {
+                self.names.insert(target.name.to_ascii_uppercase());
+            }
+            StmtKind::Expr(_) | StmtKind::Mass(_) | StmtKind::Inertia { .. } => self.add(source, &s.span),
+            _ => {}
+        }
     }
 
     /// Adds the names on the line of `source` that holds byte `at`, unless the line is one
@@ -27,10 +43,17 @@ impl Tainted {
         let at = at.min(source.len());
         let start = source[..at].rfind('\n').map_or(0, |i| i + 1);
         let end = source[at..].find('\n').map_or(source.len(), |i| at + i);
-        let first = identifiers(&source[start..end]).next().unwrap_or("").to_ascii_uppercase();
+        let line = &source[start..end];
+        let first = identifiers(line).next().unwrap_or("").trim_end_matches('>').to_ascii_uppercase();
         let sets_nothing = ["UNITS", "UNITSYSTEM", "INPUT", "OUTPUT", "CODE"].contains(&first.as_str())
             || SESSION_COMMANDS.contains(&first.as_str());
-        if !sets_nothing {
+        let assigns = line[line.find(|c: char| c.is_ascii_alphabetic()).unwrap_or(0)..]
+            .trim_start_matches(|c: char| c.is_ascii_alphanumeric() || c == '_' || c == '>' || c == '\'')
+            .trim_start()
+            .starts_with('=');
+        if assigns {
+            self.names.insert(first);
+        } else if !sets_nothing {
             self.add(source, &(start..end));
         }
     }
@@ -56,34 +79,34 @@ impl Tainted {
         }
         words.any(|w| {
             let upper = w.to_ascii_uppercase();
-            let axis = upper.trim_end_matches(|c: char| c.is_ascii_digit());
-            self.names.contains(&upper)
-                || self.names.contains(axis)
+            // `C1>`: a unit vector of frame C.
+            let axis = upper.strip_suffix('>').map(|v| v.trim_end_matches(|c: char| c.is_ascii_digit()));
+            let upper = upper.trim_end_matches('>');
+            self.names.contains(upper)
+                || axis.is_some_and(|frame| self.names.contains(frame))
                 || upper.split('_').filter(|p| !p.is_empty()).any(|p| self.names.contains(p))
         })
     }
 }
 
-/// True for a statement whose failure leaves names undefined or unset (a declaration, an
-/// assignment, a command, MASS or INERTIA); units, INPUT, OUTPUT, CODE and session commands
-/// set up nothing later statements use.
-pub(crate) fn sets_something(kind: &StmtKind) -> bool {
-    !matches!(
-        kind,
-        StmtKind::Units(_)
-            | StmtKind::UnitSystem(_)
-            | StmtKind::Input(_)
-            | StmtKind::Output(_)
-            | StmtKind::Code { .. }
-            | StmtKind::Session { .. }
-            | StmtKind::Setting { .. }
-    )
-}
-
-/// The identifiers in `text`: a letter, then letters, digits and `_`.
+/// The identifiers in `text` (a letter, then letters, digits and `_`), a vector's with its `>`.
 fn identifiers(text: &str) -> impl Iterator<Item = &str> {
-    text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-        .filter(|w| w.starts_with(|c: char| c.is_ascii_alphabetic()))
+    let mut out = Vec::new();
+    let mut start = None;
+    let bytes = text.as_bytes();
+    for (i, c) in text.char_indices().chain(std::iter::once((text.len(), ' '))) {
+        let inside = c.is_ascii_alphanumeric() || c == '_';
+        match (start, inside) {
+            (None, true) if c.is_ascii_alphabetic() => start = Some(i),
+            (Some(s), false) => {
+                let end = if bytes.get(i) == Some(&b'>') { i + 1 } else { i };
+                out.push(&text[s..end]);
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    out.into_iter()
 }
 
 #[cfg(test)]
@@ -102,6 +125,11 @@ mod tests {
         assert!(t.explains("`C1>` is not defined"), "a unit vector of frame C");
         assert!(t.explains("`P_O_D>` is not defined"));
         assert!(!t.explains("`E` is not a body"), "prose and other names are not");
+        t.add_line_of("X = COS(Y) + BAD(Z)\n", 0);
+        assert!(
+            t.explains("`X` is not defined") && !t.explains("`Y` is not defined"),
+            "an assignment sets its target only"
+        );
         let later = "V2PTS(N, D, O, DO)";
         assert!(t.explains_statement(later, &(0..later.len())));
         assert!(!t.explains_statement("MASS E = M", &(0..10)));

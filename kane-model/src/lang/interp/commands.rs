@@ -38,8 +38,15 @@ impl Interpreter {
                 self.model.angular_velocity(a, b).map(|_| ()).at(&e.span)
             }
             "GRAVITY" => {
-                super::arity(&upper, args, 1, &e.span)?;
-                self.gravity = Some(self.vector(&args[0])?);
+                let Some((g, bodies)) = args.split_first() else {
+                    return Err(Diagnostic::error(
+                        e.span.clone(),
+                        "GRAVITY needs the acceleration of gravity",
+                    )
+                    .with_help("e.g. GRAVITY(-G*N2>), or GRAVITY(-G*N2>, B, C) for some masses only"));
+                };
+                let only = if bodies.is_empty() { None } else { Some(self.mass_ids(bodies)?) };
+                self.gravity = Some((self.vector(g)?, only));
                 self.prepared = false;
                 Ok(())
             }

@@ -63,7 +63,18 @@ impl Interpreter {
                 return Ok(v.clone());
             }
         }
-        if let Some(Value::Matrix { rows, cols, data }) = self.lookup_value(&key) {
+        // A matrix by name: assigned, or a direction-cosine matrix `N_A` (`N_A[1,2]`).
+        let matrix = match self.lookup_value(&key) {
+            Some(v) => Some(v),
+            None => {
+                let whole = Expr {
+                    kind: ExprKind::Name { name: name.to_string(), suffix: 0, primes: 0 },
+                    span: e.span.clone(),
+                };
+                self.eval(&whole).ok()
+            }
+        };
+        if let Some(Value::Matrix { rows, cols, data }) = matrix {
             if let Some(k) = value::matrix_position(&idx, rows, cols) {
                 return Ok(Value::Scalar(data[k]));
             }

@@ -22,11 +22,6 @@ const UNSUPPORTED: &[(&str, &str)] = &[
     ("POLYNOMIAL", "polynomial construction"),
     ("ROOTS", "polynomial roots"),
     ("EIG", "eigenvalues (use Model::linearize and a numeric eigen-solver)"),
-    ("FACTORIAL", "factorial"),
-    ("CEIL", "ceiling"),
-    ("FLOOR", "floor"),
-    ("INT", "integer part"),
-    ("ROUND", "rounding"),
     ("INCLUDE", "term selection"),
     ("EXCLUDE", "term selection"),
     ("INV", "symbolic matrix inverse"),
@@ -45,6 +40,7 @@ impl Interpreter {
                 self.vector_function(&upper, args, e)
             }
             "ATAN2" => self.atan2_function(args, e),
+            "INT" | "FLOOR" | "CEIL" | "ROUND" | "FACTORIAL" => self.whole_number_function(&upper, args, e),
             "EVALUATE" | "REPLACE" | "EXPLICIT" | "FACTOR" | "ARRANGE" | "EXPAND" | "COEF" | "RHS" => {
                 self.scalar_function(&upper, args, e)
             }
@@ -56,6 +52,33 @@ impl Interpreter {
             }
             _ => Err(unknown_function(name, &upper, &e.span)),
         }
+    }
+
+    /// INT (the integer part), FLOOR, CEIL, ROUND and FACTORIAL of a number: the argument must
+    /// evaluate to a number (they have no symbolic form), FACTORIAL's to a whole one from 0 to 170.
+    fn whole_number_function(&mut self, upper: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
+        super::arity(upper, args, 1, &e.span)?;
+        let x = self.number(&args[0]).map_err(|_| {
+            Diagnostic::error(
+                args[0].span.clone(),
+                format!("{upper}() of an expression in the model's symbols is not supported"),
+            )
+            .with_help(format!("{upper}() is evaluated when the file is read: give it a number"))
+        })?;
+        let v = match upper {
+            "INT" => x.trunc(),
+            "FLOOR" => x.floor(),
+            "CEIL" => x.ceil(),
+            "ROUND" => x.round(),
+            _ if x.fract() == 0.0 && (0.0..=170.0).contains(&x) => (1..=x as u32).map(f64::from).product(),
+            _ => {
+                return Err(Diagnostic::error(
+                    args[0].span.clone(),
+                    format!("FACTORIAL of {x}: expected a whole number from 0 to 170"),
+                ))
+            }
+        };
+        Ok(Value::Scalar(self.number_expr(v).at(&e.span)?))
     }
 
     /// Applies `f` to every scalar inside a value.

@@ -117,22 +117,31 @@ impl Interpreter {
                 out.push(with_mass(view, span)?);
             }
         }
+        for (a, id) in args.iter().zip(self.mass_ids(args)?) {
+            out.push(with_mass(self.model.mass_view(id), &a.span)?);
+        }
+        Ok(out)
+    }
+
+    /// The bodies and particles `args` name.
+    pub(super) fn mass_ids(&self, args: &[Expr]) -> IResult<Vec<MassId>> {
+        let mut out = Vec::with_capacity(args.len());
         for a in args {
             let ExprKind::Name { name, .. } = &a.kind else {
                 return Err(Diagnostic::error(a.span.clone(), "expected a body or particle name"));
             };
             let key = name.to_ascii_uppercase();
-            let id = match self.bindings.get(&entity_key(&key)) {
+            out.push(match self.bindings.get(&entity_key(&key)) {
                 Some(Binding::Body(b)) => MassId::Body(*b),
                 Some(Binding::Particle(p)) => MassId::Particle(*p),
                 _ => {
                     return Err(Diagnostic::error(
                         a.span.clone(),
                         format!("`{key}` is not a body or particle"),
-                    ))
+                    )
+                    .with_help("name bodies and particles declared with BODIES or PARTICLES"))
                 }
-            };
-            out.push(with_mass(self.model.mass_view(id), &a.span)?);
+            });
         }
         Ok(out)
     }

@@ -28,7 +28,7 @@ mod vector_fns;
 use rustc_hash::FxHashMap;
 
 use crate::expr::{ExprId, SymbolId};
-use crate::mechanics::{BodyId, FrameId, KaneEquations, Model, ParticleId, PointId, Vector};
+use crate::mechanics::{BodyId, FrameId, KaneEquations, MassId, Model, ParticleId, PointId, Vector};
 
 use super::ast::{Expr, Stmt};
 use super::diagnostic::Diagnostic;
@@ -144,7 +144,8 @@ pub(crate) struct Interpreter {
     pub(crate) bindings: FxHashMap<String, Binding>,
     pub(crate) arrays: FxHashMap<String, Vec<(Vec<i64>, Value)>>,
     pub(crate) degrees: bool,
-    pub(crate) gravity: Option<Vector>,
+    /// GRAVITY's acceleration, and the bodies and particles it acts on when it names them.
+    pub(crate) gravity: Option<(Vector, Option<Vec<MassId>>)>,
     pub(crate) forces: Vec<(PointId, Vector)>,
     pub(crate) torques: Vec<(FrameId, Vector)>,
     pub(crate) force_names: FxHashMap<PointId, usize>,
@@ -247,9 +248,7 @@ impl Interpreter {
                 if !tainted.explains(&d.message) && !tainted.explains_statement(source, &s.span) {
                     self.errors.push(d);
                 }
-                if cascade::sets_something(&s.kind) {
-                    tainted.add(source, &s.span);
-                }
+                tainted.add_statement(source, s);
             }
         }
     }

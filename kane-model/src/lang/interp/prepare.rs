@@ -34,8 +34,10 @@ impl Interpreter {
         for (fr, t) in self.torques.clone() {
             self.model.add_torque(fr, t);
         }
-        if let Some(g) = self.gravity.clone() {
-            self.model.add_gravity_to_given_masses(&g).at(span)?;
+        match self.gravity.clone() {
+            Some((g, None)) => self.model.add_gravity_to_given_masses(&g).at(span)?,
+            Some((g, Some(only))) => self.model.add_gravity_to(&g, &only).at(span)?,
+            None => {}
         }
         Ok(())
     }

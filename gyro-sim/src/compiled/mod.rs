@@ -1,9 +1,13 @@
 //! The compiled path: in comes a checked model file; out goes the path of a gyro-sim binary
 //! with that model compiled in (the integrator and the model inlined together, as for the
 //! built-in models). Binaries are cached by the file's equations (its text without its INPUT
-//! lines) and the tool's identity and built once, offline, with cargo; a later run of the same
-//! file reuses the binary, and so does a file whose INPUT values alone changed (the binary reads
-//! them from the file at run time); any other edit builds a new one.
+//! lines) and the tool's identity and built once, offline: by rustc against the workspace's own
+//! compiled libraries, or, when that fails, as a binary of a package of model binaries built
+//! with cargo. A later run of the same file reuses the binary, and so does a file whose INPUT
+//! values alone changed (the binary reads them from the file at run time); any other edit
+//! builds a new one.
+
+mod direct;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -130,7 +134,8 @@ pub fn ensure_binary(file: &ModelFile, taylor: bool) -> Result<(PathBuf, bool), 
         format!("gyro-model-{}-{}-{}{kind}", file.name.replace('_', "-"), &hash[..12], tool_id());
     let target = target_dir();
     let profile = profile();
-    let binary = target.join(profile_folder(&profile)).join(&crate_name);
+    // Binaries live in the cache (one folder per profile), apart from the shared target folder.
+    let binary = cache_dir().join("bin").join(&profile).join(&crate_name);
     if binary.is_file() {
         return Ok((binary, false));
     }
@@ -141,18 +146,43 @@ pub fn ensure_binary(file: &ModelFile, taylor: bool) -> Result<(PathBuf, bool), 
     // One package for every model file (a binary each), so its dependencies build once.
     let dir = cache_dir().join("models").join(format!("gyro-models-{}", tool_id()));
     write_model(&dir, &crate_name, file, &sources, taylor)?;
-    eprintln!("compiling the model {} (once per version of the file) with cargo:", file.path.display());
-    let status = Command::new(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()))
+    eprintln!("compiling the model {} (once per version of the file):", file.path.display());
+    let cargo = std::env::var_os("CARGO").map_or_else(|| PathBuf::from("cargo"), PathBuf::from);
+    if let Some(libs) = direct::libraries(&cargo, &sources, &target, &profile) {
+        let main = dir.join("src").join("bin").join(format!("{crate_name}.rs"));
+        if direct::build(&libs, &dir, &main, &binary) {
+            return Ok((binary, true));
+        }
+        eprintln!("rustc against the workspace's libraries failed; building the model's package with cargo instead:");
+    }
+    let status = Command::new(&cargo)
         .args(["build", "--profile", &profile, "--offline", "--bin", &crate_name, "--manifest-path"])
         .arg(dir.join("Cargo.toml"))
         .arg("--target-dir")
         .arg(&target)
         .status()
         .map_err(|_| CompileError::NoToolchain)?;
-    if !status.success() || !binary.is_file() {
+    let built = target.join(profile_folder(&profile)).join(&crate_name);
+    if !status.success() || !built.is_file() {
         return Err(CompileError::Build(status.code().map_or("none".into(), |c| c.to_string())));
     }
+    place(&built, &binary)?;
     Ok((binary, true))
+}
+
+/// Copies the binary `built` to `binary`, whole or not at all.
+fn place(built: &Path, binary: &Path) -> Result<(), CompileError> {
+    let io =
+        |e: std::io::Error| CompileError::Io { path: binary.display().to_string(), reason: e.to_string() };
+    let partial = binary.with_extension(format!("partial-{}", std::process::id()));
+    if let Some(folder) = binary.parent() {
+        std::fs::create_dir_all(folder).map_err(io)?;
+    }
+    std::fs::copy(built, &partial).map_err(io)?;
+    std::fs::rename(&partial, binary).map_err(|e| {
+        std::fs::remove_file(&partial).ok();
+        io(e)
+    })
 }
 
 /// Writes one model into the models package at `dir`: the package's manifest against the
