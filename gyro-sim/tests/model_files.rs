@@ -26,12 +26,10 @@ fn gyro_sim(args: &[&str], cache: &Path) -> Output {
         .args(args)
         .env("GYRO_SIM_CACHE", cache.join("cache"))
         .env("GYRO_SIM_TARGET_DIR", Path::new(env!("CARGO_TARGET_TMPDIR")).join("compiled-models"))
-        // The dev profile: the build (every dependency, in a target folder of its own) takes a
-        // fraction of a release build's time; what is tested does not depend on it. Built once,
-        // so without debug information or incremental state.
-        .env("GYRO_SIM_MODEL_PROFILE", "dev")
-        .env("CARGO_PROFILE_DEV_DEBUG", "false")
-        .env("CARGO_INCREMENTAL", "0")
+        // The workspace's `model-test` profile (unoptimised, no debug information): the build
+        // (every dependency, in a target folder of its own) takes a fraction of a release
+        // build's time; what is tested does not depend on it.
+        .env("GYRO_SIM_MODEL_PROFILE", "model-test")
         .output()
         .unwrap()
 }

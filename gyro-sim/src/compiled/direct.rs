@@ -4,14 +4,16 @@
 //! (cargo names a path dependency by its place relative to the workspace that builds it).
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::{Command, Output, Stdio};
 
 use serde_json::Value;
 
 /// The compiled libraries a model binary links against, and the profile they were built with.
 pub(super) struct Libraries {
     gyro_sim: PathBuf,
-    kane_model: PathBuf,
+    /// kane-model as gyro-sim links it: cargo may build it twice alike (once for the macro's
+    /// host), so the candidates, the likelier first; rustc tells which one gyro-sim uses.
+    kane_model: Vec<PathBuf>,
     kane_derive: PathBuf,
     deps: PathBuf,
     opt_level: String,
@@ -54,14 +56,14 @@ fn pick(artifacts: &[Value]) -> Option<Libraries> {
             .map(PathBuf::from)
     };
     let gyro = named(artifacts, "gyro_sim").next()?;
-    // kane-model may be built twice (for the macro's host with another profile): take the
-    // one built as gyro-sim is.
-    let model = named(artifacts, "kane_model").find(|a| a["profile"] == gyro["profile"])?;
-    let kane_model = file(model, ".rlib")?;
+    // Built as gyro-sim is first (the macro's host build may have another profile).
+    let mut models: Vec<&Value> = named(artifacts, "kane_model").collect();
+    models.sort_by_key(|a| a["profile"] != gyro["profile"]);
+    let kane_model: Vec<PathBuf> = models.iter().filter_map(|a| file(a, ".rlib")).collect();
     let kane_derive = named(artifacts, "kane_derive").find_map(|a| file(a, std::env::consts::DLL_SUFFIX))?;
     let libraries = Libraries {
         // A dependency's files are in `deps`; gyro-sim's own may be copied up beside it.
-        deps: kane_model.parent()?.to_path_buf(),
+        deps: kane_model.first()?.parent()?.to_path_buf(),
         gyro_sim: file(gyro, ".rlib")?,
         kane_model,
         kane_derive,
@@ -71,11 +73,34 @@ fn pick(artifacts: &[Value]) -> Option<Libraries> {
 }
 
 /// Compiles the binary `main` of the models package at `package` into `out` (written whole
-/// or not at all); false when rustc fails (its messages are on standard error).
+/// or not at all), against each kane-model candidate until one is gyro-sim's; false when none
+/// compiles (rustc's messages for the last are on standard error).
 pub(super) fn build(libs: &Libraries, package: &Path, main: &Path, out: &Path) -> bool {
-    let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
-    let name = out.file_name().and_then(|n| n.to_str()).unwrap_or("model").replace('-', "_");
     let partial = out.with_extension(format!("partial-{}", std::process::id()));
+    if out.parent().is_some_and(|d| std::fs::create_dir_all(d).is_err()) {
+        return false;
+    }
+    for (i, kane_model) in libs.kane_model.iter().enumerate() {
+        let last = i + 1 == libs.kane_model.len();
+        match rustc(libs, kane_model, package, main, &partial) {
+            Some(o) if o.status.success() => {
+                if std::fs::rename(&partial, out).is_ok() {
+                    return true;
+                }
+                break;
+            }
+            Some(o) if last => eprint!("{}", String::from_utf8_lossy(&o.stderr)),
+            _ => {}
+        }
+    }
+    std::fs::remove_file(&partial).ok();
+    false
+}
+
+/// rustc on `main` with `kane_model` as the kane-model crate, writing `out`.
+fn rustc(libs: &Libraries, kane_model: &Path, package: &Path, main: &Path, out: &Path) -> Option<Output> {
+    let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
+    let name = out.file_stem().and_then(|n| n.to_str()).unwrap_or("model").replace('-', "_");
     let extern_ = |krate: &str, path: &Path| format!("{krate}={}", path.display());
     let mut cmd = Command::new(rustc);
     cmd.env("CARGO_MANIFEST_DIR", package)
@@ -86,23 +111,18 @@ pub(super) fn build(libs: &Libraries, package: &Path, main: &Path, out: &Path) -
         .arg("--extern")
         .arg(extern_("gyro_sim", &libs.gyro_sim))
         .arg("--extern")
-        .arg(extern_("kane_model", &libs.kane_model))
+        .arg(extern_("kane_model", kane_model))
         .arg("--extern")
         .arg(extern_("kane_derive", &libs.kane_derive))
         .arg("-L")
         .arg(format!("dependency={}", libs.deps.display()))
         .arg("-o")
-        .arg(&partial);
+        .arg(out);
     if libs.opt_level != "0" {
         // One unit: no link-time pass over sixteen, and the model inlines into the stepper.
         cmd.args(["-C", "codegen-units=1"]);
     }
-    let folder_ok = out.parent().is_none_or(|d| std::fs::create_dir_all(d).is_ok());
-    let ok = folder_ok && cmd.status().is_ok_and(|s| s.success()) && std::fs::rename(&partial, out).is_ok();
-    if !ok {
-        std::fs::remove_file(&partial).ok();
-    }
-    ok
+    cmd.stderr(Stdio::piped()).output().ok()
 }
 
 #[cfg(test)]
@@ -136,7 +156,12 @@ mod tests {
             ),
         ];
         let libs = pick(&all).unwrap();
-        assert_eq!(libs.kane_model, Path::new("/t/release/deps/libkane_model-r.rlib"));
+        assert_eq!(
+            libs.kane_model[0],
+            Path::new("/t/release/deps/libkane_model-r.rlib"),
+            "gyro-sim's profile first"
+        );
+        assert_eq!(libs.kane_model.len(), 2);
         assert_eq!(libs.gyro_sim, Path::new("/t/release/libgyro_sim.rlib"));
         assert_eq!(libs.deps, Path::new("/t/release/deps"), "where the dependencies are");
         assert_eq!(libs.kane_derive, Path::new(&so));
