@@ -76,35 +76,41 @@ fn pick(artifacts: &[Value]) -> Option<Libraries> {
 /// or not at all), against each kane-model candidate until one is gyro-sim's; false when none
 /// compiles (rustc's messages for the last are on standard error).
 pub(super) fn build(libs: &Libraries, package: &Path, main: &Path, out: &Path) -> bool {
-    let partial = out.with_extension(format!("partial-{}", std::process::id()));
     if out.parent().is_some_and(|d| std::fs::create_dir_all(d).is_err()) {
         return false;
     }
-    for (i, kane_model) in libs.kane_model.iter().enumerate() {
-        let last = i + 1 == libs.kane_model.len();
-        match rustc(libs, kane_model, package, main, &partial) {
-            Some(o) if o.status.success() => {
-                if std::fs::rename(&partial, out).is_ok() {
-                    return true;
-                }
-                break;
+    let name = out.file_name().and_then(|n| n.to_str()).unwrap_or("model").replace('-', "_");
+    let built = crate::output::write_atomically(out, |partial| {
+        let mut messages = String::new();
+        for kane_model in &libs.kane_model {
+            match rustc(libs, kane_model, package, main, &name, partial) {
+                Some(o) if o.status.success() => return Ok(()),
+                Some(o) => messages = String::from_utf8_lossy(&o.stderr).into_owned(),
+                None => messages = "rustc could not be run".into(),
             }
-            Some(o) if last => eprint!("{}", String::from_utf8_lossy(&o.stderr)),
-            _ => {}
         }
+        Err(messages)
+    });
+    if let Err(messages) = &built {
+        eprint!("{messages}");
     }
-    std::fs::remove_file(&partial).ok();
-    false
+    built.is_ok()
 }
 
-/// rustc on `main` with `kane_model` as the kane-model crate, writing `out`.
-fn rustc(libs: &Libraries, kane_model: &Path, package: &Path, main: &Path, out: &Path) -> Option<Output> {
+/// rustc on `main` with `kane_model` as the kane-model crate, the crate `name`, writing `out`.
+fn rustc(
+    libs: &Libraries,
+    kane_model: &Path,
+    package: &Path,
+    main: &Path,
+    name: &str,
+    out: &Path,
+) -> Option<Output> {
     let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
-    let name = out.file_stem().and_then(|n| n.to_str()).unwrap_or("model").replace('-', "_");
     let extern_ = |krate: &str, path: &Path| format!("{krate}={}", path.display());
     let mut cmd = Command::new(rustc);
     cmd.env("CARGO_MANIFEST_DIR", package)
-        .args(["--edition", "2021", "--crate-type", "bin", "--crate-name", &name])
+        .args(["--edition", "2021", "--crate-type", "bin", "--crate-name", name])
         .arg("-C")
         .arg(format!("opt-level={}", libs.opt_level))
         .arg(main)

@@ -172,17 +172,12 @@ pub fn ensure_binary(file: &ModelFile, taylor: bool) -> Result<(PathBuf, bool), 
 
 /// Copies the binary `built` to `binary`, whole or not at all.
 fn place(built: &Path, binary: &Path) -> Result<(), CompileError> {
-    let io =
-        |e: std::io::Error| CompileError::Io { path: binary.display().to_string(), reason: e.to_string() };
-    let partial = binary.with_extension(format!("partial-{}", std::process::id()));
+    let io = |reason: String| CompileError::Io { path: binary.display().to_string(), reason };
     if let Some(folder) = binary.parent() {
-        std::fs::create_dir_all(folder).map_err(io)?;
+        std::fs::create_dir_all(folder).map_err(|e| io(e.to_string()))?;
     }
-    std::fs::copy(built, &partial).map_err(io)?;
-    std::fs::rename(&partial, binary).map_err(|e| {
-        std::fs::remove_file(&partial).ok();
-        io(e)
-    })
+    let copy = |partial: &Path| std::fs::copy(built, partial).map(|_| ()).map_err(|e| e.to_string());
+    crate::output::write_atomically(binary, copy).map_err(io)
 }
 
 /// Writes one model into the models package at `dir`: the package's manifest against the

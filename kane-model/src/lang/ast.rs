@@ -169,13 +169,9 @@ pub enum StmtKind {
     },
     /// `UNITSYSTEM KG, METER, SEC`: upper-cased unit words and where each is.
     UnitSystem(Vec<(String, Span)>),
-    /// A command of Autolev's session (`AUTOZ ON`, `ENCODE ZERO`, `SAVE F.ALL`, `PAUSE`).
-    Session {
-        /// The command, upper-cased.
-        command: String,
-        /// Its arguments as written.
-        text: String,
-    },
+    /// A command of Autolev's session (`AUTOZ ON`, `ENCODE ZERO`, `SAVE F.ALL`, `PAUSE`),
+    /// upper-cased; its arguments are not kept.
+    Session(String),
     /// `UNITS a = unit, ...`.
     Units(Vec<(String, Span, Expr)>),
     /// `INPUT a = value [unit], ...`.

@@ -295,19 +295,11 @@ impl<'a> Parser<'a> {
         Ok(StmtKind::UnitSystem(out))
     }
 
-    /// A command of Autolev's session (ENCODE, SAVE, PAUSE, AUTOZ ON, ...), its arguments kept
-    /// as written.
+    /// A command of Autolev's session (ENCODE, SAVE, PAUSE, AUTOZ ON, ...): the rest of the
+    /// statement is its arguments, which change nothing here.
     fn session_stmt(&mut self, command: String) -> StmtKind {
-        self.pos += 1;
-        let text = if self.at_end() {
-            String::new()
-        } else {
-            let from = self.toks[self.pos].span.start;
-            let to = self.toks[self.toks.len() - 1].span.end;
-            self.src[from..to].trim().to_string()
-        };
         self.pos = self.toks.len();
-        StmtKind::Session { command, text }
+        StmtKind::Session(command)
     }
 
     /// `MASS B = m, ...`.

@@ -1,18 +1,18 @@
 //! The summary line of a file's bookkeeping commands: which were applied (UNITSYSTEM) and
 //! which ignored (they change only Autolev's own printing, saving and pausing).
 
+use super::super::diagnostic::line_column;
 use super::super::interp::LoadedModel;
 
 /// `applied: UNITSYSTEM (line 2); ignored (Autolev's session only): AUTOZ (line 8), ...`, or
 /// `None` when the file has no bookkeeping commands.
 pub fn bookkeeping_summary(model: &LoadedModel, source: &str) -> Option<String> {
-    let line = |at: usize| source[..at.min(source.len())].matches('\n').count() + 1;
     let list = |applied: bool| {
         let items: Vec<String> = model
             .bookkeeping
             .iter()
             .filter(|b| b.applied == applied)
-            .map(|b| format!("{} (line {})", b.command, line(b.span.start)))
+            .map(|b| format!("{} (line {})", b.command, line_column(source, b.span.start).0))
             .collect();
         items.join(", ")
     };

@@ -1,7 +1,7 @@
 //! Rendering [`PrintedEoms`]: plain text, strings for JSON, and a LaTeX `align*` block, each
 //! with the named intermediates its quantities use defined first.
 
-use crate::expr::{Arena, Collected, ExprId, Intermediates};
+use crate::expr::{Arena, Collected, CollectedTerm, ExprId, Intermediates};
 
 use super::{PrintedEoms, Shown};
 
@@ -34,18 +34,18 @@ fn intermediates<'a>(ar: &Arena, xs: impl IntoIterator<Item = &'a Shown>) -> Int
     for s in xs {
         match s {
             Shown::Named(x) => roots.push(*x),
-            Shown::Collected(c) => long_pieces(ar, c, &mut roots),
+            Shown::Collected(c) => long_pieces(ar, &c.terms, &mut roots),
         }
     }
     Intermediates::new(ar, &roots)
 }
 
-/// The pieces of `c` whose text is longer than [`LONGEST_INLINE_PIECE`], once per use.
-fn long_pieces(ar: &Arena, c: &Collected, out: &mut Vec<ExprId>) {
-    for t in &c.terms {
+/// The pieces of `terms` whose text is longer than [`LONGEST_INLINE_PIECE`], once per use.
+fn long_pieces(ar: &Arena, terms: &[CollectedTerm], out: &mut Vec<ExprId>) {
+    for t in terms {
         let pieces = t.scale.iter().chain(t.coefficient.iter().map(|(_, x)| x)).chain(&t.factors);
         out.extend(pieces.filter(|x| ar.to_text(**x).len() > LONGEST_INLINE_PIECE));
-        long_pieces(ar, &Collected { terms: t.inner.clone() }, out);
+        long_pieces(ar, &t.inner, out);
     }
 }
 

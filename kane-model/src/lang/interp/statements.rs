@@ -33,7 +33,7 @@ impl Interpreter {
                 Ok(())
             }
             StmtKind::UnitSystem(words) => self.unit_system(words, &s.span),
-            StmtKind::Session { command, .. } => {
+            StmtKind::Session(command) => {
                 self.bookkeeping.push(Bookkeeping {
                     command: command.clone(),
                     span: s.span.clone(),
@@ -86,18 +86,18 @@ impl Interpreter {
         Ok(())
     }
 
-    /// `DEGREES ON`, and settings that change only how Autolev prints.
+    /// `DEGREES ON`, and settings that change only how Autolev computes in complex numbers or
+    /// names Z variables (the session's printing settings are session commands).
     fn setting(&mut self, name: &str, on: bool, span: &Span) -> IResult<()> {
         match name {
             "DEGREES" => {
                 self.degrees = on;
                 Ok(())
             }
-            "COMPLEX" | "AUTOZ" | "AUTOEPS" | "AUTORHS" | "ZEE_NOT" | "BEEP" | "OVERWRITE" | "PRINT" => {
-                Ok(())
-            }
-            _ => Err(Diagnostic::error(span.clone(), format!("unknown setting `{name}`"))
-                .with_help("known settings: DEGREES, COMPLEX, AUTOZ")),
+            "COMPLEX" | "ZEE_NOT" => Ok(()),
+            _ => Err(Diagnostic::error(span.clone(), format!("unknown setting `{name}`")).with_help(
+                "known settings: DEGREES, COMPLEX, ZEE_NOT, and the session's AUTOZ, AUTORHS, ...",
+            )),
         }
     }
 
