@@ -46,7 +46,7 @@ pub enum BuildError {
 /// The generated code of the model file `path` (its text `source`), named after the file.
 pub fn generate_file(path: &Path, source: &str, options: &CodeOptions) -> Result<Emitted, BuildError> {
     let shown = path.display().to_string();
-    let loaded = crate::lang::check(&shown, source)?.model;
+    let loaded = crate::lang::check_for_generation(&shown, source)?.model;
     let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
     let codegen = |source| BuildError::Codegen { model: shown.clone(), source };
     let mut spec = loaded.into_spec(&name).map_err(codegen)?;

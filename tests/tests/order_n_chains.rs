@@ -191,3 +191,48 @@ fn the_planar_chain_costs_linear_operations() {
     let (per_link_low, per_link_high) = ((c20 - c10) as f64 / 10.0, (c40 - c20) as f64 / 20.0);
     assert!(per_link_high <= 1.05 * per_link_low, "{c10} {c20} {c40}");
 }
+
+/// A spec loaded for generation: a large tree's `M` and `f` may be left unformed.
+fn spec_for_generation(file: &str) -> ModelSpec {
+    let loaded =
+        kane_model::lang::load_for_generation("chain.al", file).unwrap_or_else(|r| panic!("{}", r.render()));
+    loaded.into_spec("chain").unwrap()
+}
+
+#[test]
+fn a_long_chain_is_generated_without_forming_its_mass_matrix() {
+    let c = Chain { links: 40, spatial: false, extras: true };
+    let mut deferred = spec_for_generation(&chain_file(c));
+    assert!(!deferred.equations.formed, "M and f wait for the mass-matrix form");
+    let lowered = lower(&mut deferred).unwrap();
+    assert!(lowered.order_n);
+    assert!(!deferred.equations.formed, "the order-n form needs no M");
+    let eager = spec(c);
+    let mut rng = StdRng::seed_from_u64(5);
+    let nq = c.links;
+    for _ in 0..5 {
+        let (values, y) = sample(&eager, &mut rng);
+        let by_name = |name: &str| values.get(name).copied();
+        let (_, want) = interpreted_rhs(&eager.model.ar, &eager.equations, &by_name);
+        let code = run(&deferred, &lowered, &values, &y);
+        // The reference solves a 40-link M, whose conditioning costs it digits (about 3e-12 here).
+        let d = normwise(&code[nq..], &want);
+        assert!(d < 1e-10, "{d:e}");
+    }
+}
+
+#[test]
+fn a_statement_that_changes_the_model_after_kane_forms_the_equations_first() {
+    let c = Chain { links: 20, spatial: false, extras: false };
+    let file = chain_file(c) + "MASS B1 = 5*M1\n";
+    let deferred = spec_for_generation(&file);
+    assert!(deferred.equations.formed);
+    let eager = kane_model::lang::load("chain.al", &file).unwrap().into_spec("chain").unwrap();
+    let mut rng = StdRng::seed_from_u64(6);
+    let (values, _) = sample(&eager, &mut rng);
+    let by_name = |name: &str| values.get(name).copied();
+    let (_, want) = interpreted_rhs(&eager.model.ar, &eager.equations, &by_name);
+    let (_, got) = interpreted_rhs(&deferred.model.ar, &deferred.equations, &by_name);
+    assert!(normwise(&got, &want) < 1e-12, "the equations use the mass at KANE()");
+    assert!(lower(&mut { deferred }).unwrap().order_n);
+}

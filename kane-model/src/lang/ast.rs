@@ -11,6 +11,22 @@ pub struct Expr {
     pub span: Span,
 }
 
+impl Expr {
+    /// True when `found` holds for this expression or any expression inside it.
+    pub fn any(&self, found: &impl Fn(&Expr) -> bool) -> bool {
+        if found(self) {
+            return true;
+        }
+        match &self.kind {
+            ExprKind::Number { .. } | ExprKind::Name { .. } => false,
+            ExprKind::Call { args, .. } | ExprKind::Index { args, .. } => args.iter().any(|a| a.any(found)),
+            ExprKind::Matrix(rows) => rows.iter().flatten().any(|a| a.any(found)),
+            ExprKind::Neg(a) | ExprKind::NamedArg(_, a) => a.any(found),
+            ExprKind::Binary(_, a, b) | ExprKind::Range(a, b) => a.any(found) || b.any(found),
+        }
+    }
+}
+
 /// Binary operators.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BinOp {

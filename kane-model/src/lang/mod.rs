@@ -28,7 +28,7 @@ mod token;
 pub mod units;
 
 pub use ast::{BinOp, Expr, ExprKind, Stmt, StmtKind};
-pub use check::{bookkeeping_summary, check, Checked, OVERRIDE_MARKER};
+pub use check::{bookkeeping_summary, check, check_for_generation, Checked, OVERRIDE_MARKER};
 pub use compare::{compare, Comparison, Outcome, Relation};
 pub use diagnostic::{line_column, Diagnostic, Report, Severity};
 pub use eoms::{printed_eoms, EomsError, EomsText, PrintedEoms, Shown, COLLECT_BUDGET, COLLECT_TOTAL};
@@ -52,8 +52,19 @@ pub fn parse(file: &str, source: &str) -> Result<Vec<Stmt>, Report> {
 /// Parses and runs a model file: declarations, kinematics, loads and, if the file asks for it,
 /// Kane's equations. Every error found is reported, with its place in the file.
 pub fn load(file: &str, source: &str) -> Result<LoadedModel, Report> {
+    load_with(file, source, false)
+}
+
+/// As [`load`], for code generation: a large tree's Kane `M` and `f`, and assignments of FR()
+/// and FRSTAR(), wait until something asks for them (its order-n form may need neither).
+pub fn load_for_generation(file: &str, source: &str) -> Result<LoadedModel, Report> {
+    load_with(file, source, true)
+}
+
+fn load_with(file: &str, source: &str, defer: bool) -> Result<LoadedModel, Report> {
     let (stmts, mut errors) = parser::parse(source);
     let mut it = interp::Interpreter::new();
+    it.defer = defer;
     it.run(&stmts, source, &errors);
     errors.extend(std::mem::take(&mut it.errors));
     if errors.is_empty() {

@@ -36,6 +36,9 @@ pub struct KaneEquations {
     pub mass_matrix: Vec<Vec<ExprId>>,
     /// The forcing vector `f`.
     pub forcing: Vec<ExprId>,
+    /// False while `mass_matrix` and `forcing` are not formed (empty): a large tree whose
+    /// order-n form may never need them; [`Model::form_equations`] forms them.
+    pub formed: bool,
 }
 
 /// The motion of one mass: a rigid body or a particle (no inertia, no rotation).
@@ -93,7 +96,7 @@ impl Model {
     }
 
     /// Velocity and acceleration of a point in the Newtonian frame, dependent speeds eliminated.
-    fn point_motion(&mut self, point: PointId) -> Result<(Vector, Vector)> {
+    pub(crate) fn point_motion(&mut self, point: PointId) -> Result<(Vector, Vector)> {
         let n = self.newtonian;
         let v = self.velocity(point, n)?;
         let v = self.eliminate_dependent_vector(&v)?;
@@ -330,6 +333,17 @@ impl Model {
             .zip(&frstar0)
             .map(|(a, b)| Ok(self.ar.add(&[*a, *b])?))
             .collect::<Result<Vec<ExprId>>>()?;
+        let mut eqs = self.kane_unformed()?;
+        eqs.mass_matrix = mass_matrix;
+        eqs.forcing = forcing;
+        eqs.formed = true;
+        Ok(eqs)
+    }
+
+    /// Kane's equations without `M` and `f` (`formed` false): coordinates, speeds, their
+    /// rates and the kinematic differential equations.
+    pub fn kane_unformed(&mut self) -> Result<KaneEquations> {
+        self.check_ready()?;
         let coordinates = self.coordinates.clone();
         let kinematics = coordinates
             .iter()
@@ -344,8 +358,17 @@ impl Model {
             dependent_speeds: self.dependent_speeds(),
             speed_derivatives: self.speed_derivative_symbols()?,
             kinematics,
-            mass_matrix,
-            forcing,
+            mass_matrix: Vec::new(),
+            forcing: Vec::new(),
+            formed: false,
         })
+    }
+
+    /// Forms `M` and `f` of `eqs` when they are not yet formed (the model unchanged since).
+    pub fn form_equations(&mut self, eqs: &mut KaneEquations) -> Result<()> {
+        if !eqs.formed {
+            *eqs = self.kane()?;
+        }
+        Ok(())
     }
 }

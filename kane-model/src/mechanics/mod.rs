@@ -34,4 +34,5 @@ pub use inertia::Shape;
 pub use kane::{KaneEquations, COLLECT_TERMS_BUDGET};
 pub use masses::{MassId, MassView};
 pub use model::{Body, Load, Model, Orientation, Particle};
+pub use order_n::{ldlt_operations, ORDER_N_FIRST_ABOVE};
 pub use vector::{Dyadic, Vector};

@@ -3,13 +3,11 @@
 //! is what it was before the order-n form existed) unless an estimate of its solve alone already
 //! exceeds a cap, where it is derived only if the order-n form does not beat that estimate.
 
+use crate::mechanics::{ldlt_operations, ORDER_N_FIRST_ABOVE};
 use crate::spec::ModelSpec;
 
 use super::super::CodegenError;
 use super::{mass_matrix, order_n, Lowered};
-
-/// Above this many estimated solve operations the order-n form is tried first.
-const CAP: usize = 2000;
 
 /// The cheaper of the two forms of `spec`.
 pub fn lower(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
@@ -17,7 +15,7 @@ pub fn lower(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
         return mass_matrix(spec);
     }
     let estimate = solve_estimate(spec);
-    if estimate <= CAP {
+    if estimate <= ORDER_N_FIRST_ABOVE {
         let mm = mass_matrix(spec);
         let on = order_n(spec)?;
         return pick(mm, on);
@@ -39,24 +37,13 @@ fn pick(mm: Result<Lowered, CodegenError>, on: Option<Lowered>) -> Result<Lowere
     }
 }
 
-/// Operations of `M u' = f`'s `LDL^T` solve alone on the structural nonzeros of `M`, with fill-in
-/// (a multiplication and an addition per update, a division per pivot, two triangular solves):
-/// an estimate, from below, of the mass-matrix form's cost.
+/// Operations of `M u' = f`'s solve alone, on the structural nonzeros of `M` or, while `M` is
+/// not formed, on those the model's tree allows.
 fn solve_estimate(spec: &ModelSpec) -> usize {
-    let m = &spec.equations.mass_matrix;
-    let ar = &spec.model.ar;
-    let n = m.len();
-    let mut nz: Vec<Vec<bool>> = (0..n).map(|i| (0..n).map(|j| !ar.is_zero(m[i][j])).collect()).collect();
-    let mut ops = 0;
-    for k in 0..n {
-        let below: Vec<usize> = (k + 1..n).filter(|i| nz[*i][k]).collect();
-        ops += 1 + below.len() + below.len() * (below.len() + 1);
-        for &i in &below {
-            for &j in &below {
-                nz[i][j] = true;
-            }
-        }
-        ops += 4 * below.len();
+    let eqs = &spec.equations;
+    if !eqs.formed {
+        return spec.model.tree_solve_estimate(eqs).unwrap_or(usize::MAX);
     }
-    ops
+    let ar = &spec.model.ar;
+    ldlt_operations(eqs.mass_matrix.iter().map(|row| row.iter().map(|x| !ar.is_zero(*x)).collect()).collect())
 }

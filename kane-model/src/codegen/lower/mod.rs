@@ -38,6 +38,7 @@ pub fn lower(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
 
 /// The mass-matrix form of `spec` lowered.
 fn mass_matrix(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
+    spec.model.form_equations(&mut spec.equations)?;
     let mut eqs = spec.equations.clone();
     // Generated code runs many times: the collected form is worth its derivation cost.
     spec.model.simplify_equations(&mut eqs)?;

@@ -32,7 +32,16 @@ pub struct Checked {
 /// that contradicts the one its positions and orientations imply is an error (unless its line
 /// ends in a `% override` comment); implausible INPUT values are warnings.
 pub fn check(file: &str, source: &str) -> Result<Checked, Report> {
-    let mut model = super::load(file, source)?;
+    checked(file, source, super::load(file, source)?)
+}
+
+/// As [`check`], loaded by [`super::load_for_generation`]: a large tree's `M` and `f` may be
+/// left unformed.
+pub fn check_for_generation(file: &str, source: &str) -> Result<Checked, Report> {
+    checked(file, source, super::load_for_generation(file, source)?)
+}
+
+fn checked(file: &str, source: &str, mut model: super::LoadedModel) -> Result<Checked, Report> {
     let mut diagnostics = consistency::consistency(&mut model, source);
     diagnostics.extend(coordinates::coordinates_without_kinematics(&model));
     diagnostics.extend(loads::repeated_loads(&model, source));

@@ -11,6 +11,7 @@
 mod assign;
 mod cascade;
 mod commands;
+mod deferral;
 mod eval;
 mod functions;
 mod inertia;
@@ -164,6 +165,12 @@ pub(crate) struct Interpreter {
     pub(crate) errors: Vec<Diagnostic>,
     pub(crate) solved: FxHashMap<String, ExprId>,
     pub(crate) sources: Sources,
+    /// True when work a large tree's order-n form may not need is deferred (see [`deferral`]).
+    pub(crate) defer: bool,
+    /// Deferred statements, in order.
+    pub(crate) deferred: Vec<Stmt>,
+    /// Where the KANE() is whose `M` and `f` are not yet formed.
+    pub(crate) deferred_kane: Option<Span>,
 }
 
 type IResult<T> = Result<T, Diagnostic>;
@@ -232,6 +239,9 @@ impl Interpreter {
             errors: Vec::new(),
             solved: FxHashMap::default(),
             sources: Sources::default(),
+            defer: false,
+            deferred: Vec::new(),
+            deferred_kane: None,
         }
     }
 
@@ -244,7 +254,13 @@ impl Interpreter {
             while let Some(at) = failed_lines.next_if(|at| *at < s.span.start) {
                 tainted.add_line_of(source, at);
             }
-            if let Err(d) = self.statement(s) {
+            self.settle_before(s);
+            let done = match self.defers(s) {
+                Ok(true) => Ok(()),
+                Ok(false) => self.statement(s),
+                Err(d) => Err(d),
+            };
+            if let Err(d) = done {
                 if !tainted.explains(&d.message) && !tainted.explains_statement(source, &s.span) {
                     self.errors.push(d);
                 }

@@ -60,6 +60,12 @@ pub(crate) fn is_candidate(model: &Model, eqs: &KaneEquations) -> bool {
     frames(model, eqs).is_some()
 }
 
+/// The links of `model` without their points (reads the model only); `None` when it is not a
+/// tree of simple rotations whose speeds are the joint rates.
+pub(crate) fn frames_of(model: &Model, eqs: &KaneEquations) -> Option<Vec<Link>> {
+    frames(model, eqs).map(|(links, _)| links)
+}
+
 fn frames(model: &Model, eqs: &KaneEquations) -> Option<(Vec<Link>, FxHashMap<FrameId, usize>)> {
     let n = eqs.speeds.len();
     let constrained = model.constraints.is_some() || !model.configuration_constraints.is_empty();
