@@ -10,6 +10,7 @@ use std::process::{Command, Output};
 const PAPER: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/gimbal_gyroscope.al");
 const VARIANT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/variant_gimbal.al");
 const CHAIN40: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/chain40_rigid.al");
+const DISC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/rolling_disc.al");
 
 /// A fresh folder for one test.
 fn folder(name: &str) -> PathBuf {
@@ -58,6 +59,25 @@ fn a_forty_link_chain_swings_with_its_energy_kept() {
     // Tolerances 1e-10: the energy holds to that over the swing, and the chain moved.
     assert!(drift < 1e-9, "energy drift {drift:e}");
     assert!((q40 - 0.1).abs() > 1e-3, "the last link did not move: {q40}");
+}
+
+#[test]
+fn a_rolling_disc_keeps_its_energy_and_its_contact_speeds() {
+    // Two no-slip constraints, solved numerically at every evaluation, from upright (Q2 = 0).
+    let dir = folder("rolling_disc");
+    let out = dir.join("out");
+    let run = gyro_sim(&["--model", DISC, "--engine", "instant", "--out", out.to_str().unwrap()], &dir);
+    assert!(run.status.success() && text(&run).contains("ran instant"), "{}", text(&run));
+    let rows = rows(&out);
+    let e0 = rows[0][1];
+    let drift = rows.iter().map(|r| (r[1] - e0).abs()).fold(0.0, f64::max) / e0.abs();
+    assert!(drift < 1e-8, "energy drift {drift:e}");
+    // The dependent speed is the rolling one: U4 = R cos(Q1) U3 (R = 0.5).
+    for r in &rows {
+        let (q1, u3, u4) = (r[2], r[3], r[4]);
+        assert!((u4 - 0.5 * q1.cos() * u3).abs() < 1e-12, "{r:?}");
+    }
+    assert!(rows.len() > 10 && (rows.last().unwrap()[2] - 0.3).abs() > 0.1, "the disc did not turn");
 }
 
 #[test]

@@ -7,7 +7,6 @@ pub mod bins;
 use kane_model::expr::{Arena, ExprId};
 use kane_model::mechanics::KaneEquations;
 use kane_model::runtime::GeneratedModel;
-use nalgebra::{DMatrix, DVector};
 use rand::rngs::StdRng;
 use rand::SeedableRng;
 
@@ -16,18 +15,42 @@ pub fn value_of(ar: &Arena, e: ExprId, by_name: &dyn Fn(&str) -> Option<f64>) ->
     ar.eval(&[e], |s| by_name(&ar.symbol_info(s).name.to_ascii_uppercase())).map_or(f64::NAN, |v| v[0])
 }
 
-/// `q'` and `u'` of interpreted equations (`M u' = f` solved by LU) at the named values.
+/// `q'` and `u'` of interpreted equations (solved numerically, constraints included) at the
+/// named values; NaN where they cannot be evaluated.
 pub fn interpreted_rhs(
     ar: &Arena,
     eqs: &KaneEquations,
     by_name: &dyn Fn(&str) -> Option<f64>,
 ) -> (Vec<f64>, Vec<f64>) {
-    let n = eqs.speeds.len();
-    let m = DMatrix::from_fn(n, n, |i, j| value_of(ar, eqs.mass_matrix[i][j], by_name));
-    let f = DVector::from_fn(n, |i, _| value_of(ar, eqs.forcing[i], by_name));
-    let qdot = eqs.kinematics.iter().map(|e| value_of(ar, *e, by_name)).collect();
-    let udot = m.lu().solve(&f).map_or_else(|| vec![f64::NAN; n], |x| x.iter().copied().collect());
-    (qdot, udot)
+    let value = |s: kane_model::expr::SymbolId| by_name(&ar.symbol_info(s).name.to_ascii_uppercase());
+    match eqs.rates_at(ar, &value) {
+        Ok(r) => (r.coordinates, r.speeds),
+        Err(_) => (vec![f64::NAN; eqs.coordinates.len()], vec![f64::NAN; eqs.speeds.len()]),
+    }
+}
+
+/// `y'` of a lowered program at parameters `values` (by upper-case name) and state `y`.
+pub fn lowered_rhs(
+    spec: &kane_model::spec::ModelSpec,
+    lowered: &kane_model::codegen::Lowered,
+    values: &rustc_hash::FxHashMap<String, f64>,
+    y: &[f64],
+) -> Vec<f64> {
+    use kane_model::codegen::ir::Input;
+    let params: Vec<f64> =
+        lowered.params.iter().map(|s| values[&spec.symbol_name(*s).to_ascii_uppercase()]).collect();
+    let p = &lowered.program;
+    let mut derived = vec![0.0; p.derive.results.len()];
+    p.derive.eval(|i| if let Input::Param(k) = i { params[k] } else { f64::NAN }, &mut derived);
+    let mut out = vec![0.0; p.rhs.results.len()];
+    let read = |i: Input| match i {
+        Input::State(k) => y[k],
+        Input::Param(k) => params[k],
+        Input::Derived(k) => derived[k],
+        _ => 0.0,
+    };
+    p.rhs.eval(read, &mut out);
+    out
 }
 
 /// Largest difference of `got` from `want`, relative to the largest of 1 and `|want|`'s entries.

@@ -4,9 +4,9 @@
 //! operation count grows linearly with the number of links.
 
 use kane_model::codegen::taylor::TaylorProgram;
-use kane_model::codegen::{ir::Input, lower, Lowered};
+use kane_model::codegen::{lower, Lowered};
 use kane_model::spec::ModelSpec;
-use kane_tests::{interpreted_rhs, normwise};
+use kane_tests::{interpreted_rhs, lowered_rhs as run, normwise};
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 use rustc_hash::FxHashMap;
@@ -100,24 +100,6 @@ fn sample(spec: &ModelSpec, rng: &mut StdRng) -> (FxHashMap<String, f64>, Vec<f6
         values.insert(spec.symbol_name(*s).to_ascii_uppercase(), *v);
     }
     (values, y)
-}
-
-/// `y'` of the lowered program at parameters `values` and state `y`.
-fn run(spec: &ModelSpec, lowered: &Lowered, values: &FxHashMap<String, f64>, y: &[f64]) -> Vec<f64> {
-    let params: Vec<f64> =
-        lowered.params.iter().map(|s| values[&spec.symbol_name(*s).to_ascii_uppercase()]).collect();
-    let p = &lowered.program;
-    let mut derived = vec![0.0; p.derive.results.len()];
-    p.derive.eval(|i| if let Input::Param(k) = i { params[k] } else { f64::NAN }, &mut derived);
-    let mut out = vec![0.0; p.rhs.results.len()];
-    let read = |i: Input| match i {
-        Input::State(k) => y[k],
-        Input::Param(k) => params[k],
-        Input::Derived(k) => derived[k],
-        _ => 0.0,
-    };
-    p.rhs.eval(read, &mut out);
-    out
 }
 
 /// The worst normwise relative difference of `u'`, between the order-n expressions and the

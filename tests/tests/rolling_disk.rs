@@ -1,19 +1,19 @@
 //! The rolling disk: SymPy's closed-form right-hand side, and the same equations whether the
 //! contact point is taken as fixed or tracked with two nonholonomic constraints.
 
-use kane_model::expr::{Arena, ExprId, SymbolId};
-use kane_model::mechanics::KaneEquations;
+use kane_model::expr::{Arena, SymbolId};
+use kane_model::mechanics::{KaneEquations, Rates};
 use kane_model::models::RollingDisk;
-use nalgebra::{DMatrix, DVector};
 use rand::{Rng, SeedableRng};
 
-/// `u'` at a state given by name.
+/// `q'` and `u'` at a state given by symbol (constraints solved numerically).
+fn rates(ar: &Arena, eqs: &KaneEquations, values: &[(SymbolId, f64)]) -> Rates {
+    eqs.rates_at(ar, &|s| values.iter().find(|v| v.0 == s).map(|v| v.1)).unwrap()
+}
+
+/// `u'` at a state given by symbol.
 fn udot(ar: &Arena, eqs: &KaneEquations, values: &[(SymbolId, f64)]) -> Vec<f64> {
-    let at = |e: ExprId| ar.eval(&[e], |s| values.iter().find(|v| v.0 == s).map(|v| v.1)).unwrap()[0];
-    let n = eqs.speeds.len();
-    let m = DMatrix::from_fn(n, n, |i, j| at(eqs.mass_matrix[i][j]));
-    let f = DVector::from_fn(n, |i, _| at(eqs.forcing[i]));
-    m.lu().solve(&f).unwrap().iter().copied().collect()
+    rates(ar, eqs, values).speeds
 }
 
 fn state(ar: &Arena, rng: &mut impl Rng) -> Vec<(SymbolId, f64)> {
@@ -67,7 +67,7 @@ fn nonholonomic_disk_equals_the_contact_fixed_disk() {
     let mut tracked = RollingDisk::nonholonomic().unwrap();
     let eqs = tracked.model.kane().unwrap();
     assert_eq!(eqs.speeds.len(), 3);
-    assert_eq!(eqs.dependent_speeds.len(), 2);
+    assert_eq!(eqs.constraints.as_ref().map(|c| c.dependent.len()), Some(2));
     assert_eq!(eqs.kinematics.len(), 5);
     let mut rng = rand::rngs::StdRng::seed_from_u64(6);
     for _ in 0..50 {
@@ -83,8 +83,7 @@ fn nonholonomic_disk_equals_the_contact_fixed_disk() {
         assert_speed_rates_agree(&got, &want);
         // The contact point moves as the rolling constraint says: x' = r (u2 - u3 tan q2) cos q1.
         let v = |n: &str| value(&tracked.model.ar, &vals, n);
-        let ar = &tracked.model.ar;
-        let xdot = ar.eval(&[eqs.kinematics[3]], |s| vals.iter().find(|x| x.0 == s).map(|x| x.1)).unwrap()[0];
+        let xdot = rates(&tracked.model.ar, &eqs, &vals).coordinates[3];
         let want_x = v("r") * (v("u2") - v("u3") * v("q2").tan()) * v("q1").cos();
         assert!((xdot - want_x).abs() < 1e-12 * want_x.abs().max(1.0), "x' {xdot} vs {want_x}");
     }
@@ -100,5 +99,32 @@ fn assert_speed_rates_agree(got: &[f64], want: &[f64]) {
             got[i],
             want[i]
         );
+    }
+}
+
+#[test]
+fn the_generated_constrained_rhs_equals_the_numeric_reduction_upright_included() {
+    let mut tracked = RollingDisk::nonholonomic().unwrap();
+    let eqs = tracked.model.kane().unwrap();
+    let mut spec = kane_model::spec::ModelSpec::new("disk", tracked.model, eqs.clone());
+    let lowered = kane_model::codegen::lower(&mut spec).unwrap();
+    let mut rng = rand::rngs::StdRng::seed_from_u64(7);
+    for k in 0..40 {
+        let mut vals = state(&spec.model.ar, &mut rng);
+        if k % 4 == 0 {
+            // Exactly upright, a symmetric state of the disc.
+            let q2 = spec.model.ar.lookup("q2").unwrap();
+            vals.iter_mut().filter(|v| v.0 == q2).for_each(|v| v.1 = 0.0);
+        }
+        let want = rates(&spec.model.ar, &eqs, &vals);
+        let by_name: rustc_hash::FxHashMap<String, f64> =
+            vals.iter().map(|(s, v)| (spec.model.ar.symbol_info(*s).name.to_ascii_uppercase(), *v)).collect();
+        let y: Vec<f64> =
+            spec.states().iter().map(|s| by_name[&spec.symbol_name(*s).to_ascii_uppercase()]).collect();
+        let got = kane_tests::lowered_rhs(&spec, &lowered, &by_name, &y);
+        let mut expected = want.coordinates.clone();
+        expected.extend(&want.speeds);
+        assert!(got.iter().all(|v| v.is_finite()), "{got:?}");
+        assert!(kane_tests::normwise(&got, &expected) < 1e-12, "{got:?} vs {expected:?}");
     }
 }

@@ -9,7 +9,6 @@ use kane_model::codegen::CodeOptions;
 use kane_model::expr::{ExprId, SymbolId, Tape};
 use kane_model::lang::{self, LoadedModel};
 use kane_model::mechanics::KaneEquations;
-use nalgebra::{DMatrix, DVector};
 
 /// Kane's method for Autolev-style model files.
 #[derive(Parser)]
@@ -160,8 +159,14 @@ fn check(file: PathBuf) -> Result<(), String> {
     match &m.equations {
         Some(e) => {
             let mm: Vec<ExprId> = e.mass_matrix.iter().flatten().copied().collect();
+            let dependent = match &e.constraints {
+                Some(c) => {
+                    format!(" and {} dependent ({})", c.dependent.len(), names(&m, &c.dependent).join(", "))
+                }
+                None => String::new(),
+            };
             println!(
-                "{}: ok: {} coordinates ({}), {} speeds ({}), {} bodies; M {n}x{n} in {} operations, f in {}",
+                "{}: ok: {} coordinates ({}), {} speeds ({}){dependent}, {} bodies; M {n}x{n} in {} operations, f in {}",
                 file.display(),
                 e.coordinates.len(),
                 names(&m, &e.coordinates).join(", "),
@@ -170,7 +175,7 @@ fn check(file: PathBuf) -> Result<(), String> {
                 m.model.bodies().len(),
                 ops(&m, &mm),
                 ops(&m, &e.forcing),
-                n = e.speeds.len(),
+                n = e.mass_matrix.len(),
             );
         }
         None => println!("{}: ok: no KANE() in this file", file.display()),
@@ -216,6 +221,7 @@ fn eoms(file: PathBuf, format: Format, partials: bool) -> Result<(), String> {
                 "kinematics": t.kinematics, "partial_velocities": table.lines().collect::<Vec<_>>(),
                 "partial_velocities_left_out": left_out,
                 "mass_matrix": t.mass_matrix, "forcing": t.forcing, "equations": t.equations,
+                "dependent_speeds": p.dependent, "constraints": t.constraints,
             });
             println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
         }
@@ -252,9 +258,15 @@ fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
     let mut roots: Vec<ExprId> = e.mass_matrix.iter().flatten().copied().collect();
     roots.extend(&e.forcing);
     roots.extend(&e.kinematics);
+    let dependent: Vec<SymbolId> = e.constraints.as_ref().map(|c| c.dependent.clone()).unwrap_or_default();
+    if let Some(c) = &e.constraints {
+        roots.extend(c.a_dependent.iter().chain(&c.a_independent).flatten());
+        roots.extend(c.b.iter().chain(&c.bias));
+    }
     let missing: Vec<String> = ar
         .free_symbols(&roots)
         .into_iter()
+        .filter(|s| !dependent.contains(s))
         .map(|s| ar.symbol_info(s).name.clone())
         .filter(|n| !values.contains_key(&n.to_ascii_uppercase()))
         .collect();
@@ -266,28 +278,23 @@ fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
         ));
     }
     let value_of = |s: SymbolId| values.get(&ar.symbol_info(s).name.to_ascii_uppercase()).copied();
-    let at = |x: ExprId| ar.eval(&[x], value_of).map(|v| v[0]).map_err(|err| err.to_string());
-    let n = e.speeds.len();
-    let mass = DMatrix::from_fn(n, n, |i, j| at(e.mass_matrix[i][j]).unwrap_or(f64::NAN));
-    let forcing = DVector::from_fn(n, |i, _| at(e.forcing[i]).unwrap_or(f64::NAN));
-    for x in &roots {
-        at(*x)?;
-    }
-    let qdot = e.kinematics.iter().map(|x| at(*x)).collect::<Result<Vec<f64>, String>>()?;
-    let udot = mass.clone().lu().solve(&forcing).ok_or("the mass matrix is singular at this state")?;
-    let rows: Vec<Vec<f64>> = (0..n).map(|i| (0..n).map(|j| mass[(i, j)]).collect()).collect();
+    let rates = e.rates_at(ar, &value_of).map_err(|err| format!("{}: {err}", file.display()))?;
     if json {
         let v = serde_json::json!({
             "coordinates": names(&m, &e.coordinates), "speeds": names(&m, &e.speeds),
-            "mass_matrix": rows, "forcing": forcing.iter().collect::<Vec<_>>(),
-            "qdot": qdot, "udot": udot.iter().collect::<Vec<_>>(),
+            "dependent_speeds": names(&m, &dependent), "dependent_values": rates.dependent,
+            "mass_matrix": rates.mass_matrix, "forcing": rates.forcing,
+            "qdot": rates.coordinates, "udot": rates.speeds,
         });
         println!("{v}");
     } else {
-        for (name, v) in names(&m, &e.coordinates).iter().zip(&qdot) {
+        for (name, v) in names(&m, &dependent).iter().zip(&rates.dependent) {
+            println!("{name} = {v}");
+        }
+        for (name, v) in names(&m, &e.coordinates).iter().zip(&rates.coordinates) {
             println!("{name}' = {v}");
         }
-        for (name, v) in names(&m, &e.speeds).iter().zip(udot.iter()) {
+        for (name, v) in names(&m, &e.speeds).iter().zip(&rates.speeds) {
             println!("{name}' = {v}");
         }
     }

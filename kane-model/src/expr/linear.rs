@@ -76,6 +76,64 @@ impl Arena {
     }
 }
 
+impl Arena {
+    /// The determinant of the square matrix `rows`, by expansion along rows over column subsets
+    /// (no division: its only zeros are where the matrix is singular).
+    pub fn determinant(&mut self, rows: &[Vec<ExprId>]) -> Result<ExprId, ExprError> {
+        let m = rows.len();
+        if m > 16 || rows.iter().any(|r| r.len() != m) {
+            return Err(ExprError::SingularSystem);
+        }
+        // minors[S]: the determinant of the first |S| rows on the columns in S.
+        let mut minors: FxHashMap<u32, ExprId> = FxHashMap::default();
+        minors.insert(0, self.one());
+        for row in rows {
+            let mut next: FxHashMap<u32, ExprId> = FxHashMap::default();
+            for (&set, &minor) in &minors {
+                for (j, &a) in row.iter().enumerate() {
+                    if set & (1 << j) != 0 || self.is_zero(a) || self.is_zero(minor) {
+                        continue;
+                    }
+                    let bigger = set | (1 << j);
+                    // Moving column j to the end passes the columns of `set` above j.
+                    let above = (set >> j).count_ones();
+                    let mut t = self.mul(&[a, minor])?;
+                    if above % 2 == 1 {
+                        t = self.neg(t)?;
+                    }
+                    let sum = match next.get(&bigger) {
+                        Some(&s) => self.add(&[s, t])?,
+                        None => t,
+                    };
+                    next.insert(bigger, sum);
+                }
+            }
+            minors = next;
+        }
+        Ok(minors.get(&((1u32 << m) - 1)).copied().unwrap_or_else(|| self.zero()))
+    }
+
+    /// The solution of `a x = rhs` by Cramer's rule, `x_j = det(a_j) / det(a)` with column `j`
+    /// replaced by `rhs`: finite wherever `a` is regular, whatever its entries' zeros.
+    pub fn solve_cramer(&mut self, a: &[Vec<ExprId>], rhs: &[ExprId]) -> Result<Vec<ExprId>, ExprError> {
+        let det = self.determinant(a)?;
+        if self.is_zero(det) {
+            return Err(ExprError::SingularSystem);
+        }
+        let mut x = Vec::with_capacity(rhs.len());
+        for j in 0..rhs.len() {
+            let replaced: Vec<Vec<ExprId>> = a
+                .iter()
+                .zip(rhs)
+                .map(|(row, r)| row.iter().enumerate().map(|(k, e)| if k == j { *r } else { *e }).collect())
+                .collect();
+            let num = self.determinant(&replaced)?;
+            x.push(self.div(num, det)?);
+        }
+        Ok(x)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -94,6 +152,32 @@ mod tests {
         let (c, r) = ar.linear_coefficients(e, &[sx, sy]).unwrap();
         assert_eq!(c, vec![sa, three]);
         assert_eq!(r, a);
+    }
+
+    #[test]
+    fn cramers_rule_solves_where_the_first_pivot_vanishes() {
+        let mut ar = Arena::new();
+        let [a, b, c, d, e] = ["a", "b", "c", "d", "e"].map(|n| ar.constant(n).unwrap());
+        let sa = ar.sin(a).unwrap();
+        let one = ar.one();
+        let zero = ar.zero();
+        // [[sin a, 1, 0], [1, 0, b], [0, c, 1]] x = [d, e, 1]: regular at a = 0.
+        let m = vec![vec![sa, one, zero], vec![one, zero, b], vec![zero, c, one]];
+        let x = ar.solve_cramer(&m, &[d, e, one]).unwrap();
+        let vals = [("a", 0.0), ("b", 0.5), ("c", 2.0), ("d", 1.5), ("e", -0.25)];
+        let xs: Vec<f64> = x.iter().map(|xi| ar.eval_named(*xi, &vals).unwrap()).collect();
+        let (bv, cv, dv, ev) = (0.5, 2.0, 1.5, -0.25);
+        // Row 1: x1 = d; row 2: x0 + b x2 = e; row 3: c x1 + x2 = 1.
+        let x2 = 1.0 - cv * dv;
+        let want = [ev - bv * x2, dv, x2];
+        for (g, w) in xs.iter().zip(want) {
+            assert!((g - w).abs() < 1e-14, "{xs:?} {want:?}");
+        }
+        // det = -sin(a) b c - 1, here at a = 0.3.
+        let det = ar.determinant(&m).unwrap();
+        let at = [("a", 0.3), ("b", 0.5), ("c", 2.0)];
+        let want = -(0.3f64).sin() * bv * cv - 1.0;
+        assert!((ar.eval_named(det, &at).unwrap() - want).abs() < 1e-14);
     }
 
     #[test]

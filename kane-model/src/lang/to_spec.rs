@@ -55,6 +55,16 @@ impl LoadedModel {
                 continue;
             }
             let bare = oname.trim_end_matches('>');
+            let dependent = eqs.constraints.iter().flat_map(|c| &c.dependent);
+            if dependent.map(|s| &self.model.ar.symbol_info(*s).name).any(|n| n.eq_ignore_ascii_case(oname)) {
+                // A dependent speed: solved from the constraints where the output is computed.
+                if let Some(super::interp::Binding::Symbol(e, _)) =
+                    self.bindings.get(&oname.to_ascii_uppercase())
+                {
+                    out.push((bare.to_string(), Output::Value(Value::Scalar(*e))));
+                    continue;
+                }
+            }
             match self.value(oname).or_else(|| self.value(&format!("{bare}>"))) {
                 Some(v @ (Value::Scalar(_) | Value::Vector(_))) => {
                     out.push((bare.to_string(), Output::Value(v)))

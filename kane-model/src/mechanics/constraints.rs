@@ -1,17 +1,16 @@
-//! Nonholonomic (motion) constraints: dependent speeds eliminated before Kane's method.
+//! Nonholonomic (motion) constraints `A_d u_d + A_i u_i + b = 0`, kept as coefficients.
 //!
-//! Constraints `sum_k C_jk u_k + c_j = 0` are solved for the dependent speeds,
-//! `u_d = A u_i + b`; velocities, accelerations and kinematic equations are then written in the
-//! independent speeds, so their partial velocities are Kane's constrained partial velocities
-//! `v_r + sum_d A_dr v_d` and `M u_i' = f` has one row per independent speed.
-
-use rustc_hash::FxHashMap;
+//! Velocities and accelerations keep the dependent speeds `u_d` and their rates as symbols;
+//! Kane's equations are formed over all speeds, and the constraint block
+//! ([`super::SpeedConstraints`]) reduces them to the independent speeds numerically wherever
+//! they are evaluated (a factorisation of `A_d` at each evaluation, never a symbolic inverse,
+//! whose denominators vanish at symmetric states where `A_d` is regular). FR() and FRSTAR() of
+//! the language, which are symbolic, use Cramer's rule, whose only denominator is `det A_d`.
 
 use crate::expr::{ExprId, SymbolId};
 
 use super::error::{MechanicsError, Result};
 use super::model::{Model, MotionConstraints};
-use super::vector::Vector;
 
 impl Model {
     /// Declares motion constraints (each expression = 0, linear in the speeds) and the speeds
@@ -30,17 +29,22 @@ impl Model {
         // Constraints may be written with coordinate derivatives: apply q' = ... first.
         self.constraints = None;
         let qdot = self.dependent_map();
-        let constraints = self.ar.subs_many(constraints, &qdot)?;
-        let solution = match self.ar.solve_linear(&constraints, &dep) {
-            Err(crate::expr::ExprError::SingularSystem) => return Err(MechanicsError::SingularConstraints),
-            other => other?,
-        };
-        self.constraints = Some(MotionConstraints { dependent: dep, solution });
-        let rules: Vec<(SymbolId, ExprId)> = self.kinematics.iter().map(|(q, r)| (*q, *r)).collect();
-        for (q, rhs) in rules {
-            let e = self.ar.symbol_expr(q);
-            self.set_kinematics(e, rhs)?;
+        let residuals = self.ar.subs_many(constraints, &qdot)?;
+        let independent: Vec<SymbolId> = self.speeds.iter().copied().filter(|s| !dep.contains(s)).collect();
+        let (mut a_dependent, mut a_independent, mut b) = (Vec::new(), Vec::new(), Vec::new());
+        for &r in &residuals {
+            let all: Vec<SymbolId> = dep.iter().chain(&independent).copied().collect();
+            let (coeffs, rest) = self.ar.linear_coefficients(r, &all)?;
+            a_dependent.push(coeffs[..dep.len()].to_vec());
+            a_independent.push(coeffs[dep.len()..].to_vec());
+            b.push(rest);
         }
+        if (0..dep.len()).any(|j| a_dependent.iter().all(|row| self.ar.is_zero(row[j]))) {
+            return Err(MechanicsError::SingularConstraints);
+        }
+        self.constraints =
+            Some(MotionConstraints { dependent: dep, residuals, a_dependent, a_independent, b });
+        self.clear_kinematics_caches();
         Ok(())
     }
 
@@ -63,24 +67,25 @@ impl Model {
         }
     }
 
-    /// Each dependent speed with its expression in the independent speeds.
-    pub fn dependent_speeds(&self) -> Vec<(SymbolId, ExprId)> {
-        match &self.constraints {
-            Some(c) => c.dependent.iter().copied().zip(c.solution.iter().copied()).collect(),
-            None => Vec::new(),
-        }
+    /// The dependent speeds, in the order CONSTRAIN named them.
+    pub fn dependent_speeds(&self) -> Vec<SymbolId> {
+        self.constraints.as_ref().map(|c| c.dependent.clone()).unwrap_or_default()
     }
 
-    /// Substitution of the dependent speeds by their solutions and of each declared coordinate
-    /// derivative `q'` by its kinematic equation (written in the independent speeds).
-    pub(crate) fn dependent_map(&mut self) -> FxHashMap<ExprId, ExprId> {
-        let mut map: FxHashMap<ExprId, ExprId> =
-            self.dependent_speeds().into_iter().map(|(s, e)| (self.ar.symbol_expr(s), e)).collect();
+    /// The speeds Kane's equations are formed over: the independent ones, then the dependent.
+    pub(crate) fn kane_speeds(&self) -> Vec<SymbolId> {
+        let mut all = self.independent_speeds();
+        all.extend(self.dependent_speeds());
+        all
+    }
+
+    /// Substitution of each declared coordinate derivative `q'` by its kinematic equation.
+    pub(crate) fn dependent_map(&mut self) -> rustc_hash::FxHashMap<ExprId, ExprId> {
+        let mut map = rustc_hash::FxHashMap::default();
         let rules: Vec<(SymbolId, ExprId)> = self.kinematics.iter().map(|(q, r)| (*q, *r)).collect();
         for (q, rhs) in rules {
             let name = format!("{}'", self.ar.symbol_info(q).name);
             if let Some(qd) = self.ar.lookup(&name) {
-                let rhs = self.ar.subs(rhs, &map).unwrap_or(rhs);
                 let key = self.ar.symbol_expr(qd);
                 map.insert(key, rhs);
             }
@@ -88,15 +93,8 @@ impl Model {
         map
     }
 
-    /// `e` with the dependent speeds eliminated.
-    pub(crate) fn eliminate_dependent(&mut self, e: ExprId) -> Result<ExprId> {
-        let map: FxHashMap<ExprId, ExprId> =
-            self.dependent_speeds().into_iter().map(|(s, e)| (self.ar.symbol_expr(s), e)).collect();
-        Ok(self.ar.subs(e, &map)?)
-    }
-
-    /// `v` with the dependent speeds eliminated and the kinematic equations applied.
-    pub(crate) fn eliminate_dependent_vector(&mut self, v: &Vector) -> Result<Vector> {
+    /// `v` with the kinematic equations applied.
+    pub(crate) fn eliminate_dependent_vector(&mut self, v: &super::Vector) -> Result<super::Vector> {
         let map = self.dependent_map();
         if map.is_empty() {
             return Ok(v.clone());
@@ -107,5 +105,28 @@ impl Model {
             m.copy_from_slice(&r);
         }
         Ok(out)
+    }
+
+    /// `x = C^T y` for the constrained partial velocities' map `C = [I; -A_d^-1 A_i]`, by
+    /// Cramer's rule: `y` has one entry per Kane speed (independent, then dependent), `x` one
+    /// per independent speed. Symbolic, for FR() and FRSTAR(); evaluation never goes this way.
+    pub(crate) fn constrain_symbolically(&mut self, y: &[ExprId]) -> Result<Vec<ExprId>> {
+        let Some(c) = self.constraints.clone() else { return Ok(y.to_vec()) };
+        let ni = y.len() - c.dependent.len();
+        let (yi, yd) = y.split_at(ni);
+        // x_r = y_r - sum_k (A_i)_kr z_k with A_d^T z = y_d, z = adj(A_d)^T y_d / det A_d.
+        let ad_t: Vec<Vec<ExprId>> =
+            (0..yd.len()).map(|i| (0..yd.len()).map(|j| c.a_dependent[j][i]).collect()).collect();
+        let z = self.ar.solve_cramer(&ad_t, yd)?;
+        let mut x = Vec::with_capacity(ni);
+        for (r, &y_r) in yi.iter().enumerate() {
+            let mut terms = vec![y_r];
+            for (k, &z_k) in z.iter().enumerate() {
+                let t = self.ar.mul(&[c.a_independent[k][r], z_k])?;
+                terms.push(self.ar.neg(t)?);
+            }
+            x.push(self.ar.add(&terms)?);
+        }
+        Ok(x)
     }
 }

@@ -81,6 +81,18 @@ pub enum MechanicsError {
     /// A constraint matrix cannot be solved for the dependent speeds.
     #[error("the constraints cannot be solved for the dependent speeds (singular coefficient matrix)")]
     SingularConstraints,
+    /// The constraints' matrix of dependent speeds is (nearly) singular at the point asked for.
+    #[error(
+        "the constraints lose rank at {at}: their matrix of dependent speeds has reciprocal condition \
+         number {rcond:e}, so the dependent speeds are not determined there; choose other dependent \
+         speeds, or a configuration away from this one"
+    )]
+    ConstraintRankLoss {
+        /// `A_d`'s smallest over largest singular value.
+        rcond: f64,
+        /// The coordinates' values.
+        at: String,
+    },
 }
 
 /// Result of the mechanics layer.

@@ -26,19 +26,40 @@ pub struct KaneEquations {
     pub coordinates: Vec<SymbolId>,
     /// Independent generalized speeds `u`.
     pub speeds: Vec<SymbolId>,
-    /// Dependent speeds with their expressions in the independent ones (motion constraints).
-    pub dependent_speeds: Vec<(SymbolId, ExprId)>,
-    /// The symbols `u'`.
+    /// Motion constraints; with them `M` and `f` are over all speeds, the independent first.
+    pub constraints: Option<SpeedConstraints>,
+    /// The symbols `u'` of the independent speeds.
     pub speed_derivatives: Vec<SymbolId>,
     /// Right-hand sides of the kinematic differential equations, one per coordinate.
     pub kinematics: Vec<ExprId>,
-    /// The symmetric mass matrix `M`, row by row.
+    /// The symmetric mass matrix `M`, row by row (over the independent speeds, then the
+    /// dependent ones when there are constraints).
     pub mass_matrix: Vec<Vec<ExprId>>,
     /// The forcing vector `f`.
     pub forcing: Vec<ExprId>,
     /// False while `mass_matrix` and `forcing` are not formed (empty): a large tree whose
     /// order-n form may never need them; [`Model::form_equations`] forms them.
     pub formed: bool,
+}
+
+/// Motion constraints in Kane's equations: `A_d u_d + A_i u_i + b = 0` and, differentiated,
+/// `A_d u_d' + A_i u_i' + bias = 0`. They reduce `M` and `f` (over all speeds) to the
+/// independent speeds numerically where the equations are evaluated.
+#[derive(Clone, Debug)]
+pub struct SpeedConstraints {
+    /// The dependent speeds `u_d`.
+    pub dependent: Vec<SymbolId>,
+    /// Their rates `u_d'`.
+    pub dependent_rates: Vec<SymbolId>,
+    /// `A_d`, a row per constraint.
+    pub a_dependent: Vec<Vec<ExprId>>,
+    /// `A_i`, a row per constraint and a column per independent speed.
+    pub a_independent: Vec<Vec<ExprId>>,
+    /// `b`, free of speeds.
+    pub b: Vec<ExprId>,
+    /// `d/dt (A u + b)` with every speed rate zero: a function of the coordinates, all speeds
+    /// and time.
+    pub bias: Vec<ExprId>,
 }
 
 /// The motion of one mass: a rigid body or a particle (no inertia, no rotation).
@@ -59,7 +80,7 @@ struct Partials {
 
 impl Model {
     fn speed_derivative_symbols(&mut self) -> Result<Vec<SymbolId>> {
-        let speeds = self.independent_speeds();
+        let speeds = self.kane_speeds();
         Ok(speeds.into_iter().map(|u| self.ar.derivative_symbol(u)).collect::<std::result::Result<_, _>>()?)
     }
 
@@ -109,7 +130,7 @@ impl Model {
 
     /// The partial velocities of `v`, remembered: FR(), FRSTAR() and KANE() ask for the same.
     fn partials_of(&mut self, v: &Vector) -> Result<Vec<Vector>> {
-        let speeds = self.independent_speeds();
+        let speeds = self.kane_speeds();
         let key = (v.terms.clone(), speeds);
         if let Some(p) = self.kinematics_cache.partials.get(&key) {
             return Ok(p.clone());
@@ -123,7 +144,7 @@ impl Model {
         let linear = self.partials_of(&m.velocity)?;
         let angular = match &m.rotation {
             Some((w, _, _)) => self.partials_of(w)?,
-            None => vec![Vector::zero(); self.independent_speeds().len()],
+            None => vec![Vector::zero(); self.kane_speeds().len()],
         };
         Ok(Partials { linear, angular })
     }
@@ -142,12 +163,18 @@ impl Model {
         self.partials_of(&w)
     }
 
-    /// The generalized active forces `Fr`, one per speed.
+    /// The generalized active forces `Fr`, one per independent speed.
     pub fn generalized_active_forces(&mut self) -> Result<Vec<ExprId>> {
+        let full = self.active_forces_all_speeds()?;
+        self.constrain_symbolically(&full)
+    }
+
+    /// `Fr` over every Kane speed, constraints aside.
+    fn active_forces_all_speeds(&mut self) -> Result<Vec<ExprId>> {
         self.check_ready()?;
         let mut per_point: FxHashMap<PointId, Vec<Vector>> = FxHashMap::default();
         let mut per_frame: FxHashMap<FrameId, Vec<Vector>> = FxHashMap::default();
-        let mut terms: Vec<Vec<ExprId>> = vec![Vec::new(); self.independent_speeds().len()];
+        let mut terms: Vec<Vec<ExprId>> = vec![Vec::new(); self.kane_speeds().len()];
         for load in self.loads.clone() {
             let (partials, vector) = match load {
                 Load::Force { point, force } => match per_point.entry(point) {
@@ -167,11 +194,12 @@ impl Model {
         terms.into_iter().map(|t| Ok(self.ar.add(&t)?)).collect()
     }
 
-    /// The generalized inertia forces `Fr*`, one per speed.
+    /// The generalized inertia forces `Fr*`, one per independent speed.
     pub fn generalized_inertia_forces(&mut self) -> Result<Vec<ExprId>> {
         self.check_ready()?;
         let motions = self.mass_motions()?;
-        self.inertia_forces(&motions, false)
+        let full = self.inertia_forces(&motions, false)?;
+        self.constrain_symbolically(&full)
     }
 
     /// `Fr*` from the motions; with `without_accelerations`, the part free of `u'`.
@@ -181,7 +209,7 @@ impl Model {
             let z = self.ar.zero();
             udot.iter().map(|s| (self.ar.symbol_expr(*s), z)).collect()
         };
-        let mut terms: Vec<Vec<ExprId>> = vec![Vec::new(); self.independent_speeds().len()];
+        let mut terms: Vec<Vec<ExprId>> = vec![Vec::new(); self.kane_speeds().len()];
         for m in motions {
             let p = self.mass_partials(m)?;
             let mut a = m.acceleration.clone();
@@ -294,7 +322,7 @@ impl Model {
     /// `M_rs = sum(m v_r . v_s + w_r . I . w_s)`; the forcing is `f = Fr + Fr*` with `u' = 0`.
     pub fn kane(&mut self) -> Result<KaneEquations> {
         self.check_ready()?;
-        let n = self.independent_speeds().len();
+        let n = self.kane_speeds().len();
         let motions = self.mass_motions()?;
         let mut mass_terms: Vec<Vec<Vec<ExprId>>> = vec![vec![Vec::new(); n]; n];
         for m in &motions {
@@ -326,7 +354,7 @@ impl Model {
                 mass_matrix[s][r] = e;
             }
         }
-        let fr = self.generalized_active_forces()?;
+        let fr = self.active_forces_all_speeds()?;
         let frstar0 = self.inertia_forces(&motions, true)?;
         let forcing = fr
             .iter()
@@ -345,23 +373,45 @@ impl Model {
     pub fn kane_unformed(&mut self) -> Result<KaneEquations> {
         self.check_ready()?;
         let coordinates = self.coordinates.clone();
-        let kinematics = coordinates
-            .iter()
-            .map(|q| {
-                let rhs = self.kinematics[q];
-                self.eliminate_dependent(rhs)
-            })
-            .collect::<Result<Vec<_>>>()?;
+        let kinematics = coordinates.iter().map(|q| self.kinematics[q]).collect();
+        let speeds = self.independent_speeds();
+        let mut rates = self.speed_derivative_symbols()?;
+        let dependent_rates = rates.split_off(speeds.len());
+        let constraints = self.speed_constraints(dependent_rates)?;
         Ok(KaneEquations {
             coordinates,
-            speeds: self.independent_speeds(),
-            dependent_speeds: self.dependent_speeds(),
-            speed_derivatives: self.speed_derivative_symbols()?,
+            speeds,
+            constraints,
+            speed_derivatives: rates,
             kinematics,
             mass_matrix: Vec::new(),
             forcing: Vec::new(),
             formed: false,
         })
+    }
+
+    /// The constraint block of the model's motion constraints, with `u_d'` as `dependent_rates`.
+    fn speed_constraints(&mut self, dependent_rates: Vec<SymbolId>) -> Result<Option<SpeedConstraints>> {
+        let Some(c) = self.constraints.clone() else { return Ok(None) };
+        let mut all_rates = self.speed_derivative_symbols()?;
+        all_rates.retain(|r| !dependent_rates.contains(r));
+        all_rates.extend(&dependent_rates);
+        let zero = self.ar.zero();
+        let still: FxHashMap<ExprId, ExprId> =
+            all_rates.iter().map(|s| (self.ar.symbol_expr(*s), zero)).collect();
+        let mut bias = Vec::with_capacity(c.residuals.len());
+        for &r in &c.residuals {
+            let d = self.dt(r)?;
+            bias.push(self.ar.subs(d, &still)?);
+        }
+        Ok(Some(SpeedConstraints {
+            dependent: c.dependent,
+            dependent_rates,
+            a_dependent: c.a_dependent,
+            a_independent: c.a_independent,
+            b: c.b,
+            bias,
+        }))
     }
 
     /// Forms `M` and `f` of `eqs` when they are not yet formed (the model unchanged since).

@@ -120,13 +120,20 @@ pub(crate) struct KinematicsCache {
 /// A vector's terms and the speeds its partial velocities are taken with respect to.
 pub(crate) type PartialsKey = (Vec<(FrameId, [ExprId; 3])>, Vec<SymbolId>);
 
-/// Nonholonomic constraints `sum(c u) + c0 = 0`, solved for the dependent speeds.
+/// Nonholonomic constraints `A_d u_d + A_i u_i + b = 0`, kept as their coefficients: the
+/// dependent speeds are solved numerically wherever the equations are evaluated.
 #[derive(Clone, Debug)]
 pub(crate) struct MotionConstraints {
-    /// The dependent speeds.
+    /// The dependent speeds `u_d`.
     pub(crate) dependent: Vec<SymbolId>,
-    /// Each dependent speed as an expression in the independent ones.
-    pub(crate) solution: Vec<ExprId>,
+    /// The constraints, each `= 0`, with the kinematic equations applied.
+    pub(crate) residuals: Vec<ExprId>,
+    /// `A_d`, one row per constraint.
+    pub(crate) a_dependent: Vec<Vec<ExprId>>,
+    /// `A_i`, one row per constraint, a column per independent speed.
+    pub(crate) a_independent: Vec<Vec<ExprId>>,
+    /// `b`.
+    pub(crate) b: Vec<ExprId>,
 }
 
 /// A multibody model: owner of the expressions and of every frame, point, body and load.
@@ -335,7 +342,6 @@ impl Model {
             return Ok(());
         }
         self.kinematics.insert(s, rhs);
-        let rhs = self.eliminate_dependent(rhs)?;
         self.time_derivative.set_rule(s, rhs);
         self.clear_kinematics_caches();
         Ok(())

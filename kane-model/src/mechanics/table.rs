@@ -31,10 +31,11 @@ impl Model {
     }
 
     /// The partial angular velocities of `frames` and partial velocities of `points` in the
-    /// Newtonian frame, one line per entity and speed: `W_B_A> / u1 = -B2>`.
+    /// Newtonian frame, one line per entity and speed (the dependent speeds last, constraints
+    /// aside): `W_B_A> / u1 = -B2>`.
     pub fn partial_velocity_table(&mut self, frames: &[FrameId], points: &[PointId]) -> Result<String> {
         let n = self.newtonian;
-        let speeds = self.independent_speeds();
+        let speeds = self.kane_speeds();
         let mut out = String::new();
         for &f in frames {
             let rows = self.partial_angular_velocities(f)?;

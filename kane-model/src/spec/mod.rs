@@ -72,7 +72,8 @@ impl ModelSpec {
         &self.model.ar.symbol_info(s).name
     }
 
-    /// `e` with `q'` and dependent speeds replaced by the states (kinematics and constraints).
+    /// `e` with `q'` replaced through the kinematic equations (dependent speeds stay: they are
+    /// solved numerically where `e` is evaluated).
     pub fn in_states(&mut self, e: ExprId) -> crate::mechanics::Result<ExprId> {
         let eqs = &self.equations;
         let ar = &mut self.model.ar;
@@ -82,9 +83,6 @@ impl ModelSpec {
             if let Some(d) = ar.lookup(&name) {
                 map.insert(ar.symbol_expr(d), *rhs);
             }
-        }
-        for (u, e) in &eqs.dependent_speeds {
-            map.insert(ar.symbol_expr(*u), *e);
         }
         Ok(ar.subs(e, &map)?)
     }

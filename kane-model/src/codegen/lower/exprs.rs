@@ -40,6 +40,11 @@ impl<'a> ExprLowering<'a> {
         roots.iter().map(|&e| self.value(e)).collect()
     }
 
+    /// Makes `e` (a symbol's expression) read the value `v` computed earlier in the section.
+    pub fn bind(&mut self, e: ExprId, v: u32) {
+        self.names.insert(e, v);
+    }
+
     /// The value of `e`: its shared name, or `e` lowered.
     pub fn value(&mut self, e: ExprId) -> u32 {
         match self.names.get(&e) {

@@ -2,9 +2,11 @@
 //! `derive`, `rhs` and each output) with the parameters it reads. Nothing here knows Rust.
 
 mod choose;
+mod constrained;
 mod explicit;
 pub(crate) mod exprs;
 mod hoist;
+mod householder;
 mod ldlt;
 mod outputs;
 mod rhs;
@@ -46,12 +48,20 @@ fn mass_matrix(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
     let mut all: Vec<ExprId> = eqs.mass_matrix.iter().flatten().copied().collect();
     all.extend(&eqs.forcing);
     all.extend(&eqs.kinematics);
+    let mut computed = eqs.speed_derivatives.clone();
+    if let Some(c) = &eqs.constraints {
+        computed.extend(c.dependent.iter().chain(&c.dependent_rates));
+        all.extend(c.a_dependent.iter().chain(&c.a_independent).flatten().chain(&c.b).chain(&c.bias));
+    }
     let rhs_free = spec.model.ar.free_symbols(&all);
     for o in &spec.outputs {
         all.extend(&o.components);
     }
-    let params = parameters(spec, &all, &states, &eqs.speed_derivatives)?;
-    let (derive, rhs) = rhs::lower(&mut spec.model.ar, &eqs, &params)?;
+    let params = parameters(spec, &all, &states, &computed)?;
+    let (derive, rhs) = match &eqs.constraints {
+        Some(c) => constrained::lower(&mut spec.model.ar, &eqs, c, &params)?,
+        None => rhs::lower(&mut spec.model.ar, &eqs, &params)?,
+    };
     let outputs = outputs::lower(spec, &params)?;
     let nq = eqs.coordinates.len();
     let cyclic = (0..nq).filter(|i| !rhs_free.contains(&states[*i])).collect();
@@ -84,7 +94,8 @@ fn order_n(spec: &mut ModelSpec) -> Result<Option<Lowered>, CodegenError> {
 }
 
 /// The constants `roots` read, in order of first appearance; an error for a time-dependent
-/// symbol that is neither a state nor a speed rate.
+/// symbol that is neither a state nor computed by the program (`rates`: speed rates, and
+/// dependent speeds with their rates).
 fn parameters(
     spec: &ModelSpec,
     roots: &[ExprId],

@@ -8,6 +8,7 @@ use crate::spec::ModelSpec;
 
 use super::super::ir::{Input, OutputCode};
 use super::super::CodegenError;
+use super::constrained;
 use super::exprs::ExprLowering;
 
 /// One [`OutputCode`] per output of `spec`; `params` are the constants the code reads.
@@ -25,13 +26,45 @@ pub fn lower(spec: &mut ModelSpec, params: &[SymbolId]) -> Result<Vec<OutputCode
     for (i, s) in rates.iter().enumerate() {
         symbols.insert(*s, Input::Rate(i));
     }
+    let constraints = spec.equations.constraints.clone();
+    let (dependent, dependent_rates) = match &constraints {
+        Some(c) => {
+            let ar = &mut spec.model.ar;
+            let d: Vec<ExprId> = c.dependent.iter().map(|s| ar.symbol_expr(*s)).collect();
+            (d, c.dependent_rates.iter().map(|s| ar.symbol_expr(*s)).collect())
+        }
+        None => (Vec::new(), Vec::new()),
+    };
     let mut out = Vec::with_capacity(spec.outputs.len());
     for k in 0..spec.outputs.len() {
         let components = spec.outputs[k].components.clone();
-        let reads = reads(spec, &components, &states)?;
         let ar = &spec.model.ar;
-        let needs_rates = ar.free_symbols(&components).iter().any(|s| rates.contains(s));
+        let free = ar.free_symbols(&components);
+        let block = constraints
+            .as_ref()
+            .filter(|c| c.dependent.iter().chain(&c.dependent_rates).any(|s| free.contains(s)));
+        let mut reads_from = components.clone();
+        if let Some(c) = block {
+            reads_from
+                .extend(c.a_dependent.iter().chain(&c.a_independent).flatten().chain(&c.b).chain(&c.bias));
+        }
+        let reads = reads(spec, &reads_from, &states)?;
+        let ar = &spec.model.ar;
+        let needs_rates = block.is_some_and(|c| c.dependent_rates.iter().any(|s| free.contains(s)))
+            || free.iter().any(|s| rates.contains(s));
         let mut lowering = ExprLowering::new(ar, &symbols, None);
+        if let Some(c) = block {
+            let roots = constrained::block_roots(c);
+            let b = constrained::Block::lower(
+                &mut lowering,
+                &dependent,
+                &roots,
+                spec.equations.coordinates.len(),
+            );
+            if c.dependent_rates.iter().any(|s| free.contains(s)) {
+                b.bind_rates(&mut lowering, &c.bias, &dependent_rates);
+            }
+        }
         let values = lowering.lower_all(&components);
         out.push(OutputCode { section: lowering.builder.finish(values), reads, needs_rates });
     }

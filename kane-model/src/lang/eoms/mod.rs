@@ -48,6 +48,10 @@ pub struct PrintedEoms {
     pub forcing: Vec<Shown>,
     /// `Fr + Fr* = f - M u'`, row by row.
     pub equations: Vec<Shown>,
+    /// The dependent speeds' names (motion constraints), after the independent ones in `M`.
+    pub dependent: Vec<String>,
+    /// The motion constraints `A_d u_d + A_i u_i + b`, each `= 0`.
+    pub constraints: Vec<Shown>,
 }
 
 /// A failure to print one quantity, naming it.
@@ -78,10 +82,23 @@ pub fn printed_eoms(m: &mut LoadedModel) -> Result<Option<PrintedEoms>, EomsErro
     let ar = &mut m.model.ar;
     let name = |ar: &Arena, s: &crate::expr::SymbolId| ar.symbol_info(*s).name.clone();
     let coordinates: Vec<String> = e.coordinates.iter().map(|s| name(ar, s)).collect();
+    let mut rates = e.speed_derivatives.clone();
+    let mut constraints = Vec::new();
+    if let Some(c) = &e.constraints {
+        rates.extend(&c.dependent_rates);
+        let speeds: Vec<ExprId> = c.dependent.iter().chain(&e.speeds).map(|s| ar.symbol_expr(*s)).collect();
+        for (k, b) in c.b.iter().enumerate() {
+            let mut terms = vec![*b];
+            for (a, u) in c.a_dependent[k].iter().chain(&c.a_independent[k]).zip(&speeds) {
+                terms.push(ar.mul(&[*a, *u]).map_err(named("the constraints"))?);
+            }
+            constraints.push(ar.add(&terms).map_err(named("the constraints"))?);
+        }
+    }
     let mut equations = Vec::with_capacity(e.forcing.len());
     for (r, f) in e.forcing.iter().enumerate() {
         let mut terms = vec![*f];
-        for (s, u) in e.speed_derivatives.iter().enumerate() {
+        for (s, u) in rates.iter().enumerate() {
             let u = ar.symbol_expr(*u);
             let t = ar.mul(&[e.mass_matrix[r][s], u]).map_err(named("the equations"))?;
             terms.push(ar.neg(t).map_err(named("the equations"))?);
@@ -96,6 +113,7 @@ pub fn printed_eoms(m: &mut LoadedModel) -> Result<Option<PrintedEoms>, EomsErro
     }
     labelled.extend(e.forcing.iter().enumerate().map(|(i, x)| (format!("f[{}]", i + 1), *x)));
     labelled.extend(equations.iter().enumerate().map(|(i, x)| (format!("ZERO[{}]", i + 1), *x)));
+    labelled.extend(constraints.iter().enumerate().map(|(i, x)| (format!("CONSTRAINT[{}]", i + 1), *x)));
     let mut shown = shown_all(ar, &p, &labelled)?.into_iter();
     let mut take = |k: usize| shown.by_ref().take(k).collect::<Vec<Shown>>();
     let kinematics = take(e.kinematics.len());
@@ -107,6 +125,8 @@ pub fn printed_eoms(m: &mut LoadedModel) -> Result<Option<PrintedEoms>, EomsErro
         mass_matrix,
         forcing: take(n),
         equations: take(n),
+        dependent: e.constraints.iter().flat_map(|c| &c.dependent).map(|s| name(ar, s)).collect(),
+        constraints: take(constraints.len()),
     }))
 }
 
@@ -142,7 +162,7 @@ mod tests {
 
     fn shown(p: &PrintedEoms) -> impl Iterator<Item = &Shown> {
         let m = p.kinematics.iter().chain(p.mass_matrix.iter().flatten());
-        m.chain(&p.forcing).chain(&p.equations)
+        m.chain(&p.forcing).chain(&p.equations).chain(&p.constraints)
     }
 
     /// A planar chain of `n` point masses on pin joints, each angle relative to the link before.

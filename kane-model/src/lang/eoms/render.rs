@@ -25,6 +25,8 @@ pub struct EomsText {
     pub forcing: Vec<String>,
     /// `Fr + Fr*`, row by row.
     pub equations: Vec<String>,
+    /// The motion constraints, each `= 0`.
+    pub constraints: Vec<String>,
 }
 
 /// The intermediates for printing `xs`: the quantities printed in named intermediates, and
@@ -60,7 +62,7 @@ impl PrintedEoms {
     /// Every quantity as plain text, with the intermediates they use.
     pub fn texts(&self, ar: &Arena) -> EomsText {
         let all = self.kinematics.iter().chain(self.mass_matrix.iter().flatten());
-        let z = intermediates(ar, all.chain(&self.forcing).chain(&self.equations));
+        let z = intermediates(ar, all.chain(&self.forcing).chain(&self.equations).chain(&self.constraints));
         let each = |xs: &[Shown]| xs.iter().map(|s| text(ar, &z, s)).collect::<Vec<String>>();
         EomsText {
             intermediates: z.text_lines(ar),
@@ -68,6 +70,7 @@ impl PrintedEoms {
             mass_matrix: self.mass_matrix.iter().map(|r| each(r)).collect(),
             forcing: each(&self.forcing),
             equations: each(&self.equations),
+            constraints: each(&self.constraints),
         }
     }
 
@@ -86,6 +89,16 @@ impl PrintedEoms {
         s.push_str("% Kinematic equations\n");
         for (q, k) in self.coordinates.iter().zip(&t.kinematics) {
             s.push_str(&format!("{q}' = {k}\n"));
+        }
+        if !self.dependent.is_empty() {
+            s.push_str(&format!(
+                "\n% Motion constraints (each = 0), solved numerically for the dependent speeds {} wherever the\n% equations are evaluated; M and f are over {} (the equations of motion are\n% C^T (f - M u') = 0 with C = d(u)/d(independent speeds))\n",
+                self.dependent.join(", "),
+                self.speeds.iter().chain(&self.dependent).cloned().collect::<Vec<_>>().join(", ")
+            ));
+            for (i, x) in t.constraints.iter().enumerate() {
+                s.push_str(&format!("CONSTRAINT[{}] = {x}\n", i + 1));
+            }
         }
         s.push_str("\n% Mass matrix M (M u' = f)\n");
         for (i, row) in t.mass_matrix.iter().enumerate() {
@@ -115,7 +128,7 @@ impl PrintedEoms {
             lhs.push(dot.map_or_else(|| format!("\\dot{{{q}}}"), |x| ar.to_latex(x)));
         }
         let ar = &*ar;
-        let z = intermediates(ar, self.kinematics.iter().chain(&self.equations));
+        let z = intermediates(ar, self.kinematics.iter().chain(&self.equations).chain(&self.constraints));
         let mut lines: Vec<String> =
             z.latex_lines(ar).into_iter().map(|(name, def)| format!("{name} &= {def}")).collect();
         for (lhs, k) in lhs.iter().zip(&self.kinematics) {
@@ -125,7 +138,7 @@ impl PrintedEoms {
             };
             lines.push(format!("{lhs} &= {rhs}"));
         }
-        for x in &self.equations {
+        for x in self.equations.iter().chain(&self.constraints) {
             match x {
                 Shown::Collected(c) => lines.extend(latex_rows(ar, &z, c)),
                 Shown::Named(x) => lines.push(format!("0 &= {}", z.latex(ar, *x))),

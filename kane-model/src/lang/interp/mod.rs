@@ -101,7 +101,7 @@ pub struct LoadedModel {
     pub code: Vec<CodeRequest>,
     /// Commands that only keep Autolev's books (UNITSYSTEM, AUTOZ, ENCODE, ...), in order.
     pub bookkeeping: Vec<Bookkeeping>,
-    bindings: FxHashMap<String, Binding>,
+    pub(crate) bindings: FxHashMap<String, Binding>,
     arrays: FxHashMap<String, Vec<(Vec<i64>, Value)>>,
     pub(crate) sources: Sources,
 }

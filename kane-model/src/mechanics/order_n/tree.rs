@@ -69,7 +69,7 @@ pub(crate) fn frames_of(model: &Model, eqs: &KaneEquations) -> Option<Vec<Link>>
 fn frames(model: &Model, eqs: &KaneEquations) -> Option<(Vec<Link>, FxHashMap<FrameId, usize>)> {
     let n = eqs.speeds.len();
     let constrained = model.constraints.is_some() || !model.configuration_constraints.is_empty();
-    if constrained || !eqs.dependent_speeds.is_empty() || eqs.coordinates.len() != n || n == 0 {
+    if constrained || eqs.constraints.is_some() || eqs.coordinates.len() != n || n == 0 {
         return None;
     }
     let ar = &model.ar;
