@@ -72,3 +72,41 @@ fn accelerations_a_file_writes_after_constrain_give_the_same_equations() {
         }
     }
 }
+
+#[test]
+fn linearize_gives_the_upright_discs_lean_and_yaw_coupling() {
+    // Upright rolling at spin w (R = 0.5, g = 9.81): U1' = -2 w U2, U2' = 4 g/(5 R) Q2 + 6 w/5 U1,
+    // so lean oscillates when w^2 > g / (3 R), the textbook criterion for a thin disc.
+    for w in [4.0, 2.0] {
+        let spin = format!("U3={w}");
+        let args =
+            ["linearize", DISC, "--json", "--set", "Q2=0", "--set", "U1=0", "--set", "U2=0", "--set", &spin];
+        let (ok, out, err) = kane(&args);
+        assert!(ok, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let a = |i: usize, j: usize| v["A"][i][j].as_f64().unwrap();
+        let states: Vec<&str> = v["states"].as_array().unwrap().iter().map(|s| s.as_str().unwrap()).collect();
+        assert_eq!(states, ["Q1", "Q2", "Q3", "X", "Y", "U1", "U2", "U3"]);
+        let close = |x: f64, y: f64| (x - y).abs() < 1e-12 * y.abs().max(1.0);
+        assert!(close(a(5, 6), -2.0 * w) && close(a(6, 5), 1.2 * w), "{out}");
+        assert!(close(a(6, 1), 4.0 * 9.81 / 2.5), "{out}");
+        // lambda^2 of the lean-yaw pair: a(6,1) + a(6,5) a(5,6).
+        let lambda2 = a(6, 1) + a(6, 5) * a(5, 6);
+        assert_eq!(lambda2 < 0.0, w * w > 9.81 / 1.5, "w = {w}: lambda^2 = {lambda2}");
+    }
+}
+
+#[test]
+fn linearize_takes_constants_as_inputs() {
+    // d(u1')/dK = -q1 / (m (1 + c^2)) for the slaved particles, c = q1 / sin(q1).
+    let (ok, out, err) = kane(&["linearize", SLAVED, "--json", "--input", "K"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let c = 0.5 / 0.5f64.sin();
+    let want = -0.5 / (1.0 + c * c);
+    let got = v["B"][2][0].as_f64().unwrap();
+    assert!((got - want).abs() < 1e-14, "{got} vs {want}: {out}");
+    assert_eq!(v["inputs"][0], "K");
+    let (ok, _, err) = kane(&["linearize", SLAVED, "--input", "NOPE"]);
+    assert!(!ok && err.contains("--input NOPE: not a constant the equations read"), "{err}");
+}

@@ -50,6 +50,21 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// The state and input matrices A and B about the point the file's INPUT values define, by
+    /// dual numbers through the generated right-hand side (constraints solved numerically).
+    Linearize {
+        /// The model file.
+        file: PathBuf,
+        /// NAME=VALUE (case-insensitive), repeated: the operating point.
+        #[arg(long = "set", value_name = "NAME=VALUE")]
+        set: Vec<String>,
+        /// A constant taken as an input (a column of B), repeated.
+        #[arg(long = "input", value_name = "NAME")]
+        input: Vec<String>,
+        /// Print one JSON object: {"states", "inputs", "A", "B"}.
+        #[arg(long)]
+        json: bool,
+    },
     /// Emit the model's Rust module (formatted), with --stats the operation counts.
     Gen {
         /// The model file.
@@ -141,6 +156,7 @@ fn run(command: Command) -> Result<(), String> {
         Command::Check { file } => check(file),
         Command::Eoms { file, format, partials } => eoms(file, format, partials),
         Command::Eval { file, set, json } => eval(file, set, json),
+        Command::Linearize { file, set, input, json } => linearize(file, set, input, json),
         Command::Gen { file, out, stats, taylor, taylor_orders, lanes } => {
             gen(file, out, stats, CodeOptions { taylor, taylor_orders, lanes })
         }
@@ -239,13 +255,11 @@ fn partial_velocities(m: &mut LoadedModel) -> Result<String, String> {
     m.model.partial_velocity_table(&frames, &points).map(|t| t.to_string()).map_err(|e| e.to_string())
 }
 
-/// `kane eval`: the equations evaluated at a state.
-fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
-    let m = load(&file)?;
-    let e = equations(&m, &file)?;
+/// The INPUT values of `m` by upper-case name, with `--set NAME=VALUE` overrides.
+fn values_with_sets(m: &LoadedModel, set: &[String]) -> Result<BTreeMap<String, f64>, String> {
     let mut values: BTreeMap<String, f64> =
         m.inputs.iter().map(|i| (i.name.to_ascii_uppercase(), i.value)).collect();
-    for s in &set {
+    for s in set {
         let (k, v) = s.split_once('=').ok_or_else(|| format!("--set {s}: expected NAME=VALUE"))?;
         let v: f64 = v.trim().parse().map_err(|_| format!("--set {s}: `{}` is not a number", v.trim()))?;
         let key = k.trim().to_ascii_uppercase();
@@ -254,6 +268,58 @@ fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
         }
         values.insert(key, v);
     }
+    Ok(values)
+}
+
+/// `kane linearize`: `A` and `B` about the point the file's INPUT values (and `--set`) define,
+/// by dual numbers through the lowered right-hand side; `inputs` are parameters taken as inputs.
+fn linearize(file: PathBuf, set: Vec<String>, inputs: Vec<String>, json: bool) -> Result<(), String> {
+    let src = read(&file)?;
+    let loaded = lang::check_for_generation(&file.display().to_string(), &src).map_err(|r| r.render())?.model;
+    let values = values_with_sets(&loaded, &set)?;
+    let name = file.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
+    let fail = |e: kane_model::codegen::CodegenError| format!("{}: {e}", file.display());
+    let mut spec = loaded.into_spec(&name).map_err(fail)?;
+    let lowered = kane_model::codegen::lower(&mut spec).map_err(fail)?;
+    let upper = |s: &SymbolId| spec.symbol_name(*s).to_ascii_uppercase();
+    let missing: Vec<String> =
+        lowered.params.iter().chain(&lowered.states).map(upper).filter(|n| !values.contains_key(n)).collect();
+    if !missing.is_empty() {
+        return Err(format!(
+            "{}: no value for {}; give them with --set NAME=VALUE or INPUT",
+            file.display(),
+            missing.join(", ")
+        ));
+    }
+    let params: Vec<f64> = lowered.params.iter().map(|s| values[&upper(s)]).collect();
+    let y: Vec<f64> = lowered.states.iter().map(|s| values[&upper(s)]).collect();
+    let mut positions = Vec::with_capacity(inputs.len());
+    for i in &inputs {
+        let at = lowered.params.iter().position(|s| upper(s) == i.to_ascii_uppercase());
+        positions.push(at.ok_or_else(|| format!("--input {i}: not a constant the equations read"))?);
+    }
+    let l = kane_model::codegen::linearize::linearize(&lowered.program, &params, 0.0, &y, &positions);
+    if l.a.iter().chain(&l.b).flatten().any(|x| !x.is_finite()) {
+        return Err(format!("{}: the linearisation is not finite at this point (a singular mass matrix or constraints losing rank)", file.display()));
+    }
+    let states: Vec<String> = lowered.states.iter().map(|s| spec.symbol_name(*s).to_string()).collect();
+    if json {
+        println!("{}", serde_json::json!({ "states": states, "inputs": inputs, "A": l.a, "B": l.b }));
+    } else {
+        println!("states: {}\ninputs: {}", states.join(", "), inputs.join(", "));
+        for (n, row) in states.iter().zip(l.a.iter().zip(&l.b)) {
+            let cells: Vec<String> = row.0.iter().chain(row.1).map(|x| format!("{x:.12e}")).collect();
+            println!("{n}' : {}", cells.join(" "));
+        }
+    }
+    Ok(())
+}
+
+/// `kane eval`: the equations evaluated at a state.
+fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
+    let m = load(&file)?;
+    let e = equations(&m, &file)?;
+    let values = values_with_sets(&m, &set)?;
     let ar = &m.model.ar;
     let mut roots: Vec<ExprId> = e.mass_matrix.iter().flatten().copied().collect();
     roots.extend(&e.forcing);

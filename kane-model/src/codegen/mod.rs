@@ -9,6 +9,7 @@
 
 pub mod event;
 pub mod ir;
+pub mod linearize;
 mod lower;
 mod meta;
 mod names;
