@@ -11,6 +11,7 @@ const PAPER: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/g
 const VARIANT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/variant_gimbal.al");
 const CHAIN40: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/chain40_rigid.al");
 const DISC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/rolling_disc.al");
+const BICYCLE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/whipple_bicycle.al");
 
 /// A fresh folder for one test.
 fn folder(name: &str) -> PathBuf {
@@ -78,6 +79,31 @@ fn a_rolling_disc_keeps_its_energy_and_its_contact_speeds() {
         assert!((u4 - 0.5 * q1.cos() * u3).abs() < 1e-12, "{r:?}");
     }
     assert!(rows.len() > 10 && (rows.last().unwrap()[2] - 0.3).abs() > 0.1, "the disc did not turn");
+}
+
+#[test]
+fn the_bicycle_rides_self_stable_at_5_m_per_s_and_capsizes_at_8_with_its_energy_kept() {
+    // A push in roll rate (U2 = 0.5 rad/s) from upright straight running, v = U3 * RR.
+    for (v, stable) in [(5.0, true), (8.0, false)] {
+        let dir = folder(&format!("bicycle_{v}"));
+        let out = dir.join("out");
+        let speed = format!("U3={}", v / 0.3);
+        let args = ["--model", BICYCLE, "--engine", "instant", "--set", &speed, "--set", "U2=0.5"];
+        let run = gyro_sim(&[&args[..], &["--out", out.to_str().unwrap()]].concat(), &dir);
+        assert!(run.status.success(), "{}", text(&run));
+        let rows = rows(&out);
+        // Columns: t, Q2 (roll), Q5 (steer), ENERGY.
+        let e0 = rows[0][3];
+        let drift = rows.iter().map(|r| (r[3] - e0).abs()).fold(0.0, f64::max) / e0.abs();
+        assert!(drift < 1e-9, "v = {v}: energy drift {drift:e}");
+        let peak = rows.iter().map(|r| r[1].abs()).fold(0.0, f64::max);
+        let last = rows.last().unwrap()[1].abs();
+        if stable {
+            assert!(last < 0.5 * peak, "v = {v}: roll {last} after a peak of {peak}");
+        } else {
+            assert!(last >= peak * 0.999 && last > 0.05, "v = {v}: roll {last}, peak {peak}");
+        }
+    }
 }
 
 #[test]

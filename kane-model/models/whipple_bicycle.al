@@ -71,6 +71,10 @@ DEPENDENT[3] = DOT(V_CF_N>, Y3>)
 CONSTRAIN(DEPENDENT[U1, U4, U6])
 ZERO = FR() + FRSTAR()
 KANE()
+% The energy: kinetic, and the masses' heights above the ground the rear contact is on.
+PE = G*(MR*DOT(P_CR_WRO>, N3>) + MB*DOT(P_CR_RBO>, N3>) + MH*DOT(P_CR_FBO>, N3>) + MF*DOT(P_CR_WFO>, N3>))
+ENERGY = KE() + PE
+OUTPUT Q2, Q5, ENERGY
 INPUT TPHI = 0, TDELTA = 0
 INPUT W = 1.02, C = 0.08, LAMBDA = 0.3141592653589793, RR = 0.3, RF = 0.35, G = 9.81
 INPUT XB = 0.3, ZB = 0.9, XH = 0.9, ZH = 0.7
@@ -80,3 +84,4 @@ INPUT IBXX = 9.2, IBYY = 11, IBZZ = 2.8, IBXZ = -2.4
 INPUT IHXX = 0.05892, IHYY = 0.06, IHZZ = 0.00708, IHXZ = 0.00756
 % Upright and at rest; straight running at forward speed v has U3 = v/RR (and U6 = v/RF).
 INPUT Q1 = 0, Q2 = 0, Q3 = 0, Q4 = 0, Q5 = 0, Q6 = 0, U2 = 0, U3 = 0, U5 = 0
+INPUT TFINAL = 5, ABSERR = 1e-10, RELERR = 1e-10

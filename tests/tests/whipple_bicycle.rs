@@ -114,3 +114,61 @@ fn upright_and_nearly_upright_rates_are_finite_and_agree() {
         assert!(d < 1e-12, "roll {roll}: generated vs eval {d:e}");
     }
 }
+
+/// The lean and steer block of `A` (roll, steer and their rates) at speed `v`.
+fn lean_steer_block(b: &Bicycle, v: f64) -> [[f64; 4]; 4] {
+    let rows = ["Q2", "Q5", "U2", "U5"].map(|n| b.position(&b.lowered.states, n));
+    let (params, y) = b.point(&[("U3", v / 0.3)]);
+    let l = linearize(&b.lowered.program, &params, 0.0, &y, &[]);
+    rows.map(|i| rows.map(|j| l.a[i][j]))
+}
+
+/// `det(s I - a) = s^4 + c[1] s^3 + c[2] s^2 + c[3] s + c[4]` (Faddeev-LeVerrier).
+fn characteristic(a: &[[f64; 4]; 4]) -> [f64; 5] {
+    let mul = |x: &[[f64; 4]; 4], y: &[[f64; 4]; 4]| -> [[f64; 4]; 4] {
+        std::array::from_fn(|i| std::array::from_fn(|j| (0..4).map(|k| x[i][k] * y[k][j]).sum()))
+    };
+    let mut c = [1.0, 0.0, 0.0, 0.0, 0.0];
+    let mut m = [[0.0; 4]; 4];
+    for k in 1..=4 {
+        let am = mul(a, &m);
+        m = std::array::from_fn(|i| std::array::from_fn(|j| am[i][j] + if i == j { c[k - 1] } else { 0.0 }));
+        let am = mul(a, &m);
+        c[k] = -(0..4).map(|i| am[i][i]).sum::<f64>() / k as f64;
+    }
+    c
+}
+
+/// The root of `f` in `[lo, hi]` by bisection (a sign change is asserted).
+fn bisect(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> f64 {
+    let f_lo = f(lo);
+    assert!(f_lo * f(hi) < 0.0, "no sign change in [{lo}, {hi}]");
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if (f(mid) > 0.0) == (f_lo > 0.0) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
+#[test]
+fn weave_and_capsize_speeds_equal_the_benchmark() {
+    // The benchmark's 4.29238254 and 6.02426202 m/s: the weave pair crosses the imaginary axis
+    // where the Hurwitz determinant a3 a2 a1 - a1^2 - a3^2 a0 vanishes, the capsize root where
+    // a0 = det(A) does.
+    let b = bicycle();
+    let weave = bisect(
+        |v| {
+            let c = characteristic(&lean_steer_block(&b, v));
+            c[1] * c[2] * c[3] - c[3] * c[3] - c[1] * c[1] * c[4]
+        },
+        3.0,
+        5.0,
+    );
+    let capsize = bisect(|v| characteristic(&lean_steer_block(&b, v))[4], 5.0, 7.0);
+    assert!((weave - 4.29238254).abs() < 1e-8, "weave speed {weave}");
+    assert!((capsize - 6.02426202).abs() < 1e-8, "capsize speed {capsize}");
+}
