@@ -83,11 +83,11 @@ fn a_rolling_disc_keeps_its_energy_and_its_contact_speeds() {
 
 #[test]
 fn the_bicycle_rides_self_stable_at_5_m_per_s_and_capsizes_at_8_with_its_energy_kept() {
-    // A push in roll rate (U2 = 0.5 rad/s) from upright straight running, v = U3 * RR.
+    // A push in roll rate (U2 = 0.5 rad/s) from upright straight running at the speed V.
     for (v, stable) in [(5.0, true), (8.0, false)] {
         let dir = folder(&format!("bicycle_{v}"));
         let out = dir.join("out");
-        let speed = format!("U3={}", v / 0.3);
+        let speed = format!("V={v}");
         let args = ["--model", BICYCLE, "--engine", "instant", "--set", &speed, "--set", "U2=0.5"];
         let run = gyro_sim(&[&args[..], &["--out", out.to_str().unwrap()]].concat(), &dir);
         assert!(run.status.success(), "{}", text(&run));

@@ -11,6 +11,8 @@ POINTS CR, STEER, CF
 % The benchmark's parameters (its Table 1): wheelbase W, trail C, steer axis tilt LAMBDA, wheel
 % radii RR and RF, rear body mass centre (XB, ZB), front body mass centre (XH, ZH).
 CONSTANTS W, C, LAMBDA, RR, RF, XB, ZB, XH, ZH, G
+% The forward speed of straight upright running (m/s): the rear wheel turns at V/RR + U3.
+CONSTANTS V
 CONSTANTS MR, MB, MH, MF, IRXX, IRYY, IFXX, IFYY
 CONSTANTS IBXX, IBYY, IBZZ, IBXZ, IHXX, IHYY, IHZZ, IHXZ
 % Inputs: the roll torque on the rear body and the steer torque between the bodies.
@@ -39,7 +41,7 @@ SIMPROT(FORK, FB, 2, -HTA)
 SIMPROT(FORK, WF, 2, Q6)
 Q1' = U1
 Q2' = U2
-Q3' = U3
+Q3' = V/RR + U3
 Q4' = U4
 Q5' = U5
 Q6' = U6
@@ -82,6 +84,7 @@ INPUT MR = 2, MB = 85, MH = 4, MF = 3
 INPUT IRXX = 0.0603, IRYY = 0.12, IFXX = 0.1405, IFYY = 0.28
 INPUT IBXX = 9.2, IBYY = 11, IBZZ = 2.8, IBXZ = -2.4
 INPUT IHXX = 0.05892, IHYY = 0.06, IHZZ = 0.00708, IHXZ = 0.00756
-% Upright and at rest; straight running at forward speed v has U3 = v/RR (and U6 = v/RF).
+% Straight upright running at the forward speed V: every speed zero.
+INPUT V = 0
 INPUT Q1 = 0, Q2 = 0, Q3 = 0, Q4 = 0, Q5 = 0, Q6 = 0, U2 = 0, U3 = 0, U5 = 0
 INPUT TFINAL = 5, ABSERR = 1e-10, RELERR = 1e-10

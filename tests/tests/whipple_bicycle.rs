@@ -71,7 +71,7 @@ fn lean_and_steer_equal_the_benchmark_from_0_to_10_m_per_s() {
     let inputs = ["TPHI", "TDELTA"].map(|n| b.position(&b.lowered.params, n));
     for v in 0..=10 {
         let v = f64::from(v);
-        let (params, y) = b.point(&[("U3", v / 0.3)]);
+        let (params, y) = b.point(&[("V", v)]);
         let l = linearize(&b.lowered.program, &params, 0.0, &y, &inputs);
         let want = benchmark_rows(v);
         for (k, i) in rows[2..].iter().enumerate() {
@@ -96,7 +96,7 @@ fn lean_and_steer_equal_the_benchmark_from_0_to_10_m_per_s() {
 fn upright_and_nearly_upright_rates_are_finite_and_agree() {
     let b = bicycle();
     for roll in [0.0, 1e-9, 1e-3] {
-        let (params, y) = b.point(&[("Q2", roll), ("U3", 5.0 / 0.3), ("U5", 0.1)]);
+        let (params, y) = b.point(&[("Q2", roll), ("V", 5.0), ("U5", 0.1)]);
         let values: FxHashMap<String, f64> = b
             .lowered
             .params
@@ -118,7 +118,7 @@ fn upright_and_nearly_upright_rates_are_finite_and_agree() {
 /// The lean and steer block of `A` (roll, steer and their rates) at speed `v`.
 fn lean_steer_block(b: &Bicycle, v: f64) -> [[f64; 4]; 4] {
     let rows = ["Q2", "Q5", "U2", "U5"].map(|n| b.position(&b.lowered.states, n));
-    let (params, y) = b.point(&[("U3", v / 0.3)]);
+    let (params, y) = b.point(&[("V", v)]);
     let l = linearize(&b.lowered.program, &params, 0.0, &y, &[]);
     rows.map(|i| rows.map(|j| l.a[i][j]))
 }
