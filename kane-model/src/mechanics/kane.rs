@@ -63,13 +63,13 @@ pub struct SpeedConstraints {
 }
 
 /// The motion of one mass: a rigid body or a particle (no inertia, no rotation).
-struct MassMotion {
-    mass: ExprId,
+pub(crate) struct MassMotion {
+    pub(crate) mass: ExprId,
     /// Velocity and acceleration of the mass centre in the Newtonian frame.
-    velocity: Vector,
-    acceleration: Vector,
+    pub(crate) velocity: Vector,
+    pub(crate) acceleration: Vector,
     /// Angular velocity and acceleration, and the central inertia, for bodies.
-    rotation: Option<(Vector, Vector, Dyadic)>,
+    pub(crate) rotation: Option<(Vector, Vector, Dyadic)>,
 }
 
 /// Partial velocities of one mass with respect to each speed.
@@ -94,7 +94,8 @@ impl Model {
         Ok(())
     }
 
-    fn mass_motions(&mut self) -> Result<Vec<MassMotion>> {
+    /// Every mass's motion in the Newtonian frame, with its mass and, for a body, its inertia.
+    pub(crate) fn mass_motions(&mut self) -> Result<Vec<MassMotion>> {
         let n = self.newtonian;
         let mut out = Vec::new();
         for view in self.masses().collect::<Vec<_>>() {

@@ -7,9 +7,7 @@
 // Matrix code reads clearest with indices.
 #![allow(clippy::needless_range_loop)]
 
-use rustc_hash::FxHashMap;
-
-use crate::expr::{Arena, ExprId, SymbolId, TIME};
+use crate::expr::{Arena, ExprId, SymbolId};
 use crate::mechanics::{KaneEquations, SpeedConstraints};
 
 use super::super::ir::{Input, Op, Section, SectionBuilder};
@@ -38,17 +36,8 @@ pub fn lower(
     let is_param = |s: SymbolId| params.contains(&s);
     let mut hoisted = Hoisted::default();
     let roots = roots.iter().map(|r| hoisted.rewrite(ar, *r, &is_param)).collect::<Result<Vec<_>, _>>()?;
-    let mut symbols = reading(eqs, params);
-    let param_symbols = symbols.clone();
-    for (i, (s, _)) in hoisted.defs.iter().enumerate() {
-        symbols.insert(*s, Input::Derived(i));
-    }
-    let derive = {
-        let defs: Vec<ExprId> = hoisted.defs.iter().map(|d| d.1).collect();
-        let mut lowering = ExprLowering::new(ar, &param_symbols, None);
-        let values = lowering.lower_all(&defs);
-        lowering.builder.finish(values)
-    };
+    let states: Vec<SymbolId> = eqs.coordinates.iter().chain(&eqs.speeds).copied().collect();
+    let (symbols, derive) = hoisted.reading(ar, &states, params);
     let dependent: Vec<ExprId> = c.dependent.iter().map(|s| ar.symbol_expr(*s)).collect();
     let mut lowering = ExprLowering::new(ar, &symbols, None);
     let block = Block::lower(&mut lowering, &dependent, &roots[..first], eqs.coordinates.len());
@@ -81,19 +70,6 @@ pub fn block_roots(c: &SpeedConstraints) -> Vec<ExprId> {
     roots.extend(c.a_independent.iter().flatten());
     roots.extend(&c.b);
     roots
-}
-
-/// How the model's symbols are read: time, the states and the parameters.
-fn reading(eqs: &KaneEquations, params: &[SymbolId]) -> FxHashMap<SymbolId, Input> {
-    let mut symbols: FxHashMap<SymbolId, Input> = FxHashMap::default();
-    symbols.insert(TIME, Input::Time);
-    for (i, s) in eqs.coordinates.iter().chain(&eqs.speeds).enumerate() {
-        symbols.insert(*s, Input::State(i));
-    }
-    for (i, s) in params.iter().enumerate() {
-        symbols.insert(*s, Input::Param(i));
-    }
-    symbols
 }
 
 /// The constraint block in a section: `A_d` factored, `A_i`, and the dependent speeds solved.

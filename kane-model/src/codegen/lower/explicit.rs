@@ -4,9 +4,9 @@
 
 use rustc_hash::FxHashMap;
 
-use crate::expr::{Arena, ExprId, SymbolId, TIME};
+use crate::expr::{Arena, ExprId, SymbolId};
 
-use super::super::ir::{Input, Section};
+use super::super::ir::Section;
 use super::super::CodegenError;
 use super::exprs::ExprLowering;
 use super::hoist::Hoisted;
@@ -35,24 +35,7 @@ pub fn lower(
     for &r in form.kinematics.iter().chain(form.rates) {
         roots.push(hoisted.rewrite(ar, r, &is_param)?);
     }
-    let mut symbols: FxHashMap<SymbolId, Input> = FxHashMap::default();
-    symbols.insert(TIME, Input::Time);
-    for (i, s) in form.states.iter().enumerate() {
-        symbols.insert(*s, Input::State(i));
-    }
-    for (i, s) in params.iter().enumerate() {
-        symbols.insert(*s, Input::Param(i));
-    }
-    let param_symbols = symbols.clone();
-    for (i, (s, _)) in hoisted.defs.iter().enumerate() {
-        symbols.insert(*s, Input::Derived(i));
-    }
-    let derive = {
-        let defs: Vec<ExprId> = hoisted.defs.iter().map(|d| d.1).collect();
-        let mut lowering = ExprLowering::new(ar, &param_symbols, None);
-        let values = lowering.lower_all(&defs);
-        lowering.builder.finish(values)
-    };
+    let (symbols, derive) = hoisted.reading(ar, form.states, params);
     let late = late_speeds(ar, form.speeds);
     let mut lowering = ExprLowering::new(ar, &symbols, Some(&late));
     let values = lowering.lower_all(&roots);

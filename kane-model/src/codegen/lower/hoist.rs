@@ -4,7 +4,10 @@
 
 use rustc_hash::FxHashMap;
 
-use crate::expr::{Arena, ExprError, ExprId, Node, SymbolId, SymbolKind};
+use crate::expr::{Arena, ExprError, ExprId, Node, SymbolId, SymbolKind, TIME};
+
+use super::super::ir::{Input, Section};
+use super::exprs::ExprLowering;
 
 /// Fresh constants standing for parameter-only expressions.
 #[derive(Clone, Debug, Default)]
@@ -17,6 +20,28 @@ pub struct Hoisted {
 }
 
 impl Hoisted {
+    /// How a section reads symbols (time, `states`, `params`, and these constants as
+    /// `Input::Derived`), and the `derive` section computing the constants from the parameters.
+    pub fn reading(
+        &self,
+        ar: &Arena,
+        states: &[SymbolId],
+        params: &[SymbolId],
+    ) -> (FxHashMap<SymbolId, Input>, Section) {
+        let mut symbols: FxHashMap<SymbolId, Input> = FxHashMap::default();
+        symbols.insert(TIME, Input::Time);
+        symbols.extend(states.iter().enumerate().map(|(i, s)| (*s, Input::State(i))));
+        symbols.extend(params.iter().enumerate().map(|(i, s)| (*s, Input::Param(i))));
+        let derive = {
+            let defs: Vec<ExprId> = self.defs.iter().map(|d| d.1).collect();
+            let mut lowering = ExprLowering::new(ar, &symbols, None);
+            let values = lowering.lower_all(&defs);
+            lowering.builder.finish(values)
+        };
+        symbols.extend(self.defs.iter().enumerate().map(|(i, (s, _))| (*s, Input::Derived(i))));
+        (symbols, derive)
+    }
+
     /// `e` with its parameter-only parts replaced by constants (`is_param` names the parameters).
     pub fn rewrite(
         &mut self,

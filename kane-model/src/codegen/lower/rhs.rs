@@ -6,10 +6,10 @@
 
 use rustc_hash::FxHashMap;
 
-use crate::expr::{Arena, ExprId, SymbolId, TIME};
+use crate::expr::{Arena, ExprId, SymbolId};
 use crate::mechanics::KaneEquations;
 
-use super::super::ir::{Input, Section};
+use super::super::ir::Section;
 use super::super::CodegenError;
 use super::exprs::ExprLowering;
 use super::hoist::Hoisted;
@@ -32,24 +32,8 @@ pub fn lower(
 ) -> Result<(Section, Section), CodegenError> {
     let r = hoisted_roots(ar, eqs, params)?;
     let n = eqs.speeds.len();
-    let mut symbols: FxHashMap<SymbolId, Input> = FxHashMap::default();
-    symbols.insert(TIME, Input::Time);
-    for (i, s) in eqs.coordinates.iter().chain(&eqs.speeds).enumerate() {
-        symbols.insert(*s, Input::State(i));
-    }
-    for (i, s) in params.iter().enumerate() {
-        symbols.insert(*s, Input::Param(i));
-    }
-    let param_symbols = symbols.clone();
-    for (i, (s, _)) in r.hoisted.defs.iter().enumerate() {
-        symbols.insert(*s, Input::Derived(i));
-    }
-    let derive = {
-        let defs: Vec<ExprId> = r.hoisted.defs.iter().map(|d| d.1).collect();
-        let mut lowering = ExprLowering::new(ar, &param_symbols, None);
-        let values = lowering.lower_all(&defs);
-        lowering.builder.finish(values)
-    };
+    let states: Vec<SymbolId> = eqs.coordinates.iter().chain(&eqs.speeds).copied().collect();
+    let (symbols, derive) = r.hoisted.reading(ar, &states, params);
     // Speeds arrive last in an integrator's stage (they come from the previous stage's u'):
     // products multiply the factors without speeds first.
     let memo = std::cell::RefCell::new(FxHashMap::<ExprId, bool>::default());

@@ -59,13 +59,14 @@ impl Interpreter {
             "UNITSYSTEM" | "ENCODE" => Ok(()),
             "KANE" => {
                 self.prepare(&e.span)?;
-                let shape = self.model.kane_unformed().at(&e.span)?;
                 self.deferred_kane = None;
-                let eqs = if self.defer && self.model.defers_mass_matrix(&shape) {
-                    self.deferred_kane = Some(e.span.clone());
-                    shape
-                } else {
-                    self.model.kane().at(&e.span)?
+                let shape = if self.defer { Some(self.model.kane_unformed().at(&e.span)?) } else { None };
+                let eqs = match shape {
+                    Some(shape) if self.model.defers_mass_matrix(&shape) => {
+                        self.deferred_kane = Some(e.span.clone());
+                        shape
+                    }
+                    _ => self.model.kane().at(&e.span)?,
                 };
                 self.equations = Some(eqs);
                 Ok(())

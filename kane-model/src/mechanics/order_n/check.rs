@@ -4,12 +4,13 @@
 //! already holds (O(n^2)), where forming `M u' = f` costs O(n^3); the order-n form replaces the
 //! mass-matrix form only where they agree.
 
-use rustc_hash::FxHashMap;
+use rustc_hash::{FxHashMap, FxHashSet};
 
 use crate::expr::{ExprId, SymbolId, SymbolKind};
-use crate::mechanics::{Dyadic, FrameId, KaneEquations, Load, Model, Vector};
+use crate::mechanics::{FrameId, KaneEquations, Load, Model, Vector};
 
 use super::super::error::Result;
+use super::super::kane::MassMotion;
 
 type V3 = [f64; 3];
 type M3 = [[f64; 3]; 3];
@@ -18,19 +19,10 @@ type M3 = [[f64; 3]; 3];
 /// error, blind to the mass matrix's conditioning, which grows with a chain's length).
 const TOLERANCE: f64 = 1e-9;
 
-/// One mass's motion, symbolically.
-struct MassTerms {
-    mass: ExprId,
-    velocity: Vector,
-    acceleration: Vector,
-    /// Angular velocity, angular acceleration and central inertia of a body.
-    rotation: Option<(Vector, Vector, Dyadic)>,
-}
-
 /// The symbolic pieces of the virtual power: the masses' motions, and each load with the
 /// velocity (of its point) or angular velocity (of its body) it works through.
 struct Power {
-    masses: Vec<MassTerms>,
+    masses: Vec<MassMotion>,
     loads: Vec<(Vector, Vector)>,
 }
 
@@ -48,20 +40,7 @@ pub(crate) fn agrees(model: &mut Model, eqs: &KaneEquations, rates: &[ExprId]) -
 
 fn power_terms(model: &mut Model) -> Result<Power> {
     let n = model.newtonian;
-    let mut masses = Vec::new();
-    for view in model.masses().collect::<Vec<_>>() {
-        let mass = view.mass()?;
-        let (velocity, acceleration) = model.point_motion(view.point)?;
-        let rotation = match view.frame {
-            Some(frame) => {
-                let w = model.angular_velocity(frame, n)?;
-                let alpha = model.dt_in(&w, n)?;
-                Some((w, alpha, model.rebase_inertia(&view.inertia.unwrap_or_default())))
-            }
-            None => None,
-        };
-        masses.push(MassTerms { mass, velocity, acceleration, rotation });
-    }
+    let masses = model.mass_motions()?;
     let mut loads = Vec::new();
     for load in model.loads.clone() {
         loads.push(match load {
@@ -89,9 +68,9 @@ fn frame_dcms(model: &mut Model, power: &Power) -> Result<Option<Vec<ParentDcm>>
     }
     frames.extend(vectors.iter().flat_map(|v| v.terms.iter().map(|t| t.0)));
     let mut out = Vec::new();
-    let mut seen: FxHashMap<FrameId, ()> = FxHashMap::default();
+    let mut seen: FxHashSet<FrameId> = FxHashSet::default();
     while let Some(f) = frames.pop() {
-        if f == model.newtonian || seen.insert(f, ()).is_some() {
+        if f == model.newtonian || !seen.insert(f) {
             continue;
         }
         let Some(parent) = model.frames[f.index()].parent else { return Ok(None) };
