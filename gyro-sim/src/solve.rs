@@ -16,8 +16,9 @@ use crate::problem::{Pick, Problem};
 use crate::refine::refine;
 use crate::registry::Registry;
 use crate::rows::Rows;
-use crate::trajectory::{Column, Trajectory};
+use crate::trajectory::{Column, Constraints, Trajectory};
 use crate::unit_norm::{normalise, NormDrift, UnitNorm};
+use kane_model::assembly::Assembly;
 
 /// Why an integration failed.
 #[derive(Clone, Debug, PartialEq, Error)]
@@ -90,6 +91,9 @@ pub enum SolveError {
     /// The integrator stopped.
     #[error("integration failed: {0}")]
     Ode(#[from] OdeError),
+    /// The initial state cannot be brought onto the configuration constraints.
+    #[error("cannot start: {0}")]
+    Assembly(#[from] kane_model::assembly::AssemblyError),
     /// Refining the tolerances could not reach the asked accuracy.
     #[error("integration failed: accuracy {goal:e} not reached: runs at rtol {rtol:e} and below still differ by more; ask a looser accuracy")]
     AccuracyNotReached {
@@ -244,6 +248,8 @@ pub(crate) struct Integration {
     pub(crate) y_end: Vec<f64>,
     pub(crate) norm_drift: Option<NormDrift>,
     pub(crate) events: EventLog,
+    /// The largest constraint residuals at the output times.
+    pub(crate) largest_residual: Residuals,
 }
 
 /// Integrates `problem` with the generated model `M`.
@@ -258,6 +264,11 @@ pub fn solve_model<M: GeneratedModel>(problem: &Problem) -> Result<Trajectory, S
 /// Integrates `problem` with `model` (its parameters already bound).
 pub fn solve_bound<B: BoundModel>(problem: &Problem, full_sys: &B) -> Result<Trajectory, SolveError> {
     let info = full_sys.info();
+    let assembled = assembled(problem, full_sys)?;
+    let (problem, assembly) = match &assembled {
+        Some((p, a)) => (p, Some(a.clone())),
+        None => (problem, None),
+    };
     let keep = integrated_states(problem);
     let sys = Reduced::new(full_sys, keep.clone());
     let columns = columns(problem);
@@ -266,7 +277,7 @@ pub fn solve_bound<B: BoundModel>(problem: &Problem, full_sys: &B) -> Result<Tra
     }
     let integrate_at = |method: Method| integrate(problem, &sys, &keep, &columns, method);
     let start = Instant::now();
-    let (Integration { stats, rows, plot_rows, y_end, norm_drift, events }, accuracy) =
+    let (Integration { stats, rows, plot_rows, y_end, norm_drift, events, largest_residual }, accuracy) =
         match (problem.accuracy, problem.method) {
             (Some(goal), method @ (Method::Adaptive(_, tol) | Method::Taylor(tol))) => {
                 // The time and the written columns: view-only columns come after them.
@@ -297,7 +308,58 @@ pub fn solve_bound<B: BoundModel>(problem: &Problem, full_sys: &B) -> Result<Tra
         accuracy,
         norm_drift,
         events,
+        constraints: largest_residual.report(assembly),
     })
+}
+
+/// The problem with its initial state assembled onto the model's configuration constraints,
+/// or None for a model without them.
+fn assembled<B: BoundModel>(problem: &Problem, model: &B) -> Result<Option<(Problem, Assembly)>, SolveError> {
+    let info = model.info();
+    let Some(k) = kane_model::assembly::residual_output(info) else { return Ok(None) };
+    let mut initial = problem.initial.clone();
+    let assembly = kane_model::assembly::assemble(info, &mut initial, |y, dy, r, dr| {
+        model.output_rate(k, 0.0, y, dy, r, dr)
+    })?;
+    Ok(Some((Problem { initial, ..problem.clone() }, assembly)))
+}
+
+/// The largest constraint residuals at the output times so far, by kind (configuration,
+/// motion), for a model that has them.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Residuals {
+    configuration: Option<f64>,
+    motion: Option<f64>,
+}
+
+impl Residuals {
+    /// Updated with the residuals at `(t, y)`.
+    fn track<B: BoundModel>(&mut self, model: &B, t: f64, y: &[f64]) {
+        let info = model.info();
+        for (k, o) in info.outputs.iter().enumerate() {
+            let slot = match o.kind {
+                "configuration_residuals" => &mut self.configuration,
+                "motion_residuals" => &mut self.motion,
+                _ => continue,
+            };
+            let mut r = vec![0.0; o.columns.len()];
+            model.output(k, t, y, &[], &mut r);
+            // A NaN residual is kept as NaN: the report then says it was not finite.
+            *slot = Some(r.iter().fold(slot.unwrap_or(0.0), |a, x| {
+                if a.is_nan() || x.is_nan() {
+                    f64::NAN
+                } else {
+                    a.max(x.abs())
+                }
+            }));
+        }
+    }
+
+    /// The run's report, when the model has constraints.
+    fn report(self, assembly: Option<Assembly>) -> Option<Constraints> {
+        let any = assembly.is_some() || self.configuration.is_some() || self.motion.is_some();
+        any.then_some(Constraints { assembly, configuration: self.configuration, motion: self.motion })
+    }
 }
 
 /// The kinetic-energy output of a model, if it has one that reads no rates.
@@ -368,9 +430,11 @@ fn integrate<B: BoundModel>(
     let mut next_output = 0;
     let groups = reduced_groups(&problem.unit_norms, keep);
     let held = UnitNorm::new(sys, &groups, norm_threshold(method));
+    let mut largest_residual = Residuals::default();
     let on_output = |t: f64, y_red: &[f64]| {
         sys.expand(y_red, &mut full_y);
         normalise(&problem.unit_norms, &mut full_y);
+        largest_residual.track(sys.inner, t, &full_y);
         y_end.copy_from_slice(&full_y);
         t_good = t;
         let row = match row_at(problem, sys.inner, columns, t, &full_y, &mut dy) {
@@ -436,7 +500,7 @@ fn integrate<B: BoundModel>(
     let stats = outcome.map_err(|e| diagnose::explain(sys.inner, e, t_good, &y_end))?;
     let norm_drift = (!groups.is_empty()).then(|| held.drift());
     let (rows, plot_rows) = (rows.into_rows(), plot_rows.into_rows());
-    Ok(Integration { stats, rows, plot_rows, y_end, norm_drift, events })
+    Ok(Integration { stats, rows, plot_rows, y_end, norm_drift, events, largest_residual })
 }
 
 /// The row at `(t, full_y)`: `t`, then the picks' columns (`dy` the scratch for the speed rates

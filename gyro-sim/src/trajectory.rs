@@ -68,4 +68,18 @@ pub struct Trajectory {
     pub norm_drift: Option<NormDrift>,
     /// The events declared and those that happened.
     pub events: crate::events::EventLog,
+    /// How the start was assembled onto the configuration constraints and how well the run
+    /// kept its constraints, when the model has any.
+    pub constraints: Option<Constraints>,
+}
+
+/// A run's constraints: the assembled start and the residuals along the run.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Constraints {
+    /// What assembling the initial state onto the configuration constraints did.
+    pub assembly: Option<kane_model::assembly::Assembly>,
+    /// The largest configuration residual at the output times.
+    pub configuration: Option<f64>,
+    /// The largest motion-constraint residual at the output times.
+    pub motion: Option<f64>,
 }

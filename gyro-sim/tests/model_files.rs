@@ -12,6 +12,7 @@ const VARIANT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/variant_g
 const CHAIN40: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/chain40_rigid.al");
 const DISC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/rolling_disc.al");
 const BICYCLE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/whipple_bicycle.al");
+const FOUR_BAR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/four_bar.al");
 
 /// A fresh folder for one test.
 fn folder(name: &str) -> PathBuf {
@@ -79,6 +80,63 @@ fn a_rolling_disc_keeps_its_energy_and_its_contact_speeds() {
         assert!((u4 - 0.5 * q1.cos() * u3).abs() < 1e-12, "{r:?}");
     }
     assert!(rows.len() > 10 && (rows.last().unwrap()[2] - 0.3).abs() > 0.1, "the disc did not turn");
+}
+
+/// The two residuals of a summary line `... largest residual A at the start, B at the output
+/// times` (or one, `... B at the output times`).
+fn residuals(summary: &str, prefix: &str) -> Vec<f64> {
+    let line = summary
+        .lines()
+        .find(|l| l.starts_with(prefix))
+        .unwrap_or_else(|| panic!("no {prefix} line in {summary}"));
+    let tail = line.split("largest residual ").nth(1).unwrap();
+    tail.split(", ").map(|part| part.split(' ').next().unwrap().parse().unwrap()).collect()
+}
+
+#[test]
+fn a_four_bar_loop_starts_assembled_and_keeps_its_loop_closed() {
+    // Q2 and Q3 in the file (0.3, 1.7) do not close the loop: the run solves them for the
+    // crank angle Q1 = 1.2, then integrates with the residuals reported.
+    let dir = folder("four_bar");
+    let out = dir.join("out");
+    let run = gyro_sim(&["--model", FOUR_BAR, "--engine", "instant", "--out", out.to_str().unwrap()], &dir);
+    let summary = text(&run);
+    assert!(run.status.success(), "{summary}");
+    assert!(summary.contains("configuration constraints: the start assembled by"), "{summary}");
+    let config = residuals(&summary, "configuration constraints:");
+    assert!(config[0] < 1e-14 && config[1] < 1e-8, "{config:?}");
+    let motion = residuals(&summary, "motion constraints:");
+    assert!(motion[0] < 1e-12, "{motion:?}");
+    // The start against the loop closed by hand: the coupler's far end on the circle of
+    // radius LC about D (LA = 1, LB = 2.5, LC = 2, LD = 2.5).
+    let rows = rows(&out);
+    let (q1, q2, q3) = (rows[0][1], rows[0][2], rows[0][3]);
+    assert_eq!(q1, 1.2);
+    let end = (q1.cos() + 2.5 * q2.cos(), q1.sin() + 2.5 * q2.sin());
+    let rocker = (2.5 + 2.0 * q3.cos(), 2.0 * q3.sin());
+    assert!((end.0 - rocker.0).abs() < 1e-14 && (end.1 - rocker.1).abs() < 1e-14, "{end:?} {rocker:?}");
+    // Columns: t, Q1, Q2, Q3, U2, U3, ENERGY; tolerances 1e-10.
+    let e0 = rows[0][6];
+    let drift = rows.iter().map(|r| (r[6] - e0).abs()).fold(0.0, f64::max) / e0.abs();
+    assert!(drift < 1e-8, "energy drift {drift:e}");
+    assert!((rows.last().unwrap()[1] - q1).abs() > 0.5, "the crank did not turn");
+}
+
+#[test]
+fn a_loop_that_cannot_close_is_an_error_that_says_so() {
+    let dir = folder("four_bar_open");
+    let file = dir.join("open.al");
+    let text_of = std::fs::read_to_string(FOUR_BAR).unwrap().replace("LD = 2.5", "LD = 9");
+    std::fs::write(&file, text_of).unwrap();
+    let out = dir.join("out");
+    let run = gyro_sim(
+        &["--model", file.to_str().unwrap(), "--engine", "instant", "--out", out.to_str().unwrap()],
+        &dir,
+    );
+    let message = text(&run);
+    assert!(!run.status.success(), "{message}");
+    assert!(message.contains("the configuration constraints") && message.contains("Q2, Q3"), "{message}");
+    assert!(!out.join("trajectory.csv").exists(), "no rows for a run that cannot start");
 }
 
 #[test]

@@ -46,7 +46,9 @@ fn linearisation(c: &mut Criterion) {
         b.iter(|| {
             v = (v + 1.0) % 11.0;
             params[speed] = v;
-            black_box(kane_model::codegen::linearize::linearize(&lowered.program, &params, 0.0, &y, &[]).a.len())
+            black_box(
+                kane_model::codegen::linearize::linearize(&lowered.program, &params, 0.0, &y, &[]).a.len(),
+            )
         })
     });
 }

@@ -66,7 +66,9 @@ INERTIA FB, IHXX, IHYY, IHZZ, 0, 0, IHXZ
 GRAVITY(-G*N3>)
 TORQUE_RB> = TPHI*Y1>
 TORQUE(RB/FB, TDELTA*FORK1>)
-% The front wheel rolls without slipping and stays on the ground.
+% The front wheel touches the ground (which fixes the pitch Q4), rolls without slipping and
+% stays on the ground.
+CONFIG[1] = DOT(P_CR_CF>, N3>)
 DEPENDENT[1] = DOT(V_CF_N>, Y1>)
 DEPENDENT[2] = DOT(V_CF_N>, Y2>)
 DEPENDENT[3] = DOT(V_CF_N>, Y3>)

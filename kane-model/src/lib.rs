@@ -11,6 +11,7 @@
 //! - [`dual`]: dual numbers implementing `num_traits::Float`, for exact derivatives.
 #![warn(missing_docs)]
 
+pub mod assembly;
 pub mod build;
 pub mod codegen;
 pub mod dual;

@@ -39,6 +39,9 @@ pub struct ModelInfo {
     /// Coordinates that no equation reads (cyclic): they can be left out of the integrated
     /// state when no output needs them.
     pub cyclic: &'static [usize],
+    /// The coordinates the configuration constraints determine (solved for at the start of a
+    /// run, see [`crate::assembly`]); empty for a model without such constraints.
+    pub dependent_coordinates: &'static [usize],
     /// Arithmetic operations per call of `rhs` and per evaluation of every output.
     pub op_counts: (usize, usize),
     /// The orders whose Taylor coefficients the model computes straight-line (faster than the

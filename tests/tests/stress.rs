@@ -536,6 +536,7 @@ static BLOWUP: kane_model::runtime::ModelInfo = kane_model::runtime::ModelInfo {
     param_units: &[],
     outputs: &[],
     cyclic: &[],
+    dependent_coordinates: &[],
     op_counts: (0, 0),
     taylor_straight_line: &[],
 };

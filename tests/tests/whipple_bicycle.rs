@@ -178,16 +178,66 @@ fn weave_and_capsize_speeds_equal_the_benchmark() {
 /// imaginary part of the upper member of each complex pair.
 const TABLE_2: [[(f64, f64); 4]; 11] = [
     [(5.53094371765393, 0.0), (3.13164324790656, 0.0), (-3.13164324790656, 0.0), (-5.53094371765393, 0.0)],
-    [(3.52696170990070, 0.80774027519930), (3.52696170990070, -0.80774027519930), (-3.13423125066578, 0.0), (-7.11008014637442, 0.0)],
-    [(2.68234517512745, 1.68066296590675), (2.68234517512745, -1.68066296590675), (-3.07158645641514, 0.0), (-8.67387984831735, 0.0)],
-    [(1.70675605663975, 2.31582447384325), (1.70675605663975, -2.31582447384325), (-2.63366137253667, 0.0), (-10.35101467245920, 0.0)],
-    [(0.41325331521125, 3.07910818603206), (0.41325331521125, -3.07910818603206), (-1.42944427361326, 0.0), (-12.15861426576447, 0.0)],
-    [(-0.77534188219585, 4.46486771378823), (-0.77534188219585, -4.46486771378823), (-0.32286642900409, 0.0), (-14.07838969279822, 0.0)],
-    [(-1.52644486584142, 5.87673060598709), (-1.52644486584142, -5.87673060598709), (-0.00406690076970, 0.0), (-16.08537123098026, 0.0)],
-    [(-2.13875644258362, 7.19525913329805), (-2.13875644258362, -7.19525913329805), (0.10268170574766, 0.0), (-18.15788466125262, 0.0)],
-    [(-2.69348683581097, 8.46037971396931), (-2.69348683581097, -8.46037971396931), (0.14327879765713, 0.0), (-20.27940894394569, 0.0)],
-    [(-3.21675402252485, 9.69377351531791), (-3.21675402252485, -9.69377351531791), (0.15790184030917, 0.0), (-22.43788559040858, 0.0)],
-    [(-3.72016840437287, 10.90681139476287), (-3.72016840437287, -10.90681139476287), (0.16105338653172, 0.0), (-24.62459635017404, 0.0)],
+    [
+        (3.52696170990070, 0.80774027519930),
+        (3.52696170990070, -0.80774027519930),
+        (-3.13423125066578, 0.0),
+        (-7.11008014637442, 0.0),
+    ],
+    [
+        (2.68234517512745, 1.68066296590675),
+        (2.68234517512745, -1.68066296590675),
+        (-3.07158645641514, 0.0),
+        (-8.67387984831735, 0.0),
+    ],
+    [
+        (1.70675605663975, 2.31582447384325),
+        (1.70675605663975, -2.31582447384325),
+        (-2.63366137253667, 0.0),
+        (-10.35101467245920, 0.0),
+    ],
+    [
+        (0.41325331521125, 3.07910818603206),
+        (0.41325331521125, -3.07910818603206),
+        (-1.42944427361326, 0.0),
+        (-12.15861426576447, 0.0),
+    ],
+    [
+        (-0.77534188219585, 4.46486771378823),
+        (-0.77534188219585, -4.46486771378823),
+        (-0.32286642900409, 0.0),
+        (-14.07838969279822, 0.0),
+    ],
+    [
+        (-1.52644486584142, 5.87673060598709),
+        (-1.52644486584142, -5.87673060598709),
+        (-0.00406690076970, 0.0),
+        (-16.08537123098026, 0.0),
+    ],
+    [
+        (-2.13875644258362, 7.19525913329805),
+        (-2.13875644258362, -7.19525913329805),
+        (0.10268170574766, 0.0),
+        (-18.15788466125262, 0.0),
+    ],
+    [
+        (-2.69348683581097, 8.46037971396931),
+        (-2.69348683581097, -8.46037971396931),
+        (0.14327879765713, 0.0),
+        (-20.27940894394569, 0.0),
+    ],
+    [
+        (-3.21675402252485, 9.69377351531791),
+        (-3.21675402252485, -9.69377351531791),
+        (0.15790184030917, 0.0),
+        (-22.43788559040858, 0.0),
+    ],
+    [
+        (-3.72016840437287, 10.90681139476287),
+        (-3.72016840437287, -10.90681139476287),
+        (0.16105338653172, 0.0),
+        (-24.62459635017404, 0.0),
+    ],
 ];
 
 #[test]
@@ -200,7 +250,9 @@ fn eigenvalues_equal_the_benchmark_table_to_its_printed_digits() {
         let mut got: Vec<nalgebra::Complex<f64>> = m.complex_eigenvalues().iter().copied().collect();
         for &(re, im) in row {
             let want = nalgebra::Complex::new(re, im);
-            let k = (0..got.len()).min_by(|&x, &y| (got[x] - want).norm().total_cmp(&(got[y] - want).norm())).unwrap();
+            let k = (0..got.len())
+                .min_by(|&x, &y| (got[x] - want).norm().total_cmp(&(got[y] - want).norm()))
+                .unwrap();
             let error = (got.remove(k) - want).norm();
             // 1e-12 relative; for the eigenvalues near zero (capsize near 6 m/s) half a unit of
             // the table's 14th decimal plus what a backward-stable eigensolver may add in
@@ -212,4 +264,35 @@ fn eigenvalues_equal_the_benchmark_table_to_its_printed_digits() {
         }
     }
     println!("largest relative difference from Table 2: {worst:e}");
+}
+
+#[test]
+fn the_pitch_is_solved_from_the_front_contact_and_is_mirror_symmetric() {
+    // CONFIG[1]: the front contact on the ground determines the pitch Q4 from roll and steer.
+    let source = std::fs::read_to_string(BICYCLE).unwrap();
+    let loaded = kane_model::lang::check_for_generation(BICYCLE, &source).unwrap().model;
+    let values: FxHashMap<String, f64> =
+        loaded.inputs.iter().map(|i| (i.name.to_ascii_uppercase(), i.value)).collect();
+    let mut spec = loaded.into_spec("whipple_bicycle").unwrap();
+    let model = kane_model::codegen::ProgramModel::new(&mut spec).unwrap();
+    let info = model.info();
+    assert_eq!(info.dependent_coordinates.iter().map(|k| info.state_names[*k]).collect::<Vec<_>>(), ["Q4"]);
+    let params: Vec<f64> = info.param_names.iter().map(|n| values[*n]).collect();
+    let pitch = |roll: f64, steer: f64| {
+        let mut y: Vec<f64> = info.state_names.iter().map(|n| values[*n]).collect();
+        y[info.state("Q2").unwrap()] = roll;
+        y[info.state("Q5").unwrap()] = steer;
+        let a = model.assemble(&params, &mut y).unwrap().unwrap();
+        assert!(a.residual < 1e-15, "{a:?}");
+        (y[info.state("Q4").unwrap()], a.iterations)
+    };
+    assert_eq!(pitch(0.0, 0.0), (0.0, 0), "upright is assembled as it stands");
+    let (p, steps) = pitch(0.2, 0.3);
+    assert!(steps > 0 && p.abs() > 1e-3, "pitch {p} after {steps} steps");
+    let (mirror, _) = pitch(-0.2, -0.3);
+    assert!((p - mirror).abs() < 1e-14, "{p} vs {mirror}");
+    // Leaning alone, front wheel straight, tilts the bicycle about the line through its two
+    // contacts: no pitch.
+    let (lean_only, _) = pitch(0.2, 0.0);
+    assert!(lean_only.abs() < 1e-15, "pitch {lean_only} at roll alone");
 }

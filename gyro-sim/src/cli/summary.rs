@@ -30,6 +30,9 @@ pub fn print_summary(title: &str, summary: &run::RunSummary) {
             d.largest, d.threshold, d.projections
         );
     }
+    if let Some(c) = &t.constraints {
+        constraint_lines(c).iter().for_each(|l| println!("{l}"));
+    }
     for line in event_lines(&t.events) {
         println!("{line}");
     }
@@ -62,6 +65,31 @@ fn event_lines(log: &crate::events::EventLog) -> Vec<String> {
     if let Some((name, t)) = &log.stopped {
         lines.push(format!(
             "stopped by event {name} at t = {t:.12}: rows at the output times before it, then a last row at it"
+        ));
+    }
+    lines
+}
+
+/// The assembled start and the largest constraint residuals of the run.
+fn constraint_lines(c: &crate::trajectory::Constraints) -> Vec<String> {
+    let mut lines = Vec::new();
+    if let Some(a) = &c.assembly {
+        let start = if a.iterations == 0 {
+            "the initial state satisfies them".to_string()
+        } else {
+            let moved: Vec<String> =
+                a.moved.iter().map(|(name, from, to)| format!("{name} {from} -> {to}")).collect();
+            format!("the start assembled by {} Newton steps ({})", a.iterations, moved.join(", "))
+        };
+        let along = c.configuration.map_or(String::new(), |r| format!(", {r:.2e} at the output times"));
+        lines.push(format!(
+            "configuration constraints: {start}; largest residual {:.2e} at the start{along}",
+            a.residual
+        ));
+    }
+    if let Some(r) = c.motion {
+        lines.push(format!(
+            "motion constraints: dependent speeds solved at every evaluation; largest residual {r:.2e} at the output times"
         ));
     }
     lines

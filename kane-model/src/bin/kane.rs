@@ -280,10 +280,16 @@ fn linearize(file: PathBuf, set: Vec<String>, inputs: Vec<String>, json: bool) -
     let name = file.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
     let fail = |e: kane_model::codegen::CodegenError| format!("{}: {e}", file.display());
     let mut spec = loaded.into_spec(&name).map_err(fail)?;
-    let lowered = kane_model::codegen::lower(&mut spec).map_err(fail)?;
-    let upper = |s: &SymbolId| spec.symbol_name(*s).to_ascii_uppercase();
-    let missing: Vec<String> =
-        lowered.params.iter().chain(&lowered.states).map(upper).filter(|n| !values.contains_key(n)).collect();
+    let model = kane_model::codegen::ProgramModel::new(&mut spec).map_err(fail)?;
+    let info = model.info();
+    let upper = |s: &&str| s.to_ascii_uppercase();
+    let missing: Vec<String> = info
+        .param_names
+        .iter()
+        .chain(info.state_names)
+        .map(upper)
+        .filter(|n| !values.contains_key(n))
+        .collect();
     if !missing.is_empty() {
         return Err(format!(
             "{}: no value for {}; give them with --set NAME=VALUE or INPUT",
@@ -291,21 +297,32 @@ fn linearize(file: PathBuf, set: Vec<String>, inputs: Vec<String>, json: bool) -
             missing.join(", ")
         ));
     }
-    let params: Vec<f64> = lowered.params.iter().map(|s| values[&upper(s)]).collect();
-    let y: Vec<f64> = lowered.states.iter().map(|s| values[&upper(s)]).collect();
+    let params: Vec<f64> = info.param_names.iter().map(|s| values[&upper(s)]).collect();
+    let mut y: Vec<f64> = info.state_names.iter().map(|s| values[&upper(s)]).collect();
     let mut positions = Vec::with_capacity(inputs.len());
     for i in &inputs {
-        let at = lowered.params.iter().position(|s| upper(s) == i.to_ascii_uppercase());
+        let at = info.param_names.iter().position(|s| s.eq_ignore_ascii_case(i));
         positions.push(at.ok_or_else(|| format!("--input {i}: not a constant the equations read"))?);
     }
-    let l = kane_model::codegen::linearize::linearize(&lowered.program, &params, 0.0, &y, &positions);
+    let assembly =
+        model.assemble(&params, &mut y).transpose().map_err(|e| format!("{}: {e}", file.display()))?;
+    let l = kane_model::codegen::linearize::linearize(model.program(), &params, 0.0, &y, &positions);
     if l.a.iter().chain(&l.b).flatten().any(|x| !x.is_finite()) {
         return Err(format!("{}: the linearisation is not finite at this point (a singular mass matrix or constraints losing rank)", file.display()));
     }
-    let states: Vec<String> = lowered.states.iter().map(|s| spec.symbol_name(*s).to_string()).collect();
+    let states = info.state_names;
+    let moved: Vec<_> = assembly.iter().flat_map(|a| &a.moved).filter(|(_, from, to)| from != to).collect();
     if json {
-        println!("{}", serde_json::json!({ "states": states, "inputs": inputs, "A": l.a, "B": l.b }));
+        let assembled: serde_json::Map<String, serde_json::Value> =
+            moved.iter().map(|(n, _, to)| (n.to_string(), serde_json::json!(to))).collect();
+        println!(
+            "{}",
+            serde_json::json!({ "states": states, "inputs": inputs, "assembled": assembled, "A": l.a, "B": l.b })
+        );
     } else {
+        for (n, from, to) in moved {
+            println!("assembled: {n} = {to} (from {from}) so the configuration constraints hold");
+        }
         println!("states: {}\ninputs: {}", states.join(", "), inputs.join(", "));
         for (n, row) in states.iter().zip(l.a.iter().zip(&l.b)) {
             let cells: Vec<String> = row.0.iter().chain(row.1).map(|x| format!("{x:.12e}")).collect();

@@ -43,6 +43,8 @@ pub struct Meta {
     pub outputs: Vec<OutputMeta>,
     /// Coordinates no equation reads.
     pub cyclic: Vec<usize>,
+    /// The coordinates the configuration constraints determine.
+    pub dependent_coordinates: Vec<usize>,
     /// Operations per `rhs` call and per evaluation of every output.
     pub op_counts: (usize, usize),
     /// The orders whose Taylor coefficients the generated code computes straight-line.
@@ -71,8 +73,19 @@ impl Meta {
                 needs_rates: code.needs_rates,
             })
             .collect();
+        let dependent_coordinates = spec
+            .outputs
+            .iter()
+            .filter_map(|o| match &o.kind {
+                crate::spec::OutputKind::ConfigurationResiduals { dependent } => Some(dependent),
+                _ => None,
+            })
+            .flatten()
+            .filter_map(|q| states.iter().position(|s| s == q))
+            .collect();
         Meta {
             name: spec.name.clone(),
+            dependent_coordinates,
             state_units: units(&states),
             states,
             n_coordinates: lowered.program.n_coordinates,
@@ -109,6 +122,7 @@ impl Meta {
             param_units: leak_strs(&self.param_units),
             outputs: Box::leak(outputs.into_boxed_slice()),
             cyclic: Box::leak(self.cyclic.clone().into_boxed_slice()),
+            dependent_coordinates: Box::leak(self.dependent_coordinates.clone().into_boxed_slice()),
             op_counts: self.op_counts,
             taylor_straight_line: Box::leak(self.taylor_straight_line.clone().into_boxed_slice()),
         }))

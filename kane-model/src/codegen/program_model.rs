@@ -2,6 +2,7 @@
 //! spec; out goes a [`ProgramModel`] that evaluates `derive`, `rhs` and each output from the
 //! same SSA sections the printer spells, so both paths compute the same operations.
 
+use crate::assembly::{Assembly, AssemblyError};
 use crate::dual::Dual;
 use crate::runtime::{quaternion_from_dcm, ModelInfo, TaylorWork};
 use crate::spec::ModelSpec;
@@ -43,6 +44,20 @@ impl ProgramModel {
     /// The model's metadata.
     pub fn info(&self) -> &'static ModelInfo {
         self.info
+    }
+
+    /// The lowered program it evaluates.
+    pub fn program(&self) -> &Program {
+        &self.program
+    }
+
+    /// `y` with its dependent coordinates solved so the configuration constraints hold (see
+    /// [`crate::assembly`]); None for a model without configuration constraints.
+    pub fn assemble(&self, params: &[f64], y: &mut [f64]) -> Option<Result<Assembly, AssemblyError>> {
+        let k = crate::assembly::residual_output(self.info)?;
+        Some(crate::assembly::assemble(self.info, y, |y, dy, r, dr| {
+            self.output_rate(k, 0.0, y, dy, params, r, dr)
+        }))
     }
 
     /// The parameter defaults from INPUT, in `info().param_names` order (NaN where none).

@@ -1,5 +1,6 @@
 //! A loaded model file as a spec: in comes a [`LoadedModel`]; out goes a [`ModelSpec`] with the
-//! file's equations, INPUT defaults, UNITS, its OUTPUT scalars and the kinetic energy.
+//! file's equations, INPUT defaults, UNITS, its OUTPUT scalars, the residuals of its
+//! configuration and motion constraints (`CONFIG`, `CONSTRAINT`) and the kinetic energy.
 
 use crate::codegen::CodegenError;
 use crate::mechanics::FrameId;
@@ -30,6 +31,8 @@ impl LoadedModel {
                 Output::Value(_) => return Err(CodegenError::UnknownOutput(oname.to_string())),
             }
         }
+        spec.add_configuration_residuals("CONFIG", "")?;
+        spec.add_motion_residuals("CONSTRAINT", "");
         if !spec.outputs.iter().any(|o| o.name.eq_ignore_ascii_case("KE")) {
             let unit = spec.unit("KE").to_string();
             spec.add_kinetic_energy("KE", &unit)?;

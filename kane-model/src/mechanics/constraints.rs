@@ -54,9 +54,45 @@ impl Model {
         self.configuration_constraints.push(residual);
     }
 
+    /// The motion constraints' residuals (linear in the speeds), in the order DEPENDENT gave
+    /// them; empty without constraints.
+    pub fn motion_residuals(&self) -> &[ExprId] {
+        self.constraints.as_ref().map_or(&[], |c| &c.residuals)
+    }
+
     /// The configuration constraints' residuals.
     pub fn configuration_residuals(&self) -> &[ExprId] {
         &self.configuration_constraints
+    }
+
+    /// The coordinates the configuration constraints determine, one per constraint: those whose
+    /// rate is a dependent speed (`q' = u_d`) and that the constraints read, in the order the
+    /// coordinates were declared.
+    pub fn dependent_coordinates(&self) -> Result<Vec<SymbolId>> {
+        if self.configuration_constraints.is_empty() {
+            return Ok(Vec::new());
+        }
+        let dependent = self.dependent_speeds();
+        let read = self.ar.free_symbols(&self.configuration_constraints);
+        let found: Vec<SymbolId> = self
+            .coordinates
+            .iter()
+            .copied()
+            .filter(|q| read.contains(q))
+            .filter(|q| {
+                let rate = self.kinematics.get(q).and_then(|r| self.ar.as_symbol(*r));
+                rate.is_some_and(|u| dependent.contains(&u))
+            })
+            .collect();
+        if found.len() != self.configuration_constraints.len() {
+            let names: Vec<&str> = found.iter().map(|q| self.ar.symbol_info(*q).name.as_str()).collect();
+            return Err(MechanicsError::ConfigurationUnderdetermined {
+                constraints: self.configuration_constraints.len(),
+                found: found.len(),
+                names: if names.is_empty() { "none".into() } else { names.join(", ") },
+            });
+        }
+        Ok(found)
     }
 
     /// The speeds that remain independent.

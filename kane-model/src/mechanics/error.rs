@@ -81,6 +81,21 @@ pub enum MechanicsError {
     /// A constraint matrix cannot be solved for the dependent speeds.
     #[error("the constraints cannot be solved for the dependent speeds (singular coefficient matrix)")]
     SingularConstraints,
+    /// The configuration constraints do not name as many dependent coordinates as there are
+    /// constraints.
+    #[error(
+        "{constraints} configuration constraints (CONFIG[...]) but {found} dependent coordinates ({names}): \
+         a configuration constraint needs a coordinate whose rate is a dependent speed (Q' = U with U in \
+         CONSTRAIN(DEPENDENT[...])) and that the constraint reads"
+    )]
+    ConfigurationUnderdetermined {
+        /// How many configuration constraints.
+        constraints: usize,
+        /// How many dependent coordinates they read.
+        found: usize,
+        /// Their names.
+        names: String,
+    },
     /// The constraints' matrix of dependent speeds is (nearly) singular at the point asked for.
     #[error(
         "the constraints lose rank at {at}: their matrix of dependent speeds has reciprocal condition \

@@ -37,6 +37,15 @@ pub enum OutputKind {
     KineticEnergy,
     /// The potential energy of uniform gravity.
     PotentialEnergy,
+    /// The residuals of the configuration constraints (zero on the constraint manifold), with
+    /// the coordinates they determine.
+    ConfigurationResiduals {
+        /// The dependent coordinates' names, one per residual.
+        dependent: Vec<String>,
+    },
+    /// The residuals of the motion constraints with the dependent speeds solved from them
+    /// (zero up to rounding: a check of the solve).
+    MotionResiduals,
     /// The angular momentum about `point` in the Newtonian frame, measured in `frame`.
     AngularMomentum {
         /// The point's name.
@@ -57,6 +66,8 @@ impl OutputKind {
             OutputKind::KineticEnergy => "kinetic_energy",
             OutputKind::PotentialEnergy => "potential_energy",
             OutputKind::AngularMomentum { .. } => "angular_momentum",
+            OutputKind::ConfigurationResiduals { .. } => "configuration_residuals",
+            OutputKind::MotionResiduals => "motion_residuals",
         }
     }
 }
@@ -88,6 +99,9 @@ impl OutputSpec {
             OutputKind::Orientation { form: OrientationForm::Quaternion, .. } => {
                 (0..4).map(|i| format!("E{i}")).collect()
             }
+            OutputKind::ConfigurationResiduals { .. } | OutputKind::MotionResiduals => {
+                (1..=self.components.len()).map(|i| i.to_string()).collect()
+            }
             _ => return vec![self.name.clone()],
         };
         suffixes.into_iter().map(|s| format!("{}_{s}", self.name)).collect()
@@ -98,6 +112,28 @@ impl ModelSpec {
     /// Adds a scalar output.
     pub fn add_scalar(&mut self, name: &str, e: ExprId, unit: &str) {
         self.push(name, unit, OutputKind::Scalar, vec![e]);
+    }
+
+    /// Adds the residuals of the model's configuration constraints as the output `name` (one
+    /// column each), when it has any.
+    pub fn add_configuration_residuals(&mut self, name: &str, unit: &str) -> Result<()> {
+        let dependent = self.model.dependent_coordinates()?;
+        if dependent.is_empty() {
+            return Ok(());
+        }
+        let dependent = dependent.iter().map(|q| self.symbol_name(*q).to_string()).collect();
+        let residuals = self.model.configuration_residuals().to_vec();
+        self.push(name, unit, OutputKind::ConfigurationResiduals { dependent }, residuals);
+        Ok(())
+    }
+
+    /// Adds the residuals of the model's motion constraints as the output `name`, when it has
+    /// any.
+    pub fn add_motion_residuals(&mut self, name: &str, unit: &str) {
+        let residuals = self.model.motion_residuals().to_vec();
+        if !residuals.is_empty() {
+            self.push(name, unit, OutputKind::MotionResiduals, residuals);
+        }
     }
 
     /// Adds a vector output measured in `frame`.

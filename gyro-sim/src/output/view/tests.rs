@@ -106,6 +106,7 @@ fn trajectory() -> Trajectory {
         kinetic_energy: None,
         accuracy: None,
         norm_drift: None,
+        constraints: None,
         events: Default::default(),
     }
 }

@@ -16,6 +16,7 @@ pub fn info(meta: &Meta) -> TokenStream {
         params,
         param_units,
         cyclic,
+        dependent_coordinates,
         taylor_straight_line,
         ..
     } = meta;
@@ -44,6 +45,7 @@ pub fn info(meta: &Meta) -> TokenStream {
             param_units: &[#(#param_units),*],
             outputs: &[#(#outputs),*],
             cyclic: &[#(#cyclic),*],
+            dependent_coordinates: &[#(#dependent_coordinates),*],
             op_counts: (#rhs_ops, #out_ops),
             taylor_straight_line: &[#(#taylor_straight_line),*],
         }
