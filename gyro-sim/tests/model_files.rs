@@ -141,14 +141,25 @@ fn a_loop_that_cannot_close_is_an_error_that_says_so() {
 
 #[test]
 fn the_bicycle_rides_self_stable_at_5_m_per_s_and_capsizes_at_8_with_its_energy_kept() {
-    // A push in roll rate (U2 = 0.5 rad/s) from upright straight running at the speed V.
-    for (v, stable) in [(5.0, true), (8.0, false)] {
+    // A push in roll rate (U2 = 0.5 rad/s) from upright straight running at the speed V: the
+    // two scenes that ride the model file, and the same through --model with --set.
+    for (v, stable, scene) in [(5.0, true, "self_stable"), (8.0, false, "capsize")] {
         let dir = folder(&format!("bicycle_{v}"));
         let out = dir.join("out");
+        let scene = format!("{}/scenes/bicycle/{scene}.toml", env!("CARGO_MANIFEST_DIR"));
+        let run = gyro_sim(&[&scene, "--engine", "instant", "--out", out.to_str().unwrap()], &dir);
+        assert!(run.status.success(), "{}", text(&run));
+        assert!(
+            text(&run).contains("configuration constraints: the initial state satisfies them"),
+            "{}",
+            text(&run)
+        );
         let speed = format!("V={v}");
         let args = ["--model", BICYCLE, "--engine", "instant", "--set", &speed, "--set", "U2=0.5"];
-        let run = gyro_sim(&[&args[..], &["--out", out.to_str().unwrap()]].concat(), &dir);
-        assert!(run.status.success(), "{}", text(&run));
+        let same = dir.join("same");
+        let again = gyro_sim(&[&args[..], &["--out", same.to_str().unwrap()]].concat(), &dir);
+        assert!(again.status.success(), "{}", text(&again));
+        assert_eq!(rows(&out), rows(&same), "the scene is the --model run");
         let rows = rows(&out);
         // Columns: t, Q2 (roll), Q5 (steer), ENERGY.
         let e0 = rows[0][3];

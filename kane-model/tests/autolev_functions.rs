@@ -68,3 +68,78 @@ fn direction_cosine_entries_and_whole_number_functions() {
     let e = lang::load("d.al", "X = FACTORIAL(2.5)\n").err().unwrap().to_string();
     assert!(e.contains("FACTORIAL of 2.5"), "{e}");
 }
+
+/// A matrix value's entries as numbers.
+fn numbers(m: &lang::LoadedModel, name: &str) -> Vec<f64> {
+    match m.value(name) {
+        Some(Value::Matrix { data, .. }) => m.model.ar.eval(&data, |_| None).unwrap(),
+        other => panic!("{name}: {other:?}"),
+    }
+}
+
+#[test]
+fn taylor_inv_eig_and_jacobians_equal_their_hand_values() {
+    let src = "VARIABLES X, Y\nCONSTANTS A, B\n\
+               T1 = TAYLOR(COS(X), 0:2, X=0)\nT2 = TAYLOR(COS(X*Y), 0:4, X=0, Y=0)\n\
+               T3 = TAYLOR(EXP(X), 1:3, X=1)\nIM = INV([1,2;3,4])\nIS = INV([A, B; B, A])\n\
+               EV = EIG([2,1;1,2])\nJ = D([X^2*Y; SIN(X)], [X, Y])\n\
+               V1 = EVALUATE(T1, X=0.3)\nV2 = EVALUATE(T2, X=0.5, Y=0.4)\nV3 = EVALUATE(T3, X=2)\n\
+               VS = EVALUATE(IS, A=3, B=1)\nVJ = EVALUATE(J, X=0.5, Y=2)\n";
+    let m = lang::load("alg.al", src).unwrap_or_else(|r| panic!("{}", r.render()));
+    assert!((number(&m, "V1") - (1.0 - 0.09 / 2.0)).abs() < 1e-15);
+    // cos(xy) to total order 4: 1 - (xy)^2 / 2.
+    assert!((number(&m, "V2") - (1.0 - 0.04 / 2.0)).abs() < 1e-15);
+    // Orders 1 to 3 of e^x about 1 at x = 2: e (1 + 1/2 + 1/6).
+    let e = std::f64::consts::E;
+    assert!((number(&m, "V3") - e * (1.0 + 0.5 + 1.0 / 6.0)).abs() < 1e-14);
+    assert_eq!(numbers(&m, "IM"), [-2.0, 1.0, 1.5, -0.5]);
+    assert_eq!(numbers(&m, "VS"), [3.0 / 8.0, -1.0 / 8.0, -1.0 / 8.0, 3.0 / 8.0]);
+    let ev = numbers(&m, "EV");
+    assert!((ev[0] - 1.0).abs() < 1e-14 && (ev[1] - 3.0).abs() < 1e-14, "{ev:?}");
+    let j = numbers(&m, "VJ");
+    let want = [2.0 * 0.5 * 2.0, 0.25, 0.5_f64.cos(), 0.0];
+    assert!(j.iter().zip(want).all(|(a, b)| (a - b).abs() < 1e-15), "{j:?}");
+}
+
+#[test]
+fn inv_of_a_singular_matrix_and_complex_eigenvalues_are_errors() {
+    let e = lang::load("s.al", "M = INV([1,2;2,4])\n").err().unwrap().to_string();
+    assert!(e.contains("INV of a singular matrix"), "{e}");
+    let e = lang::load("c.al", "E = EIG([0,-1;1,0])\n").err().unwrap().to_string();
+    assert!(e.contains("complex eigenvalues"), "{e}");
+    let e = lang::load("y.al", "CONSTANTS A\nE = EIG([A,0;0,1])\n").err().unwrap().to_string();
+    assert!(e.contains("matrix of numbers") && e.contains("kane linearize"), "{e}");
+}
+
+#[test]
+fn an_index_range_inside_a_name_declares_each_name() {
+    // RRF{2}O: the points RRF1O and RRF2O; with a space, `RRF{2} O` is a mistake.
+    let m = lang::load(
+        "r.al",
+        "NEWTONIAN N\nPOINTS RRF{2}O\nCONSTANTS L\nP_RRF1O_RRF2O> = L*N1>\nX = DOT(P_RRF1O_RRF2O>, N1>)\n",
+    )
+    .unwrap_or_else(|r| panic!("{}", r.render()));
+    assert_eq!(m.model.ar.to_text(scalar(&m, "X")), "L");
+    let e = lang::load("s.al", "NEWTONIAN N\nPOINTS RRF{2} O\n").err().unwrap().to_string();
+    assert!(e.contains("expected"), "{e}");
+}
+
+#[test]
+fn frame_origins_dyadic_dots_and_derivatives_by_a_specified() {
+    let src = "NEWTONIAN N\nFRAMES A, B\nPOINTS P, R\nVARIABLES Q{2}\nCONSTANTS L, K\n\
+               SIMPROT(N, A, 3, Q1)\nSIMPROT(A, B, 1, Q2)\n\
+               P_NO_P> = L*A1>\nP_P_R> = L*B2>\nX1 = DOT(P_NO_R>, N1>)\nP_AO_R> = K*A3>\n\
+               X2 = DOT(P_AO_R>, A3>)\nV_R_N> = DT(P_NO_R>, N)\n\
+               D1>> = 2*A1>*A1> + B2>*B3>\nX3 = DOT(DOT(D1>>, B3>), B2>)\nX4 = DOT(DOT(B2>, D1>>), B3>)\n\
+               SPECIFIED S\nS = SIN(Q1)*L\nE = D(S^2, S)\n";
+    let m = lang::load("o.al", src).unwrap_or_else(|r| panic!("{}", r.render()));
+    let text = |n: &str| m.model.ar.to_text(scalar(&m, n));
+    // P_NO_R> goes through P: L A1> + L B2>, along N1> L cos Q1 - L sin Q1 cos Q2.
+    assert_eq!(text("X1"), "L*cos(Q1) - L*sin(Q1)*cos(Q2)");
+    assert_eq!(text("X2"), "K");
+    // D1>> . B3> = B2> (A1> . B3> = 0); from the left, B2> . D1>> = B3> (A1> . B2> = 0).
+    assert_eq!(text("X3"), "1");
+    assert_eq!(text("X4"), "1");
+    // d(S^2)/dS = 2 S with S's formula put back.
+    assert_eq!(text("E"), "2*L*sin(Q1)");
+}

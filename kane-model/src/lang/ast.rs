@@ -119,6 +119,8 @@ pub struct DeclItem {
     pub name: String,
     /// Index ranges `{lo:hi, ...}`, expanded into names by the interpreter.
     pub ranges: Vec<(i64, i64)>,
+    /// What follows the ranges in each name (`O` in `RRF{2}O`: RRF1O, RRF2O).
+    pub tail: String,
     /// Derivative order declared with `'`.
     pub primes: u8,
     /// Sign suffix `+` or `-`.

@@ -459,6 +459,14 @@ impl<'a> Parser<'a> {
                 }
                 self.expect('}', "to close the index range")?;
             }
+            // RRF{2}O: a name part right after the range (no space) ends each name.
+            let mut tail = String::new();
+            if let (false, Some(Tok::Name { text, suffix: 0 })) = (ranges.is_empty(), self.peek()) {
+                if self.start() == self.end() {
+                    tail = text.clone();
+                    self.pos += 1;
+                }
+            }
             let primes = self.primes();
             let sign = if self.is_punct('+') && matches!(self.peek_at(1), None | Some(Tok::Punct(','))) {
                 self.pos += 1;
@@ -470,7 +478,7 @@ impl<'a> Parser<'a> {
                 None
             };
             let value = if self.eat('=') { Some(self.expr()?) } else { None };
-            items.push(DeclItem { name, ranges, primes, sign, value, span: start..self.end() });
+            items.push(DeclItem { name, ranges, tail, primes, sign, value, span: start..self.end() });
             if !self.eat(',') {
                 break;
             }

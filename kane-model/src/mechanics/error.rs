@@ -21,6 +21,22 @@ pub enum MechanicsError {
         /// Its existing parent.
         parent: String,
     },
+    /// An angular velocity assigned to a frame oriented through a chain does not determine
+    /// its coordinates' rates.
+    #[error(
+        "W_{frame}_{reference}> given in speeds determines the rates of three coordinates of \
+         {frame}'s orientation, but {found} of them are without a kinematic equation ({names})"
+    )]
+    AngularVelocityUnderdetermined {
+        /// The frame.
+        frame: String,
+        /// The frame it turns in.
+        reference: String,
+        /// How many coordinate rates without kinematic equations appear.
+        found: usize,
+        /// Their names.
+        names: String,
+    },
     /// Orienting a frame would close a cycle of orientations.
     #[error(
         "orienting {frame} relative to {parent} makes a cycle: {parent} is already oriented through {frame}"

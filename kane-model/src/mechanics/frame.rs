@@ -1,6 +1,6 @@
 //! Orienting frames in a tree, direction cosines between any two frames, angular velocities.
 
-use crate::expr::ExprId;
+use crate::expr::{ExprId, SymbolId};
 
 use super::error::{MechanicsError, Result};
 use super::ids::{FrameId, Mat3};
@@ -58,6 +58,60 @@ impl Model {
         }
         self.set_angular_velocity(frame, w);
         Ok(())
+    }
+
+    /// The frame `frame` is oriented relative to, if any.
+    pub fn frame_parent(&self, frame: FrameId) -> Option<FrameId> {
+        self.frames[frame.index()].parent
+    }
+
+    /// Sets the angular velocity of `frame`, oriented through a chain of frames, in `reference`
+    /// to `w` (in speeds): the three coordinate rates of the chain without kinematic equations
+    /// are solved from it (SymPy's `kd` equations, `w_chain = w`), and `frame` turns in its
+    /// parent at `w - W_parent_reference`, so `W_frame_reference` is `w` as written. Returns
+    /// the kinematic equations set.
+    pub fn set_angular_velocity_through(
+        &mut self,
+        frame: FrameId,
+        reference: FrameId,
+        w: Vector,
+    ) -> Result<Vec<(SymbolId, ExprId)>> {
+        let chain = self.angular_velocity(frame, reference)?;
+        let difference = self.sub_vectors(&chain, &w)?;
+        let equations = self.express(&difference, frame)?;
+        let rates: Vec<SymbolId> = self
+            .ar
+            .free_symbols(&equations)
+            .into_iter()
+            .filter(|s| {
+                let info = self.ar.symbol_info(*s);
+                matches!(info.kind, crate::expr::SymbolKind::Variable { order: 1 })
+                    && !self.kinematics.contains_key(&info.base)
+            })
+            .collect();
+        if rates.len() != 3 {
+            let names: Vec<&str> = rates.iter().map(|s| self.ar.symbol_info(*s).name.as_str()).collect();
+            return Err(MechanicsError::AngularVelocityUnderdetermined {
+                frame: self.frame_name(frame).to_string(),
+                reference: self.frame_name(reference).to_string(),
+                found: rates.len(),
+                names: if names.is_empty() { "none".into() } else { names.join(", ") },
+            });
+        }
+        let solved = self.ar.solve_linear(&equations, &rates)?;
+        let mut set = Vec::with_capacity(3);
+        for (rate, rhs) in rates.iter().zip(solved) {
+            let q = self.ar.symbol_info(*rate).base;
+            let rhs = self.ar.trig_simplify(rhs)?;
+            let q_expr = self.ar.symbol_expr(q);
+            self.set_kinematics(q_expr, rhs)?;
+            set.push((q, rhs));
+        }
+        let parent = self.frames[frame.index()].parent.unwrap_or(reference);
+        let carried = self.angular_velocity(parent, reference)?;
+        let relative = self.sub_vectors(&w, &carried)?;
+        self.set_angular_velocity(frame, relative);
+        Ok(set)
     }
 
     /// `frame`, its parent, grandparent, ... up to the root of its tree.

@@ -52,6 +52,12 @@ impl Dyadic {
         Dyadic { terms: vec![(frame, frame, m)] }
     }
 
+    /// The transpose: `sum_ij m[i][j] b_j a_i` for each term `m[i][j] a_i b_j`.
+    pub fn transpose(&self) -> Dyadic {
+        let flip = |m: &[[ExprId; 3]; 3]| std::array::from_fn(|i| std::array::from_fn(|j| m[j][i]));
+        Dyadic { terms: self.terms.iter().map(|(a, b, m)| (*b, *a, flip(m))).collect() }
+    }
+
     /// The terms.
     pub fn terms(&self) -> &[(FrameId, FrameId, [[ExprId; 3]; 3])] {
         &self.terms

@@ -26,6 +26,17 @@ pub fn bookkeeping_summary(model: &LoadedModel, source: &str) -> Option<String> 
         parts
             .push(format!("ignored (they change only Autolev's own printing, saving or pausing): {ignored}"));
     }
+    let code: Vec<String> = model
+        .code
+        .iter()
+        .map(|c| format!("CODE {} (line {}) {}", c.kind, line_column(source, c.span.start).0, c.file))
+        .collect();
+    if !code.is_empty() {
+        parts.push(format!(
+            "not written (`kane gen` writes the equations of motion as Rust; no code is written for algebraic or nonlinear equations): {}",
+            code.join(", ")
+        ));
+    }
     (!parts.is_empty()).then(|| parts.join("; "))
 }
 
@@ -41,6 +52,13 @@ mod tests {
             bookkeeping_summary(&m, src).unwrap(),
             "applied: UNITSYSTEM (line 1); ignored (they change only Autolev's own printing, saving or \
              pausing): AUTOZ (line 2), ENCODE (line 4), PAUSE (line 5)"
+        );
+        let code = "CONSTANTS M\nE = M\nCODE ALGEBRAIC(E, M) a.c\n";
+        let with_code = crate::lang::load("c.al", code).unwrap();
+        assert_eq!(
+            bookkeeping_summary(&with_code, code).unwrap(),
+            "not written (`kane gen` writes the equations of motion as Rust; no code is written for \
+             algebraic or nonlinear equations): CODE ALGEBRAIC (line 3) a.c"
         );
         let plain = crate::lang::load("p.al", "CONSTANTS M\n").unwrap();
         assert_eq!(bookkeeping_summary(&plain, "CONSTANTS M\n"), None);

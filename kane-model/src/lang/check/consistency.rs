@@ -28,6 +28,10 @@ struct Claim {
     what: String,
     /// The lines the implied value comes from.
     notes: Vec<Span>,
+    /// The point at rest the velocity is carried from, when that point is located only by the
+    /// points positioned from it (a contact point): a difference in V2PTS is then a rolling
+    /// contact.
+    contact: Option<String>,
 }
 
 /// The contradictions between assigned and implied kinematics, as errors.
@@ -45,7 +49,12 @@ pub(crate) fn consistency(m: &mut LoadedModel, source: &str) -> Vec<Diagnostic> 
             compare(&mut m.model, &c.assigned, &c.implied, c.frame)
         {
             let unit = format!("{}{}>", m.model.frame_name(c.frame), axis + 1);
-            errors.push(contradiction(source, &c, &unit, assigned, implied));
+            let by_v2pts =
+                statement_text(source, &c.span).trim_start().to_ascii_uppercase().starts_with("V2PTS");
+            errors.push(match &c.contact {
+                Some(point) if by_v2pts => rolling_contact(source, &c, point),
+                _ => contradiction(source, &c, &unit, assigned, implied),
+            });
         }
     }
     errors
@@ -70,6 +79,23 @@ fn contradiction(source: &str, c: &Claim, unit: &str, assigned: f64, implied: f6
         d = d.with_note(s.clone(), format!("`{}` implies the other value", statement_text(source, s)));
     }
     d
+}
+
+/// A velocity carried from a contact point at rest that differs from the positions' rate: the
+/// contact point is the body's material point there (rolling without slip), said as a warning.
+fn rolling_contact(source: &str, c: &Claim, point: &str) -> Diagnostic {
+    Diagnostic::warning(
+        c.span.clone(),
+        format!(
+            "`{}` takes {point} as the moving body's material point at rest, a rolling contact: {} is not \
+             the rate of the positions, whose point {point} moves over the body",
+            statement_text(source, &c.span),
+            c.what
+        ),
+    )
+    .with_help(format!(
+        "if {point} is fixed in that body instead, locate {point} from a point of it; mark the line `% {MARKER}` to silence this"
+    ))
 }
 
 /// The statements the velocity of `p` in `frame` follows from: position relations up the tree
@@ -99,9 +125,20 @@ fn velocity_claims(model: &mut Model, sources: &Sources) -> Vec<Claim> {
         let mut notes: Vec<Span> = sources.position_of(p, from).cloned().into_iter().collect();
         notes.extend(velocity_lines(model, sources, from, frame));
         let what = format!("the velocity of {} in {}", model.point_name(p), model.frame_name(frame));
-        claims.push(Claim { span: span.clone(), frame, assigned, implied, what, notes });
+        let contact = is_contact(model, sources, from, frame).then(|| model.point_name(from).to_string());
+        claims.push(Claim { span: span.clone(), frame, assigned, implied, what, notes, contact });
     }
     claims
+}
+
+/// Whether `p` is at rest in `frame` by assignment and located by no other point.
+fn is_contact(model: &Model, sources: &Sources, p: PointId, frame: FrameId) -> bool {
+    let point = &model.points[p.index()];
+    let at_rest = point
+        .velocity
+        .get(&frame)
+        .is_some_and(|v| v.terms.iter().all(|(_, m)| m.iter().all(|x| model.ar.is_zero(*x))));
+    at_rest && point.position.is_none() && sources.velocities.contains_key(&(p, frame))
 }
 
 fn implied_velocity(model: &mut Model, from: PointId, r: &Vector, frame: FrameId) -> Result<Vector> {
@@ -119,7 +156,7 @@ fn acceleration_claims(model: &mut Model, sources: &Sources) -> Vec<Claim> {
         let Ok(implied) = model.dt_in(&v, frame) else { continue };
         let notes = velocity_lines(model, sources, p, frame);
         let what = format!("the acceleration of {} in {}", model.point_name(p), model.frame_name(frame));
-        claims.push(Claim { span: span.clone(), frame, assigned, implied, what, notes });
+        claims.push(Claim { span: span.clone(), frame, assigned, implied, what, notes, contact: None });
     }
     claims
 }
@@ -138,7 +175,7 @@ fn angular_claims(model: &mut Model, sources: &Sources) -> Vec<Claim> {
             model.frame_name(frame),
             model.frame_name(parent)
         );
-        claims.push(Claim { span: span.clone(), frame, assigned, implied, what, notes });
+        claims.push(Claim { span: span.clone(), frame, assigned, implied, what, notes, contact: None });
     }
     claims
 }

@@ -18,6 +18,11 @@ impl Interpreter {
     pub(super) fn assign(&mut self, target: &Target, op: AssignOp, value: &Expr) -> IResult<()> {
         let mut v = self.eval(value)?;
         let key = target.name.to_ascii_uppercase();
+        if target.index.is_none() && op != AssignOp::Add && is_kane_sum(value) {
+            self.kane_sums.insert(key.clone());
+        } else {
+            self.kane_sums.remove(&key);
+        }
         if let Some(index) = &target.index {
             let idx = index.iter().map(|e| self.index_value(e)).collect::<IResult<Vec<i64>>>()?;
             return self.assign_array(&key, idx, v, &target.span);
@@ -151,5 +156,16 @@ impl Interpreter {
             Some(Binding::Symbol(e, _)) => Some(Value::Scalar(*e)),
             _ => None,
         }
+    }
+}
+
+/// Whether `e` is `FR() + FRSTAR()` (either order).
+fn is_kane_sum(e: &Expr) -> bool {
+    let call = |e: &Expr, want: &str| matches!(&e.kind, ExprKind::Call { name, args } if args.is_empty() && name.eq_ignore_ascii_case(want));
+    match &e.kind {
+        ExprKind::Binary(super::super::ast::BinOp::Add, a, b) => {
+            (call(a, "FR") && call(b, "FRSTAR")) || (call(a, "FRSTAR") && call(b, "FR"))
+        }
+        _ => false,
     }
 }

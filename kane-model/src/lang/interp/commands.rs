@@ -58,18 +58,14 @@ impl Interpreter {
             // UNITSYSTEM and ENCODE choose how Autolev prints; results are unchanged.
             "UNITSYSTEM" | "ENCODE" => Ok(()),
             "KANE" => {
-                self.prepare(&e.span)?;
-                self.deferred_kane = None;
-                let shape = if self.defer { Some(self.model.kane_unformed().at(&e.span)?) } else { None };
-                let eqs = match shape {
-                    Some(shape) if self.model.defers_mass_matrix(&shape) => {
-                        self.deferred_kane = Some(e.span.clone());
-                        shape
-                    }
-                    _ => self.model.kane().at(&e.span)?,
-                };
-                self.equations = Some(eqs);
-                Ok(())
+                if let Some(a) = args.first() {
+                    return Err(Diagnostic::error(
+                        a.span.clone(),
+                        "KANE with arguments (specified quantities solved for: mixed forward and inverse dynamics) is not supported",
+                    )
+                    .with_help("call KANE() for the forward dynamics, and compute the inputs that give a motion outside the model file"));
+                }
+                self.form_kane(&e.span)
             }
             "EXPAND" | "FACTOR" | "ARRANGE" | "EXPLICIT" => self.rewrite_in_place(name, args, e),
             _ => match self.call(name, args, e) {
@@ -80,6 +76,23 @@ impl Interpreter {
                 other => other.map(|_| ()),
             },
         }
+    }
+
+    /// Kane's equations of the model as it stands (KANE()), their mass matrix left unformed
+    /// when generation defers it.
+    fn form_kane(&mut self, span: &Span) -> IResult<()> {
+        self.prepare(span)?;
+        self.deferred_kane = None;
+        let shape = if self.defer { Some(self.model.kane_unformed().at(span)?) } else { None };
+        let eqs = match shape {
+            Some(shape) if self.model.defers_mass_matrix(&shape) => {
+                self.deferred_kane = Some(span.clone());
+                shape
+            }
+            _ => self.model.kane().at(span)?,
+        };
+        self.equations = Some(eqs);
+        Ok(())
     }
 
     /// `SIMPROT(A, B, axis, angle)`: B turned from A about one of A's axes.
@@ -205,7 +218,8 @@ impl Interpreter {
         let ExprKind::Name { name: arr, .. } = &args[0].kind else {
             return Err(Diagnostic::error(args[0].span.clone(), "SOLVE takes the name of an equation array"));
         };
-        let eqs = self.equations_named(&arr.to_ascii_uppercase());
+        let key = arr.to_ascii_uppercase();
+        let eqs = self.equations_named(&key);
         let mut names = Vec::new();
         let mut syms = Vec::new();
         for a in &args[1..] {
@@ -220,6 +234,13 @@ impl Interpreter {
                     .ok_or_else(|| Diagnostic::error(a.span.clone(), "an unknown must be a symbol"))?,
             );
             names.push(format!("{}{}", name.to_ascii_uppercase(), "'".repeat(*primes as usize)));
+        }
+        if self.equations.is_none() && self.are_speed_rates(&syms) {
+            // The equations of motion: formed as KANE() does when they are FR() + FRSTAR().
+            if self.kane_sums.contains(&key) {
+                return self.form_kane(&e.span);
+            }
+            return self.equations_of_motion(&eqs, &e.span);
         }
         let sol = self.model.ar.solve_linear(&eqs, &syms).at(&e.span)?;
         for (n, x) in names.into_iter().zip(sol) {

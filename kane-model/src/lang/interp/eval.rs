@@ -208,6 +208,7 @@ impl Interpreter {
         if let Some(v) = self.lookup_value(&full) {
             return Ok(v);
         }
+        self.frame_origins_in(&key);
         if let Some(b) = self.builtin(&key, suffix) {
             return self.builtin_value(b, &e.span);
         }

@@ -18,13 +18,10 @@ use super::{At, IResult, Interpreter};
 
 /// Functions known to Autolev that this implementation rejects, with the reason.
 const UNSUPPORTED: &[(&str, &str)] = &[
-    ("TAYLOR", "series expansion"),
     ("POLYNOMIAL", "polynomial construction"),
     ("ROOTS", "polynomial roots"),
-    ("EIG", "eigenvalues (use Model::linearize and a numeric eigen-solver)"),
     ("INCLUDE", "term selection"),
     ("EXCLUDE", "term selection"),
-    ("INV", "symbolic matrix inverse"),
     ("NICHECK", "Newtonian-inertia check"),
 ];
 
@@ -40,6 +37,7 @@ impl Interpreter {
                 self.vector_function(&upper, args, e)
             }
             "ATAN2" => self.atan2_function(args, e),
+            "INV" | "EIG" | "TAYLOR" => self.algebra_function(&upper, args, e),
             "INT" | "FLOOR" | "CEIL" | "ROUND" | "FACTORIAL" => self.whole_number_function(&upper, args, e),
             "EVALUATE" | "REPLACE" | "EXPLICIT" | "FACTOR" | "ARRANGE" | "EXPAND" | "COEF" | "RHS" => {
                 self.scalar_function(&upper, args, e)
@@ -171,6 +169,7 @@ pub(crate) const KNOWN_CALLS: &[&str] = &[
     "DIRCOS",
     "DOT",
     "DT",
+    "EIG",
     "ELEMENT",
     "EVALUATE",
     "EXP",
@@ -182,6 +181,7 @@ pub(crate) const KNOWN_CALLS: &[&str] = &[
     "FR",
     "FRSTAR",
     "GRAVITY",
+    "INV",
     "INERTIA",
     "KANE",
     "KE",
@@ -202,6 +202,7 @@ pub(crate) const KNOWN_CALLS: &[&str] = &[
     "SQRT",
     "TAN",
     "TANH",
+    "TAYLOR",
     "TORQUE",
     "TRACE",
     "TRANSPOSE",

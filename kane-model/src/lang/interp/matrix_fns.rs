@@ -5,7 +5,7 @@
 //! matrix). Out: a matrix, scalar or vector [`Value`], or a diagnostic for a bad argument count,
 //! size or index.
 
-use crate::expr::{Arena, ExprError, ExprId};
+use crate::expr::ExprId;
 use crate::mechanics::Vector;
 
 use super::super::ast::{Expr, ExprKind};
@@ -42,7 +42,8 @@ impl Interpreter {
                         "DET needs a square matrix of size 4 or less",
                     ));
                 }
-                Ok(Value::Scalar(determinant(&mut self.model.ar, &d, r).at(fail)?))
+                let rows: Vec<Vec<ExprId>> = d.chunks(c).map(<[ExprId]>::to_vec).collect();
+                Ok(Value::Scalar(self.model.ar.determinant(&rows).at(fail)?))
             }
             "ELEMENT" => {
                 let (r, c, d) = self.matrix_arg(&args[0])?;
@@ -188,22 +189,4 @@ fn check_arguments(upper: &str, args: &[Expr], span: &Span) -> IResult<()> {
         span.clone(),
         format!("{upper} takes {least}{range} arguments, got {}", args.len()),
     ))
-}
-
-/// Determinant by cofactor expansion (small matrices only).
-fn determinant(ar: &mut Arena, d: &[ExprId], n: usize) -> Result<ExprId, ExprError> {
-    if n == 1 {
-        return Ok(d[0]);
-    }
-    let mut terms = Vec::with_capacity(n);
-    for j in 0..n {
-        let minor: Vec<ExprId> = (1..n)
-            .flat_map(|i| (0..n).filter(move |&k| k != j).map(move |k| (i, k)))
-            .map(|(i, k)| d[i * n + k])
-            .collect();
-        let m = determinant(ar, &minor, n - 1)?;
-        let t = ar.mul(&[d[j], m])?;
-        terms.push(if j % 2 == 1 { ar.neg(t)? } else { t });
-    }
-    ar.add(&terms)
 }

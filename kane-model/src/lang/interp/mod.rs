@@ -8,6 +8,7 @@
 //! Names are case-insensitive: every lookup goes through the upper-cased name; symbols keep the
 //! spelling of their declaration for printing.
 
+mod algebra_fns;
 mod assign;
 mod cascade;
 mod commands;
@@ -17,6 +18,7 @@ mod functions;
 mod inertia;
 mod mass_fns;
 mod matrix_fns;
+mod motion_equations;
 pub(crate) mod names;
 mod orientation;
 mod prepare;
@@ -83,6 +85,8 @@ pub struct CodeRequest {
     pub kind: String,
     /// The file named.
     pub file: String,
+    /// Where the request is.
+    pub span: Span,
 }
 
 /// The result of running a model file.
@@ -171,6 +175,9 @@ pub(crate) struct Interpreter {
     pub(crate) deferred: Vec<Stmt>,
     /// Where the KANE() is whose `M` and `f` are not yet formed.
     pub(crate) deferred_kane: Option<Span>,
+    /// Names whose value is `FR() + FRSTAR()` as assigned (unchanged since): SOLVE of them for
+    /// the speeds' rates forms Kane's equations as KANE() does.
+    pub(crate) kane_sums: rustc_hash::FxHashSet<String>,
 }
 
 type IResult<T> = Result<T, Diagnostic>;
@@ -242,6 +249,7 @@ impl Interpreter {
             defer: false,
             deferred: Vec::new(),
             deferred_kane: None,
+            kane_sums: Default::default(),
         }
     }
 

@@ -37,6 +37,26 @@ impl Interpreter {
         }
     }
 
+    /// Declares the origin point `AO` of each frame `A` (not a body: its `BO` is its mass
+    /// centre) that a built-in name such as `P_NO_P>` reads and nothing declared yet; the
+    /// Newtonian frame's origin is at rest in it.
+    pub(crate) fn frame_origins_in(&mut self, key: &str) {
+        for part in key.split('_') {
+            let Some(frame_name) = part.strip_suffix('O') else { continue };
+            if self.bindings.contains_key(&entity_key(part)) {
+                continue;
+            }
+            let Some(Binding::Frame(f)) = self.bindings.get(&entity_key(frame_name)).cloned() else {
+                continue;
+            };
+            let Ok(p) = self.model.add_point(part) else { continue };
+            if f == self.model.newtonian() {
+                self.model.set_velocity(p, f, crate::mechanics::Vector::zero());
+            }
+            self.bindings.insert(entity_key(part), Binding::Point(p));
+        }
+    }
+
     /// The point of a point, particle, or body-mass-centre name.
     pub(crate) fn point_of(&self, key: &str) -> Option<PointId> {
         match self.bindings.get(&entity_key(key)) {
@@ -135,6 +155,7 @@ impl Interpreter {
 
     /// Assigns a built-in quantity; false when `key` names no built-in.
     pub(crate) fn assign_builtin(&mut self, key: &str, suffix: u8, v: &Value, span: &Span) -> IResult<bool> {
+        self.frame_origins_in(key);
         let Some(b) = self.builtin(key, suffix) else { return Ok(false) };
         let fail: &Span = span;
         match (b, v) {
@@ -151,8 +172,15 @@ impl Interpreter {
                 self.sources.accelerations.insert((p, f), span.clone());
             }
             (Builtin::AngularVelocity(a, b), Value::Vector(w)) => {
-                // W_A_N> = w sets A's angular velocity in N (A's parent, or A becomes N's child).
-                self.model.set_angular_velocity_in(a, b, w.clone()).at(fail)?;
+                // W_A_N> = w sets A's angular velocity in N (A's parent, or A becomes N's child);
+                // for A oriented through a chain, the chain's coordinate rates follow from it.
+                match self.model.frame_parent(a) {
+                    Some(p) if p != b => {
+                        let set = self.model.set_angular_velocity_through(a, b, w.clone()).at(fail)?;
+                        self.kinematic.extend(set);
+                    }
+                    _ => self.model.set_angular_velocity_in(a, b, w.clone()).at(fail)?,
+                }
                 self.sources.angular_velocities.insert(a, span.clone());
             }
             (Builtin::Inertia(body, point), Value::Dyadic(d)) => {

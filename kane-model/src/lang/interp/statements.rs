@@ -57,7 +57,7 @@ impl Interpreter {
                     return Err(Diagnostic::error(s.span.clone(), "CODE DYNAMICS() needs Kane's equations")
                         .with_help("call KANE() (after ZERO = FR() + FRSTAR()) before CODE DYNAMICS()"));
                 }
-                self.code.push(CodeRequest { kind: kind.clone(), file: file.clone() });
+                self.code.push(CodeRequest { kind: kind.clone(), file: file.clone(), span: s.span.clone() });
                 Ok(())
             }
             StmtKind::Assign { target, op, value } => self.assign(target, *op, value),
@@ -138,7 +138,10 @@ impl Interpreter {
 
     /// A declaration: NEWTONIAN, FRAMES, BODIES, PARTICLES, POINTS, CONSTANTS, VARIABLES, ...
     fn declare(&mut self, kind: DeclKind, item: &DeclItem) -> IResult<()> {
-        let names = expand_ranges(&item.name, &item.ranges);
+        let names: Vec<String> = expand_ranges(&item.name, &item.ranges)
+            .into_iter()
+            .map(|n| format!("{n}{}", item.tail))
+            .collect();
         for name in names {
             let key = name.to_ascii_uppercase();
             let span = &item.span;

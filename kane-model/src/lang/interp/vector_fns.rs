@@ -4,7 +4,9 @@
 //! [`Value`]; the vector work itself is done by the mechanics layer's [`crate::mechanics::Model`]
 //! methods (`dot`, `cross`, `dt_in`, `partial_in`, ...).
 
-use super::super::ast::Expr;
+use crate::expr::ExprId;
+
+use super::super::ast::{Expr, ExprKind};
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
 use super::value::Value;
@@ -18,9 +20,7 @@ impl Interpreter {
         match upper {
             "DOT" => {
                 arity(2)?;
-                let a = self.vector(&args[0])?;
-                let b = self.vector(&args[1])?;
-                Ok(Value::Scalar(self.model.dot(&a, &b).at(fail)?))
+                self.dot_product(&args[0], &args[1], e)
             }
             "CROSS" => {
                 arity(2)?;
@@ -87,6 +87,12 @@ impl Interpreter {
         if args.len() < 2 {
             return Err(Diagnostic::error(e.span.clone(), "D takes (x, y) or (v>, y, frame)"));
         }
+        if let (2, ExprKind::Matrix(list)) = (args.len(), &args[1].kind) {
+            return self.jacobian(&args[0], list, e);
+        }
+        if let Some(value) = self.derivative_by_specified(args, e)? {
+            return Ok(value);
+        }
         let y = self.scalar(&args[1])?;
         let s = self.model.ar.as_symbol(y).ok_or_else(|| {
             Diagnostic::error(args[1].span.clone(), "D differentiates with respect to a symbol")
@@ -97,5 +103,79 @@ impl Interpreter {
             return Ok(Value::Vector(self.model.partial_in(vec, s, f).at(&e.span)?));
         }
         self.map_scalars(&v, &e.span, |m, x| Ok(m.ar.diff(x, s)?))
+    }
+
+    /// `D(F, [x, y, ...])`: the Jacobian, a row per entry of `F` (a scalar or a matrix's
+    /// entries row by row) and a column per variable.
+    fn jacobian(&mut self, f: &Expr, list: &[Vec<Expr>], e: &Expr) -> IResult<Value> {
+        let mut vars = Vec::new();
+        for x in list.iter().flatten() {
+            let v = self.scalar(x)?;
+            vars.push(self.model.ar.as_symbol(v).ok_or_else(|| {
+                Diagnostic::error(x.span.clone(), "D differentiates with respect to a symbol")
+            })?);
+        }
+        let entries = match self.eval(f)? {
+            Value::Scalar(x) => vec![x],
+            Value::Matrix { data, .. } => data,
+            other => {
+                return Err(Diagnostic::error(
+                    f.span.clone(),
+                    format!("D(F, [x, ...]) needs a scalar or a matrix F, not {}", other.kind()),
+                ))
+            }
+        };
+        let mut data = Vec::with_capacity(entries.len() * vars.len());
+        for &x in &entries {
+            for &v in &vars {
+                data.push(self.model.ar.diff(x, v).at(&e.span)?);
+            }
+        }
+        Ok(Value::Matrix { rows: entries.len(), cols: vars.len(), data })
+    }
+
+    /// `DOT(a, b)` of two vectors (a scalar), or of a dyadic and a vector either way round (a
+    /// vector: `D . v`, or `v . D = D^T . v`).
+    fn dot_product(&mut self, a: &Expr, b: &Expr, e: &Expr) -> IResult<Value> {
+        let fail: &Span = &e.span;
+        match (self.eval(a)?, self.eval(b)?) {
+            (Value::Dyadic(d), Value::Vector(v)) => {
+                Ok(Value::Vector(self.model.dyadic_dot(&d, &v).at(fail)?))
+            }
+            (Value::Vector(v), Value::Dyadic(d)) => {
+                Ok(Value::Vector(self.model.dyadic_dot(&d.transpose(), &v).at(fail)?))
+            }
+            (Value::Dyadic(_), Value::Dyadic(_)) => {
+                Err(Diagnostic::error(e.span.clone(), "DOT of two dyadics is not supported"))
+            }
+            _ => {
+                let (a, b) = (self.vector(a)?, self.vector(b)?);
+                Ok(Value::Scalar(self.model.dot(&a, &b).at(fail)?))
+            }
+        }
+    }
+
+    /// `D(F, S)` for a SPECIFIED `S` the file gave a formula: `F` is read with `S` as itself,
+    /// differentiated, then `S` replaced by its formula. None when `args[1]` is no such name.
+    fn derivative_by_specified(&mut self, args: &[Expr], e: &Expr) -> IResult<Option<Value>> {
+        let ExprKind::Name { name, primes: 0, suffix: 0 } = &args[1].kind else { return Ok(None) };
+        let key = name.to_ascii_uppercase();
+        let Some(super::Binding::Value(Value::Scalar(formula))) = self.bindings.get(&key).cloned() else {
+            return Ok(None);
+        };
+        let Some(s) = self.model.ar.lookup(&key) else { return Ok(None) };
+        if !matches!(self.model.ar.symbol_info(s).kind, crate::expr::SymbolKind::Specified { .. }) {
+            return Ok(None);
+        }
+        let itself = self.model.ar.symbol_expr(s);
+        self.bindings.insert(key.clone(), super::Binding::Symbol(itself, 0));
+        let read = self.eval(&args[0]);
+        self.bindings.insert(key, super::Binding::Value(Value::Scalar(formula)));
+        let by: rustc_hash::FxHashMap<ExprId, ExprId> = [(itself, formula)].into_iter().collect();
+        let value = self.map_scalars(&read?, &e.span, |m, x| {
+            let d = m.ar.diff(x, s)?;
+            Ok(m.ar.subs(d, &by)?)
+        })?;
+        Ok(Some(value))
     }
 }
