@@ -82,12 +82,19 @@ pub fn assemble(
         }
     };
     evaluate(y, &mut r, &mut jacobian);
-    let largest = |r: &[f64]| r.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
+    // The largest residual, NaN when any is.
+    let largest = |r: &[f64]| {
+        r.iter().fold(0.0_f64, |a, x| if a.is_nan() || x.is_nan() { f64::NAN } else { a.max(x.abs()) })
+    };
     let goal = 1e-12 * largest(&r).max(1.0);
     let mut iterations = 0;
-    while !(largest(&r) <= goal) {
-        if iterations == MAX_ITERATIONS || !r.iter().all(|x| x.is_finite()) {
-            return Err(no_convergence(info, &start, largest(&r), iterations));
+    loop {
+        let size = largest(&r);
+        if size <= goal {
+            break;
+        }
+        if iterations == MAX_ITERATIONS || !size.is_finite() {
+            return Err(no_convergence(info, &start, size, iterations));
         }
         let step = newton_step(&jacobian, &r).ok_or_else(|| AssemblyError::Singular {
             coordinates: names(info, dependent),

@@ -69,10 +69,10 @@ impl Interpreter {
     /// The generated solvers factor `M` as symmetric: a matrix that is not is an error.
     fn check_symmetric(&mut self, m: &[Vec<ExprId>], span: &Span) -> IResult<()> {
         let config = EquivalenceConfig::default();
-        for r in 0..m.len() {
-            for s in r + 1..m.len() {
+        for (r, row) in m.iter().enumerate() {
+            for (s, &upper) in row.iter().enumerate().skip(r + 1) {
                 if matches!(
-                    self.model.ar.equivalent(m[r][s], m[s][r], &config).at(span)?,
+                    self.model.ar.equivalent(upper, m[s][r], &config).at(span)?,
                     Equivalence::Differs { .. }
                 ) {
                     return Err(Diagnostic::error(
