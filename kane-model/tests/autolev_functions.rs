@@ -143,3 +143,37 @@ fn frame_origins_dyadic_dots_and_derivatives_by_a_specified() {
     // d(S^2)/dS = 2 S with S's formula put back.
     assert_eq!(text("E"), "2*L*sin(Q1)");
 }
+
+#[test]
+fn a_specified_torque_given_a_formula_after_kane_drives_the_equations_and_the_code() {
+    // A rod hinged at O (mass centre at L) under a SPECIFIED torque T, whose formula (a spring
+    // and a damper) comes after KANE(), as Autolev writes the formulas its CODE evaluates.
+    let src = "NEWTONIAN N\nBODIES A\nPOINTS O\nCONSTANTS L, M, G, K, C\nSPECIFIED T\nVARIABLES Q', U'\n\
+               SIMPROT(N, A, 3, Q)\nQ' = U\nP_O_AO> = L*A1>\nV_O_N> = 0>\nV_AO_N> = DT(P_O_AO>, N)\n\
+               MASS A = M\nINERTIA A, 0, M*L^2/12, M*L^2/12\nGRAVITY(-G*N2>)\nTORQUE_A> = T*N3>\n\
+               ZERO = FR() + FRSTAR()\nKANE()\nPOWER = T*U\nT = -K*Q - C*U\nOUTPUT POWER\n\
+               INPUT L = 1, M = 3, G = 9.81, K = 2, C = 0.5, Q = 0.1, U = 0.4\n";
+    let m = lang::load("t.al", src).unwrap_or_else(|r| panic!("{}", r.render()));
+    let inputs: Vec<(String, f64)> = m.inputs.iter().map(|i| (i.name.clone(), i.value)).collect();
+    let rates = {
+        let by = |s: kane_model::expr::SymbolId| {
+            let n = m.model.ar.symbol_info(s).name.clone();
+            inputs.iter().find(|i| i.0 == n).map(|i| i.1)
+        };
+        m.equations.as_ref().unwrap().rates_at(&m.model.ar, &by).unwrap()
+    };
+    // (M L^2 / 12 + M L^2) U' = -M G L cos Q - K Q - C U.
+    let want = (-3.0 * 9.81 * 0.1_f64.cos() - 2.0 * 0.1 - 0.5 * 0.4) / (3.0 / 12.0 + 3.0);
+    assert!((rates.speeds[0] - want).abs() < 1e-13, "{} vs {want}", rates.speeds[0]);
+    // The generated code reads K and C, not T; POWER (assigned before T's formula) has it.
+    let mut spec = m.into_spec("t").unwrap();
+    let lowered = kane_model::codegen::lower(&mut spec).unwrap();
+    let params: Vec<&str> = lowered.params.iter().map(|s| spec.symbol_name(*s)).collect();
+    assert!(params.contains(&"K") && params.contains(&"C") && !params.contains(&"T"), "{params:?}");
+    let power = spec.outputs.iter().find(|o| o.name == "POWER").unwrap().components[0];
+    let ar = &spec.model.ar;
+    let named =
+        |s: kane_model::expr::SymbolId| inputs.iter().find(|i| i.0 == ar.symbol_info(s).name).map(|i| i.1);
+    let value = ar.eval(&[power], named).unwrap()[0];
+    assert!((value - (-2.0 * 0.1 - 0.5 * 0.4) * 0.4).abs() < 1e-15, "{value}");
+}

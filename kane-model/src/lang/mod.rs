@@ -66,6 +66,9 @@ fn load_with(file: &str, source: &str, defer: bool) -> Result<LoadedModel, Repor
     let mut it = interp::Interpreter::new();
     it.defer = defer;
     it.run(&stmts, source, &errors);
+    if errors.is_empty() && it.errors.is_empty() {
+        it.put_specified_formulas();
+    }
     errors.extend(std::mem::take(&mut it.errors));
     if errors.is_empty() {
         Ok(it.finish())

@@ -10,8 +10,9 @@ use super::{LoadedModel, Value};
 
 impl LoadedModel {
     /// The spec of this model file, named `name` (the model moves into it).
-    pub fn into_spec(self, name: &str) -> Result<ModelSpec, CodegenError> {
+    pub fn into_spec(mut self, name: &str) -> Result<ModelSpec, CodegenError> {
         let eqs = self.equations.clone().ok_or(CodegenError::NoEquations)?;
+        let formulas = super::interp::specified_formulas(&mut self.model, &self.bindings)?;
         let outputs = self.output_values(&eqs)?;
         let mut spec = ModelSpec::new(name, self.model, eqs);
         for input in &self.inputs {
@@ -36,6 +37,9 @@ impl LoadedModel {
         if !spec.outputs.iter().any(|o| o.name.eq_ignore_ascii_case("KE")) {
             let unit = spec.unit("KE").to_string();
             spec.add_kinetic_energy("KE", &unit)?;
+        }
+        for o in &mut spec.outputs {
+            o.components = spec.model.ar.subs_many(&o.components, &formulas)?;
         }
         Ok(spec)
     }

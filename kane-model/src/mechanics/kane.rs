@@ -42,6 +42,29 @@ pub struct KaneEquations {
     pub formed: bool,
 }
 
+impl KaneEquations {
+    /// Every expression of the equations with `map` substituted (formulas for specified
+    /// quantities, for example).
+    pub fn substitute(&mut self, ar: &mut crate::expr::Arena, map: &FxHashMap<ExprId, ExprId>) -> Result<()> {
+        if map.is_empty() {
+            return Ok(());
+        }
+        let mut each = |list: &mut Vec<ExprId>| -> Result<()> {
+            *list = ar.subs_many(list, map)?;
+            Ok(())
+        };
+        each(&mut self.kinematics)?;
+        each(&mut self.forcing)?;
+        self.mass_matrix.iter_mut().try_for_each(&mut each)?;
+        if let Some(c) = &mut self.constraints {
+            c.a_dependent.iter_mut().chain(&mut c.a_independent).try_for_each(&mut each)?;
+            each(&mut c.b)?;
+            each(&mut c.bias)?;
+        }
+        Ok(())
+    }
+}
+
 /// Motion constraints in Kane's equations: `A_d u_d + A_i u_i + b = 0` and, differentiated,
 /// `A_d u_d' + A_i u_i' + bias = 0`. They reduce `M` and `f` (over all speeds) to the
 /// independent speeds numerically where the equations are evaluated.

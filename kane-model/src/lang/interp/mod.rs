@@ -24,6 +24,8 @@ mod orientation;
 mod prepare;
 mod scalar_fns;
 mod sources;
+mod specified;
+pub(crate) use specified::specified_formulas;
 mod statements;
 pub mod value;
 mod vector_fns;
@@ -274,6 +276,19 @@ impl Interpreter {
                 }
                 tainted.add_statement(source, s);
             }
+        }
+    }
+
+    /// Puts the formulas given to SPECIFIED quantities into the equations (after the file ran).
+    pub(crate) fn put_specified_formulas(&mut self) {
+        let Some(eqs) = self.equations.as_mut() else { return };
+        let put = specified::specified_formulas(&mut self.model, &self.bindings)
+            .and_then(|map| eqs.substitute(&mut self.model.ar, &map));
+        if let Err(e) = put {
+            self.errors.push(Diagnostic::error(
+                0..0,
+                format!("a SPECIFIED quantity's formula cannot be put into the equations: {e}"),
+            ));
         }
     }
 
