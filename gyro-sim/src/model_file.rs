@@ -69,9 +69,12 @@ pub struct ModelFile {
 impl ModelFile {
     /// Reads, checks and lowers the model file at `path`.
     pub fn load(path: &Path) -> Result<ModelFile, ModelFileError> {
+        ModelFile::from_source(path, source_with(path, &[])?)
+    }
+
+    /// Checks and lowers `source`, the text of the model file at `path` (see [`source_with`]).
+    pub fn from_source(path: &Path, source: String) -> Result<ModelFile, ModelFileError> {
         let shown = path.display().to_string();
-        let source = std::fs::read_to_string(path)
-            .map_err(|e| ModelFileError::Read { path: shown.clone(), reason: e.to_string() })?;
         let checked =
             kane_model::lang::check(&shown, &source).map_err(|r| ModelFileError::Check(r.to_string()))?;
         let warnings = checked.warnings.to_string();
@@ -93,6 +96,26 @@ impl ModelFile {
             warnings,
         })
     }
+}
+
+/// The text of the model file at `path` with a scene's `[specified]` formulas appended (after
+/// KANE(), where a file's own formulas for SPECIFIED quantities may stand).
+pub fn source_with(
+    path: &Path,
+    specified: &[(String, String, std::ops::Range<usize>)],
+) -> Result<String, ModelFileError> {
+    let mut source = std::fs::read_to_string(path)
+        .map_err(|e| ModelFileError::Read { path: path.display().to_string(), reason: e.to_string() })?;
+    if !specified.is_empty() {
+        if !source.ends_with('\n') {
+            source.push('\n');
+        }
+        source.push_str("% From the scene's [specified] table:\n");
+        for (name, formula, _) in specified {
+            source.push_str(&format!("{name} = {formula}\n"));
+        }
+    }
+    Ok(source)
 }
 
 /// A model's name from its file: the stem, as an identifier (`my gimbal-2.al` -> `my_gimbal_2`).

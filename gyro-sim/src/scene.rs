@@ -27,6 +27,9 @@ pub struct Scene {
     pub parameters: Vec<(String, Value, std::ops::Range<usize>)>,
     /// Initial values to set.
     pub initial: Vec<(String, Value, std::ops::Range<usize>)>,
+    /// Formulas for a model file's SPECIFIED quantities (`[specified]`, `T = "-K*Q"`): model
+    /// text, in the file's names, appended to the file.
+    pub specified: Vec<(String, String, std::ops::Range<usize>)>,
     /// A symmetric top's initial motion, EJS style (`[axle]`).
     pub axle: Option<Axle>,
     /// A 3-D view to write beside the results (`[view]`, see [`crate::output::ViewSpec`]).
@@ -145,6 +148,7 @@ struct SceneFile {
     integrator: Option<IntegratorFile>,
     parameters: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
     initial: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
+    specified: Option<BTreeMap<Spanned<String>, Spanned<String>>>,
     axle: Option<Spanned<AxleFile>>,
     view: Option<crate::output::ViewSpec>,
     events: Option<Vec<crate::events::scene::EventFile>>,
@@ -307,6 +311,29 @@ impl Text<'_> {
         let mut out = Vec::new();
         for (k, v) in table.unwrap_or_default() {
             out.push((k.get_ref().clone(), self.value(k.get_ref(), &v)?, v.span()));
+        }
+        Ok(out)
+    }
+
+    /// `[specified]`: each name (a SPECIFIED quantity of the model file) with its formula.
+    fn formulas(
+        &self,
+        table: Option<BTreeMap<Spanned<String>, Spanned<String>>>,
+    ) -> Result<Vec<(String, String, Span)>, SceneError> {
+        let mut out = Vec::new();
+        for (k, v) in table.unwrap_or_default() {
+            let name = k.get_ref();
+            let simple = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
+                && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+            let formula = v.get_ref();
+            if !simple || formula.contains(['\n', '\r', '%', ';']) || formula.trim().is_empty() {
+                return Err(self.err(
+                    v.span(),
+                    format!("[specified] {name}: a name and a one-line formula are needed"),
+                    "write NAME = \"formula of t, states and parameters\", e.g. T = \"-K*Q1 - C*U1\"",
+                ));
+            }
+            out.push((name.clone(), formula.clone(), v.span()));
         }
         Ok(out)
     }
@@ -495,7 +522,7 @@ impl Scene {
             text.err(
                 e.span().unwrap_or(0..0),
                 e.message().to_string(),
-                "keys are title, model, t_final, output_step, outputs, [integrator] (method, rtol, atol, step, accuracy, max_steps), [parameters], [initial], [axle] (tilt, spin, precession, nutation, quaternion, rates), [view], [[events]] (name, when, preset, direction, action, count, angle, margin, lock), plot_points",
+                "keys are title, model, t_final, output_step, outputs, [integrator] (method, rtol, atol, step, accuracy, max_steps), [parameters], [initial], [specified], [axle] (tilt, spin, precession, nutation, quaternion, rates), [view], [[events]] (name, when, preset, direction, action, count, angle, margin, lock), plot_points",
             )
         })?;
         let model = raw.model.ok_or_else(|| {
@@ -517,6 +544,7 @@ impl Scene {
             model: model.into_inner(),
             parameters: text.values(raw.parameters)?,
             initial: text.values(raw.initial)?,
+            specified: text.formulas(raw.specified)?,
             axle: text.axle(raw.axle)?,
             view_span: view_span(source),
             view: raw.view,

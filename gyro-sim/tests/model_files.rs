@@ -140,6 +140,47 @@ fn a_loop_that_cannot_close_is_an_error_that_says_so() {
 }
 
 #[test]
+fn a_scene_gives_the_torque_a_file_leaves_specified() {
+    let dir = folder("specified");
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/driven_pendulum.al");
+    let scene = |torque: &str| {
+        format!(
+            "model = \"{file}\"\nt_final = 4.0\noutput_step = 0.1\noutputs = [\"Q\", \"U\", \"ENERGY\"]\n\
+             [integrator]\nmethod = \"dop853\"\nrtol = 1e-10\natol = 1e-10\n[specified]\nT = \"{torque}\"\n"
+        )
+    };
+    let energy = |name: &str, torque: &str| {
+        let path = dir.join(format!("{name}.toml"));
+        std::fs::write(&path, scene(torque)).unwrap();
+        let out = dir.join(name);
+        let run =
+            gyro_sim(&[path.to_str().unwrap(), "--engine", "instant", "--out", out.to_str().unwrap()], &dir);
+        assert!(run.status.success(), "{}", text(&run));
+        rows(&out).iter().map(|r| r[3]).collect::<Vec<f64>>()
+    };
+    // A spring torque: the energy (with the spring's) is conserved; with a damper it only falls.
+    let spring = energy("spring", "-K*Q");
+    let drift = spring.iter().map(|e| (e - spring[0]).abs()).fold(0.0, f64::max) / spring[0].abs();
+    assert!(drift < 1e-8, "energy drift {drift:e}");
+    let damped = energy("damped", "-K*Q - C*U");
+    assert!(damped.windows(2).all(|w| w[1] <= w[0] + 1e-9), "{damped:?}");
+    assert!(damped.last().unwrap() < &(0.5 * damped[0]), "{damped:?}");
+    // Without a formula the run says what to do.
+    let out = dir.join("none");
+    let run = gyro_sim(&["--model", file, "--engine", "instant", "--out", out.to_str().unwrap()], &dir);
+    assert!(!run.status.success() && text(&run).contains("[specified]"), "{}", text(&run));
+    // A compiled model has no SPECIFIED quantities to give.
+    let builtin = dir.join("builtin.toml");
+    std::fs::write(
+        &builtin,
+        "model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[specified]\nT = \"1\"\n",
+    )
+    .unwrap();
+    let run = gyro_sim(&[builtin.to_str().unwrap(), "--out", dir.join("b").to_str().unwrap()], &dir);
+    assert!(!run.status.success() && text(&run).contains("is a compiled model"), "{}", text(&run));
+}
+
+#[test]
 fn the_bicycle_rides_self_stable_at_5_m_per_s_and_capsizes_at_8_with_its_energy_kept() {
     // A push in roll rate (U2 = 0.5 rad/s) from upright straight running at the speed V: the
     // two scenes that ride the model file, and the same through --model with --set.

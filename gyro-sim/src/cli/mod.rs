@@ -203,20 +203,27 @@ fn run_command(
     };
     let Some(file_path) = file_path else {
         let scene = scene.ok_or("give a scene or --model")?;
+        if let Some((name, _, _)) = scene.specified.first() {
+            return Err(format!(
+                "{}: [specified] {name}: formulas are for a model file's SPECIFIED quantities, and {} is a compiled model",
+                scene.path.display(),
+                scene.model
+            ));
+        }
         return finish(&scene, &registry, args);
     };
-    let source = std::fs::read_to_string(&file_path)
-        .map_err(|e| format!("{}: cannot read the model file: {e}", file_path.display()))?;
+    let specified = scene.as_ref().map_or(&[][..], |s| &s.specified[..]);
+    let source = crate::model_file::source_with(&file_path, specified).map_err(|e| e.to_string())?;
     let key = crate::compiled::registry_key(&source);
     let (entry, run, file) = match compiled.filter(|c| c.key == key) {
         Some(c) => {
             // The binary's equations; INPUT values (perhaps edited since it was built) from the file.
-            let file = ModelFile::load(&file_path).map_err(|e| e.to_string())?;
+            let file = ModelFile::from_source(&file_path, source).map_err(|e| e.to_string())?;
             let current = crate::instant::instant_entry(file.program.clone());
             (with_values_of(c.entry, &current), file.run.clone(), None)
         }
         None => {
-            let file = ModelFile::load(&file_path).map_err(|e| e.to_string())?;
+            let file = ModelFile::from_source(&file_path, source).map_err(|e| e.to_string())?;
             eprint!("{}", file.warnings);
             let entry = crate::instant::instant_entry(file.program.clone());
             (entry, file.run.clone(), Some(file))
@@ -266,7 +273,8 @@ fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
 /// `registry` with the model file `scene` names, if it names one, on the instant engine.
 fn with_file_model(scene: &Scene, registry: Registry) -> Result<Registry, String> {
     let Some(path) = model_file_of(scene) else { return Ok(registry) };
-    let file = ModelFile::load(&path).map_err(|e| e.to_string())?;
+    let source = crate::model_file::source_with(&path, &scene.specified).map_err(|e| e.to_string())?;
+    let file = ModelFile::from_source(&path, source).map_err(|e| e.to_string())?;
     eprint!("{}", file.warnings);
     Ok(registry.with_entry(&scene.model, crate::instant::instant_entry(file.program.clone())))
 }
