@@ -177,3 +177,19 @@ fn a_specified_torque_given_a_formula_after_kane_drives_the_equations_and_the_co
     let value = ar.eval(&[power], named).unwrap()[0];
     assert!((value - (-2.0 * 0.1 - 0.5 * 0.4) * 0.4).abs() < 1e-15, "{value}");
 }
+
+#[test]
+fn cross_with_a_dyadic_and_an_orientation_tree_not_rooted_at_n() {
+    // B is oriented in A before A is oriented in N: the tree is re-rooted at N.
+    let src = "NEWTONIAN N\nFRAMES A, B\nVARIABLES Q{2}'\nSIMPROT(A, B, 3, Q2)\nSIMPROT(N, A, 3, Q1)\n\
+               W = DOT(W_B_N>, N3>)\nX = DOT(B1>, N1>)\n\
+               L>> = CROSS(A3>, A1>*A1>)\nR>> = CROSS(A1>*A1>, A3>)\n\
+               XL = DOT(DOT(L>>, A1>), A2>)\nXR = DOT(A1>, DOT(R>>, A2>))\n";
+    let m = lang::load("c.al", src).unwrap_or_else(|r| panic!("{}", r.render()));
+    let text = |n: &str| m.model.ar.to_text(scalar(&m, n));
+    assert_eq!(text("W"), "Q2' + Q1'");
+    assert_eq!(text("X"), "cos(Q1 + Q2)");
+    // A3> x (A1> A1>) = A2> A1>; (A1> A1>) x A3> = -A1> A2>.
+    assert_eq!(text("XL"), "1");
+    assert_eq!(text("XR"), "-1");
+}

@@ -113,4 +113,36 @@ impl Model {
     pub fn dyadic_dot(&mut self, d: &Dyadic, v: &Vector) -> Result<Vector> {
         ops::dyadic_dot(self, d, v)
     }
+
+    /// `v x d` when `v_first`, else `d x v`: each term `m a_i b_j` becomes `m (v x a_i) b_j`,
+    /// or `m a_i (b_j x v)`.
+    pub fn cross_dyadic(&mut self, v: &Vector, d: &Dyadic, v_first: bool) -> Result<Dyadic> {
+        let mut out = Dyadic::zero();
+        for (a, b, m) in d.terms.clone() {
+            for (i, row) in m.iter().enumerate() {
+                for (j, &k) in row.iter().enumerate() {
+                    if self.ar.is_zero(k) {
+                        continue;
+                    }
+                    let (a_i, b_j) = (self.unit_vector(a, i), self.unit_vector(b, j));
+                    let term = if v_first {
+                        let left = self.cross(v, &a_i)?;
+                        self.outer(&left, &b_j)?
+                    } else {
+                        let right = self.cross(&b_j, v)?;
+                        self.outer(&a_i, &right)?
+                    };
+                    let term = self.scale_dyadic(&term, k)?;
+                    out = self.add_dyadics(&out, &term)?;
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// The unit vector along axis `i` (0, 1, 2) of `frame`.
+    fn unit_vector(&mut self, frame: FrameId, i: usize) -> Vector {
+        let (zero, one) = (self.ar.zero(), self.ar.one());
+        Vector::new(frame, std::array::from_fn(|k| if k == i { one } else { zero }))
+    }
 }

@@ -154,7 +154,13 @@ impl Interpreter {
 
     /// A vector value, or an error saying what was found instead.
     pub(crate) fn vector(&mut self, e: &Expr) -> IResult<Vector> {
-        match self.eval(e)? {
+        let v = self.eval(e)?;
+        self.vector_of(v, e)
+    }
+
+    /// The value `v` of `e` as a vector (a scalar zero is the zero vector).
+    pub(crate) fn vector_of(&self, v: Value, e: &Expr) -> IResult<Vector> {
+        match v {
             Value::Vector(v) => Ok(v),
             Value::Scalar(x) if self.model.ar.is_zero(x) => Ok(Vector::zero()),
             other => {

@@ -24,9 +24,18 @@ impl Interpreter {
             }
             "CROSS" => {
                 arity(2)?;
-                let a = self.vector(&args[0])?;
-                let b = self.vector(&args[1])?;
-                Ok(Value::Vector(self.model.cross(&a, &b).at(fail)?))
+                match (self.eval(&args[0])?, self.eval(&args[1])?) {
+                    (Value::Vector(v), Value::Dyadic(d)) => {
+                        Ok(Value::Dyadic(self.model.cross_dyadic(&v, &d, true).at(fail)?))
+                    }
+                    (Value::Dyadic(d), Value::Vector(v)) => {
+                        Ok(Value::Dyadic(self.model.cross_dyadic(&v, &d, false).at(fail)?))
+                    }
+                    (a, b) => {
+                        let (a, b) = (self.vector_of(a, &args[0])?, self.vector_of(b, &args[1])?);
+                        Ok(Value::Vector(self.model.cross(&a, &b).at(fail)?))
+                    }
+                }
             }
             "MAG" => {
                 arity(1)?;
@@ -148,9 +157,9 @@ impl Interpreter {
             (Value::Dyadic(_), Value::Dyadic(_)) => {
                 Err(Diagnostic::error(e.span.clone(), "DOT of two dyadics is not supported"))
             }
-            _ => {
-                let (a, b) = (self.vector(a)?, self.vector(b)?);
-                Ok(Value::Scalar(self.model.dot(&a, &b).at(fail)?))
+            (va, vb) => {
+                let (va, vb) = (self.vector_of(va, a)?, self.vector_of(vb, b)?);
+                Ok(Value::Scalar(self.model.dot(&va, &vb).at(fail)?))
             }
         }
     }
