@@ -326,32 +326,32 @@ fn assembled<B: BoundModel>(problem: &Problem, model: &B) -> Result<Option<(Prob
 
 /// The largest constraint residuals at the output times so far, by kind (configuration,
 /// motion), for a model that has them.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Debug, Default)]
 pub(crate) struct Residuals {
+    /// The configuration and motion residual outputs, found once.
+    outputs: [Option<usize>; 2],
     configuration: Option<f64>,
     motion: Option<f64>,
+    scratch: Vec<f64>,
 }
 
 impl Residuals {
+    /// Tracking for `info`'s residual outputs (none: nothing is computed).
+    fn of(info: &ModelInfo) -> Residuals {
+        let find = |kind: &str| info.outputs.iter().position(|o| o.kind == kind);
+        Residuals {
+            outputs: [find("configuration_residuals"), find("motion_residuals")],
+            ..Default::default()
+        }
+    }
+
     /// Updated with the residuals at `(t, y)`.
     fn track<B: BoundModel>(&mut self, model: &B, t: f64, y: &[f64]) {
-        let info = model.info();
-        for (k, o) in info.outputs.iter().enumerate() {
-            let slot = match o.kind {
-                "configuration_residuals" => &mut self.configuration,
-                "motion_residuals" => &mut self.motion,
-                _ => continue,
-            };
-            let mut r = vec![0.0; o.columns.len()];
-            model.output(k, t, y, &[], &mut r);
-            // A NaN residual is kept as NaN: the report then says it was not finite.
-            *slot = Some(r.iter().fold(slot.unwrap_or(0.0), |a, x| {
-                if a.is_nan() || x.is_nan() {
-                    f64::NAN
-                } else {
-                    a.max(x.abs())
-                }
-            }));
+        for (k, slot) in self.outputs.iter().zip([&mut self.configuration, &mut self.motion]) {
+            let Some(k) = *k else { continue };
+            self.scratch.resize(model.info().outputs[k].columns.len(), 0.0);
+            model.output(k, t, y, &[], &mut self.scratch);
+            *slot = Some(kane_model::assembly::largest_magnitude(slot.unwrap_or(0.0), &self.scratch));
         }
     }
 
@@ -430,7 +430,7 @@ fn integrate<B: BoundModel>(
     let mut next_output = 0;
     let groups = reduced_groups(&problem.unit_norms, keep);
     let held = UnitNorm::new(sys, &groups, norm_threshold(method));
-    let mut largest_residual = Residuals::default();
+    let mut largest_residual = Residuals::of(info);
     let on_output = |t: f64, y_red: &[f64]| {
         sys.expand(y_red, &mut full_y);
         normalise(&problem.unit_norms, &mut full_y);

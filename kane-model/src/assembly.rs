@@ -59,6 +59,12 @@ pub fn residual_output(info: &ModelInfo) -> Option<usize> {
     info.outputs.iter().position(|o| o.kind == "configuration_residuals")
 }
 
+/// The largest of `start` and the magnitudes of `values`; NaN when any of them is NaN (so a
+/// residual that is not a number is never taken for a small one).
+pub fn largest_magnitude(start: f64, values: &[f64]) -> f64 {
+    values.iter().fold(start, |a, x| if a.is_nan() || x.is_nan() { f64::NAN } else { a.max(x.abs()) })
+}
+
 /// Solves the dependent coordinates of `y` (the others held) so the configuration residuals
 /// vanish. `residual(y, dy, r, dr)` writes the residuals at `y` into `r` and their derivative
 /// along `dy` into `dr` (a model's `output_rate` of [`residual_output`]).
@@ -82,10 +88,7 @@ pub fn assemble(
         }
     };
     evaluate(y, &mut r, &mut jacobian);
-    // The largest residual, NaN when any is.
-    let largest = |r: &[f64]| {
-        r.iter().fold(0.0_f64, |a, x| if a.is_nan() || x.is_nan() { f64::NAN } else { a.max(x.abs()) })
-    };
+    let largest = |r: &[f64]| largest_magnitude(0.0, r);
     let goal = 1e-12 * largest(&r).max(1.0);
     let mut iterations = 0;
     loop {

@@ -28,9 +28,8 @@ struct Claim {
     what: String,
     /// The lines the implied value comes from.
     notes: Vec<Span>,
-    /// The point at rest the velocity is carried from, when that point is located only by the
-    /// points positioned from it (a contact point): a difference in V2PTS is then a rolling
-    /// contact.
+    /// The point at rest V2PTS carried the velocity from, when that point is located only by
+    /// the points positioned from it (a contact point): a difference is then a rolling contact.
     contact: Option<String>,
 }
 
@@ -49,11 +48,9 @@ pub(crate) fn consistency(m: &mut LoadedModel, source: &str) -> Vec<Diagnostic> 
             compare(&mut m.model, &c.assigned, &c.implied, c.frame)
         {
             let unit = format!("{}{}>", m.model.frame_name(c.frame), axis + 1);
-            let by_v2pts =
-                statement_text(source, &c.span).trim_start().to_ascii_uppercase().starts_with("V2PTS");
             errors.push(match &c.contact {
-                Some(point) if by_v2pts => rolling_contact(source, &c, point),
-                _ => contradiction(source, &c, &unit, assigned, implied),
+                Some(point) => rolling_contact(source, &c, point),
+                None => contradiction(source, &c, &unit, assigned, implied),
             });
         }
     }
@@ -125,7 +122,9 @@ fn velocity_claims(model: &mut Model, sources: &Sources) -> Vec<Claim> {
         let mut notes: Vec<Span> = sources.position_of(p, from).cloned().into_iter().collect();
         notes.extend(velocity_lines(model, sources, from, frame));
         let what = format!("the velocity of {} in {}", model.point_name(p), model.frame_name(frame));
-        let contact = is_contact(model, sources, from, frame).then(|| model.point_name(from).to_string());
+        let by_v2pts = sources.carried_from.get(&(p, frame)) == Some(&from);
+        let contact =
+            (by_v2pts && is_contact(model, sources, from, frame)).then(|| model.point_name(from).to_string());
         claims.push(Claim { span: span.clone(), frame, assigned, implied, what, notes, contact });
     }
     claims

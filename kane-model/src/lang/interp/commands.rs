@@ -133,6 +133,9 @@ impl Interpreter {
             &mut self.sources.accelerations
         };
         set.insert((to, frame), e.span.clone());
+        if upper == "V2PTS" {
+            self.sources.carried_from.insert((to, frame), from);
+        }
         Ok(())
     }
 

@@ -17,6 +17,8 @@ pub(crate) struct Sources {
     pub(crate) positions: FxHashMap<(PointId, PointId), Span>,
     /// `V_P_N> = ...`, V2PTS, V1PT.
     pub(crate) velocities: FxHashMap<(PointId, FrameId), Span>,
+    /// V2PTS(N, B, P, Q): Q's velocity in N carried from P, by `(Q, N)`.
+    pub(crate) carried_from: FxHashMap<(PointId, FrameId), PointId>,
     /// `A_P_N> = ...`, A2PTS, A1PT.
     pub(crate) accelerations: FxHashMap<(PointId, FrameId), Span>,
     /// `W_B_A> = ...`, by the frame B.
