@@ -1,11 +1,13 @@
 //! Failures named: in comes a bound model at the state where an integration starts or last
-//! succeeded; out goes what is wrong there (a singular or indefinite mass matrix, rates that
-//! are not finite or overflow), with the configuration, or nothing.
+//! succeeded; out goes what is wrong there (motion constraints that lose rank, a singular or
+//! indefinite mass matrix, rates that are not finite or overflow), with the configuration, or
+//! nothing.
 //!
 //! The mass matrix of the speeds is read off the model's kinetic-energy output (generated from
 //! the same lowered program as the right-hand side): `T = u^T M u / 2 + b^T u + c`, so
 //! `M_ij = (T(e_i + e_j) - T(e_i - e_j) - T(-e_i + e_j) + T(-e_i - e_j)) / 4`.
 
+use kane_model::mechanics::{reciprocal_condition, CONSTRAINT_RCOND_LIMIT};
 use kane_model::runtime::ModelInfo;
 
 use crate::solve::{kinetic_energy_output, BoundModel, SolveError};
@@ -92,6 +94,28 @@ pub(crate) fn mass_matrix_error<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Op
     })
 }
 
+/// The smallest over the largest singular value of the motion constraints' matrix of
+/// dependent speeds at `(t, y)`, when the model has that matrix as an output.
+pub(crate) fn constraint_rcond<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Option<f64> {
+    let info = sys.info();
+    let k = info.outputs.iter().position(|o| o.kind == "constraint_matrix")?;
+    let n = info.outputs[k].columns.len().isqrt();
+    let mut entries = vec![0.0; n * n];
+    sys.output(k, t, y, &[], &mut entries);
+    Some(reciprocal_condition(n, &entries))
+}
+
+/// Motion constraints that lose rank at `(t, y)` (reciprocal condition number below
+/// [`CONSTRAINT_RCOND_LIMIT`], or not finite), named with the configuration.
+pub(crate) fn constraint_rank_error<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Option<SolveError> {
+    let rcond = constraint_rcond(sys, t, y)?;
+    (rcond.is_nan() || rcond < CONSTRAINT_RCOND_LIMIT).then(|| SolveError::ConstraintRankLoss {
+        time: t,
+        configuration: configuration(sys.info(), y),
+        rcond,
+    })
+}
+
 /// Rates that are not finite at `(t, y)` (or overflow), named with the state.
 pub(crate) fn rates_error<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Option<SolveError> {
     let info = sys.info();
@@ -134,7 +158,8 @@ pub(crate) fn explain<B: BoundModel>(sys: &B, error: SolveError, t: f64, y: &[f6
     if !explainable {
         return error;
     }
-    mass_matrix_error(sys, t, y)
+    constraint_rank_error(sys, t, y)
+        .or_else(|| mass_matrix_error(sys, t, y))
         .or_else(|| rates_error(sys, t, y))
         .or_else(|| overflow_error(sys, t, y))
         .unwrap_or(error)

@@ -16,7 +16,7 @@ use crate::problem::{Pick, Problem};
 use crate::refine::refine;
 use crate::registry::Registry;
 use crate::rows::Rows;
-use crate::trajectory::{Column, Constraints, Trajectory};
+use crate::trajectory::{Column, Conditioning, Constraints, Trajectory};
 use crate::unit_norm::{normalise, NormDrift, UnitNorm};
 use kane_model::assembly::Assembly;
 
@@ -39,6 +39,16 @@ pub enum SolveError {
         last_time: f64,
         /// That state, `NAME = value unit, ...`.
         last_state: String,
+    },
+    /// The motion constraints' matrix of dependent speeds is (nearly) singular.
+    #[error("integration failed: the motion constraints lose rank at t = {time}, {configuration}: their matrix of dependent speeds has reciprocal condition number {rcond:e}, so the dependent speeds are not determined there\n  help: choose other dependent speeds in CONSTRAIN, or keep the motion away from this configuration")]
+    ConstraintRankLoss {
+        /// When.
+        time: f64,
+        /// The coordinates, `Q1 = 0 deg, ...`.
+        configuration: String,
+        /// `A_d`'s smallest over largest singular value (NaN when an entry is not finite).
+        rcond: f64,
     },
     /// The mass matrix of the speeds is singular or indefinite (a zero or negative mass or
     /// inertia, or bodies that lose a degree of freedom in this configuration).
@@ -272,7 +282,9 @@ pub fn solve_bound<B: BoundModel>(problem: &Problem, full_sys: &B) -> Result<Tra
     let keep = integrated_states(problem);
     let sys = Reduced::new(full_sys, keep.clone());
     let columns = columns(problem);
-    if let Some(e) = diagnose::mass_matrix_error(full_sys, 0.0, &problem.initial) {
+    let start_error = diagnose::constraint_rank_error(full_sys, 0.0, &problem.initial)
+        .or_else(|| diagnose::mass_matrix_error(full_sys, 0.0, &problem.initial));
+    if let Some(e) = start_error {
         return Err(e);
     }
     let integrate_at = |method: Method| integrate(problem, &sys, &keep, &columns, method);
@@ -325,13 +337,16 @@ fn assembled<B: BoundModel>(problem: &Problem, model: &B) -> Result<Option<(Prob
 }
 
 /// The largest constraint residuals at the output times so far, by kind (configuration,
-/// motion), for a model that has them.
+/// motion), and the worst conditioning of the dependent speeds' matrix, for a model that has
+/// them.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Residuals {
     /// The configuration and motion residual outputs, found once.
     outputs: [Option<usize>; 2],
     configuration: Option<f64>,
     motion: Option<f64>,
+    /// The worst conditioning so far, when the model has a constraint-matrix output.
+    conditioning: Option<Conditioning>,
     scratch: Vec<f64>,
 }
 
@@ -345,7 +360,7 @@ impl Residuals {
         }
     }
 
-    /// Updated with the residuals at `(t, y)`.
+    /// Updated with the residuals and the conditioning at `(t, y)`.
     fn track<B: BoundModel>(&mut self, model: &B, t: f64, y: &[f64]) {
         for (k, slot) in self.outputs.iter().zip([&mut self.configuration, &mut self.motion]) {
             let Some(k) = *k else { continue };
@@ -353,12 +368,29 @@ impl Residuals {
             model.output(k, t, y, &[], &mut self.scratch);
             *slot = Some(kane_model::assembly::largest_magnitude(slot.unwrap_or(0.0), &self.scratch));
         }
+        if self.outputs[1].is_none() {
+            return;
+        }
+        let Some(rcond) = diagnose::constraint_rcond(model, t, y) else { return };
+        let worse = match &self.conditioning {
+            Some(c) => rcond.is_nan() || rcond < c.rcond,
+            None => true,
+        };
+        if worse {
+            let configuration = diagnose::configuration(model.info(), y);
+            self.conditioning = Some(Conditioning { rcond, time: t, configuration });
+        }
     }
 
     /// The run's report, when the model has constraints.
     fn report(self, assembly: Option<Assembly>) -> Option<Constraints> {
         let any = assembly.is_some() || self.configuration.is_some() || self.motion.is_some();
-        any.then_some(Constraints { assembly, configuration: self.configuration, motion: self.motion })
+        any.then_some(Constraints {
+            assembly,
+            configuration: self.configuration,
+            motion: self.motion,
+            conditioning: self.conditioning,
+        })
     }
 }
 

@@ -82,4 +82,17 @@ pub struct Constraints {
     pub configuration: Option<f64>,
     /// The largest motion-constraint residual at the output times.
     pub motion: Option<f64>,
+    /// The worst conditioning of the dependent speeds' matrix at the output times.
+    pub conditioning: Option<Conditioning>,
+}
+
+/// The motion constraints' matrix of dependent speeds at its worst output time.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Conditioning {
+    /// Its smallest over largest singular value (NaN when an entry was not finite).
+    pub rcond: f64,
+    /// When.
+    pub time: f64,
+    /// The coordinates then, `Q1 = 0 deg, ...`.
+    pub configuration: String,
 }

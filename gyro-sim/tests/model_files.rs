@@ -13,6 +13,7 @@ const CHAIN40: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/chain40_r
 const DISC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/rolling_disc.al");
 const BICYCLE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/whipple_bicycle.al");
 const FOUR_BAR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/four_bar.al");
+const STALLING: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/stalling_slider.al");
 
 /// A fresh folder for one test.
 fn folder(name: &str) -> PathBuf {
@@ -136,6 +137,40 @@ fn a_loop_that_cannot_close_is_an_error_that_says_so() {
     let message = text(&run);
     assert!(!run.status.success(), "{message}");
     assert!(message.contains("the configuration constraints") && message.contains("Q2, Q3"), "{message}");
+    assert!(!out.join("trajectory.csv").exists(), "no rows for a run that cannot start");
+}
+
+#[test]
+fn constraints_near_rank_loss_are_a_warning_and_at_rank_loss_an_error() {
+    let dir = folder("stalling");
+    let out = dir.join("out");
+    let run = |extra: &[&str]| {
+        let mut args = vec!["--model", STALLING, "--engine", "instant", "--out", out.to_str().unwrap()];
+        args.extend(extra);
+        gyro_sim(&args, &dir)
+    };
+    // Away from Q1 = pi/2 the matrix of dependent speeds is well conditioned.
+    let early = run(&["--t-final", "2"]);
+    let message = text(&early);
+    assert!(early.status.success(), "{message}");
+    assert!(message.contains("reciprocal condition") && !message.contains("warning"), "{message}");
+    // Creeping towards it: rows are written, with a warning that names when and where.
+    let late = run(&["--t-final", "20"]);
+    let message = text(&late);
+    assert!(late.status.success(), "{message}");
+    assert!(
+        message.contains("warning: the motion constraints came near rank loss at t = 20, Q1 = 1.5707"),
+        "{message}"
+    );
+    // At it: no rows, the cause named.
+    std::fs::remove_dir_all(&out).unwrap();
+    let at = run(&["--set", "Q1=1.5707963267948966"]);
+    let message = text(&at);
+    assert!(!at.status.success(), "{message}");
+    assert!(
+        message.contains("the motion constraints lose rank at t = 0, Q1 = 1.5707963267948966"),
+        "{message}"
+    );
     assert!(!out.join("trajectory.csv").exists(), "no rows for a run that cannot start");
 }
 

@@ -92,7 +92,32 @@ fn constraint_lines(c: &crate::trajectory::Constraints) -> Vec<String> {
             "motion constraints: dependent speeds solved at every evaluation; largest residual {r:.2e} at the output times"
         ));
     }
+    if let Some(k) = &c.conditioning {
+        lines.push(conditioning_line(k));
+    }
     lines
+}
+
+/// Below this reciprocal condition number the dependent speeds may have lost half their digits.
+const NEAR_RANK_LOSS: f64 = 1e-8;
+
+/// The worst conditioning of the dependent speeds' matrix, a warning when it came near rank
+/// loss.
+fn conditioning_line(k: &crate::trajectory::Conditioning) -> String {
+    if k.rcond >= NEAR_RANK_LOSS {
+        format!(
+            "motion constraints: matrix of dependent speeds reciprocal condition {:.2e} at worst (t = {})",
+            k.rcond, k.time
+        )
+    } else {
+        format!(
+            "warning: the motion constraints came near rank loss at t = {}, {}: their matrix of dependent speeds has reciprocal condition {:.2e}, so the dependent speeds there may have lost up to {:.0} of their 16 digits",
+            k.time,
+            k.configuration,
+            k.rcond,
+            -k.rcond.log10()
+        )
+    }
 }
 
 /// The drift of the conserved quantities the run wrote (`ENERGY`, `LZ`, `L3`): start, end and

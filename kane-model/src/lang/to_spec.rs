@@ -34,6 +34,7 @@ impl LoadedModel {
         }
         spec.add_configuration_residuals("CONFIG", "")?;
         spec.add_motion_residuals("CONSTRAINT", "");
+        spec.add_constraint_matrix("CONSTRAINT_MATRIX");
         if !spec.outputs.iter().any(|o| o.name.eq_ignore_ascii_case("KE")) {
             let unit = spec.unit("KE").to_string();
             spec.add_kinetic_energy("KE", &unit)?;

@@ -36,5 +36,5 @@ pub use kane::{KaneEquations, SpeedConstraints, COLLECT_TERMS_BUDGET};
 pub use masses::{MassId, MassView};
 pub use model::{Body, Load, Model, Orientation, Particle};
 pub use order_n::{ldlt_operations, ORDER_N_FIRST_ABOVE};
-pub use rates::{Rates, CONSTRAINT_RCOND_LIMIT};
+pub use rates::{reciprocal_condition, Rates, CONSTRAINT_RCOND_LIMIT};
 pub use vector::{Dyadic, Vector};

@@ -98,15 +98,28 @@ impl KaneEquations {
 
 /// An error when `A_d`'s reciprocal condition number is below [`CONSTRAINT_RCOND_LIMIT`],
 /// naming the configuration.
+/// The smallest over the largest singular value of the `size x size` matrix `entries` (row
+/// or column major alike), 0 for a zero matrix, NaN when an entry is not finite.
+pub fn reciprocal_condition(size: usize, entries: &[f64]) -> f64 {
+    if entries.iter().any(|v| !v.is_finite()) {
+        return f64::NAN;
+    }
+    let sv = DMatrix::from_column_slice(size, size, entries).singular_values();
+    let (hi, lo) = (sv.max(), sv.min());
+    if hi > 0.0 {
+        lo / hi
+    } else {
+        0.0
+    }
+}
+
 fn check_rank(
     ad: &DMatrix<f64>,
     eqs: &KaneEquations,
     ar: &Arena,
     value_of: &dyn Fn(SymbolId) -> Option<f64>,
 ) -> Result<()> {
-    let sv = ad.clone().singular_values();
-    let (hi, lo) = (sv.max(), sv.min());
-    let rcond = if hi > 0.0 { lo / hi } else { 0.0 };
+    let rcond = reciprocal_condition(ad.nrows(), ad.as_slice());
     if rcond >= CONSTRAINT_RCOND_LIMIT && rcond.is_finite() {
         return Ok(());
     }

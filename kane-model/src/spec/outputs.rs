@@ -46,6 +46,12 @@ pub enum OutputKind {
     /// The residuals of the motion constraints with the dependent speeds solved from them
     /// (zero up to rounding: a check of the solve).
     MotionResiduals,
+    /// The motion constraints' matrix of the dependent speeds, `A_d`, row by row (checked for
+    /// rank loss where an integration fails).
+    ConstraintMatrix {
+        /// The number of dependent speeds (rows and columns).
+        size: usize,
+    },
     /// The angular momentum about `point` in the Newtonian frame, measured in `frame`.
     AngularMomentum {
         /// The point's name.
@@ -68,6 +74,7 @@ impl OutputKind {
             OutputKind::AngularMomentum { .. } => "angular_momentum",
             OutputKind::ConfigurationResiduals { .. } => "configuration_residuals",
             OutputKind::MotionResiduals => "motion_residuals",
+            OutputKind::ConstraintMatrix { .. } => "constraint_matrix",
         }
     }
 }
@@ -102,6 +109,9 @@ impl OutputSpec {
             OutputKind::ConfigurationResiduals { .. } | OutputKind::MotionResiduals => {
                 (1..=self.components.len()).map(|i| i.to_string()).collect()
             }
+            OutputKind::ConstraintMatrix { size } => {
+                (1..=*size).flat_map(|i| (1..=*size).map(move |j| format!("{i}{j}"))).collect()
+            }
             _ => return vec![self.name.clone()],
         };
         suffixes.into_iter().map(|s| format!("{}_{s}", self.name)).collect()
@@ -134,6 +144,15 @@ impl ModelSpec {
         if !residuals.is_empty() {
             self.push(name, unit, OutputKind::MotionResiduals, residuals);
         }
+    }
+
+    /// Adds the matrix of the dependent speeds in the motion constraints as the output `name`,
+    /// when the equations have constraints.
+    pub fn add_constraint_matrix(&mut self, name: &str) {
+        let Some(c) = &self.equations.constraints else { return };
+        let size = c.dependent.len();
+        let entries = c.a_dependent.iter().flatten().copied().collect();
+        self.push(name, "", OutputKind::ConstraintMatrix { size }, entries);
     }
 
     /// Adds a vector output measured in `frame`.
