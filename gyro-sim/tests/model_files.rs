@@ -13,6 +13,7 @@ const CHAIN40: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/chain40_r
 const DISC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/rolling_disc.al");
 const BICYCLE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/whipple_bicycle.al");
 const FOUR_BAR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/four_bar.al");
+const PRESCRIBED: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/tests/data/prescribed_elbow.al");
 const STALLING: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/stalling_slider.al");
 
 /// A fresh folder for one test.
@@ -172,6 +173,38 @@ fn constraints_near_rank_loss_are_a_warning_and_at_rank_loss_an_error() {
         "{message}"
     );
     assert!(!out.join("trajectory.csv").exists(), "no rows for a run that cannot start");
+}
+
+#[test]
+fn the_torque_solved_for_a_prescribed_elbow_puts_in_the_energy_the_pendulum_gains() {
+    let dir = folder("prescribed_elbow");
+    let out = dir.join("out");
+    let run = gyro_sim(
+        &["--model", PRESCRIBED, "--engine", "instant", "--t-final", "3", "--out", out.to_str().unwrap()],
+        &dir,
+    );
+    assert!(run.status.success(), "{}", text(&run));
+    let rows = rows(&out);
+    let header = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
+    assert!(header.starts_with("t,q1,u1,etor,energy,power"), "{header}");
+    // The shoulder is free: the energy changes by the work of the elbow torque, ETOR * EA'
+    // integrated by Simpson's rule over the rows.
+    let h = rows[1][0] - rows[0][0];
+    let n = rows.len() - 1;
+    assert!(n.is_multiple_of(2) && n >= 100);
+    let weight = |i: usize| {
+        if i == 0 || i == n {
+            1.0
+        } else if i % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        }
+    };
+    let work: f64 = rows.iter().enumerate().map(|(i, r)| weight(i) * r[5]).sum::<f64>() * h / 3.0;
+    let gained = rows[n][4] - rows[0][4];
+    assert!(gained.abs() > 0.5, "the torque does work: {gained}");
+    assert!((gained - work).abs() < 1e-6, "energy gained {gained} vs work {work}");
 }
 
 #[test]

@@ -346,10 +346,14 @@ fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
         roots.extend(c.a_dependent.iter().chain(&c.a_independent).flatten());
         roots.extend(c.b.iter().chain(&c.bias));
     }
+    let loads: Vec<SymbolId> = e.loads.as_ref().map(|l| l.loads.clone()).unwrap_or_default();
+    if let Some(l) = &e.loads {
+        roots.extend(l.mass_rows.iter().chain(&l.load_columns).flatten().chain(&l.forcing));
+    }
     let missing: Vec<String> = ar
         .free_symbols(&roots)
         .into_iter()
-        .filter(|s| !dependent.contains(s))
+        .filter(|s| !dependent.contains(s) && !loads.contains(s))
         .map(|s| ar.symbol_info(s).name.clone())
         .filter(|n| !values.contains_key(&n.to_ascii_uppercase()))
         .collect();
@@ -368,10 +372,15 @@ fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
             "dependent_speeds": names(&m, &dependent), "dependent_values": rates.dependent,
             "mass_matrix": rates.mass_matrix, "forcing": rates.forcing,
             "qdot": rates.coordinates, "udot": rates.speeds,
+            "loads": names(&m, &loads), "load_values": rates.loads,
         });
         println!("{v}");
     } else {
-        for (name, v) in names(&m, &dependent).iter().zip(&rates.dependent) {
+        for (name, v) in names(&m, &dependent)
+            .iter()
+            .zip(&rates.dependent)
+            .chain(names(&m, &loads).iter().zip(&rates.loads))
+        {
             println!("{name} = {v}");
         }
         for (name, v) in names(&m, &e.coordinates).iter().zip(&rates.coordinates) {

@@ -12,7 +12,9 @@ impl LoadedModel {
     /// The spec of this model file, named `name` (the model moves into it).
     pub fn into_spec(mut self, name: &str) -> Result<ModelSpec, CodegenError> {
         let eqs = self.equations.clone().ok_or(CodegenError::NoEquations)?;
-        let formulas = super::interp::specified_formulas(&mut self.model, &self.bindings)?;
+        let mut formulas = super::interp::specified_formulas(&mut self.model, &self.bindings)?;
+        // Auxiliary speeds are zero in every motion the outputs are computed along.
+        formulas.extend(self.model.auxiliary_zero_map()?);
         let outputs = self.output_values(&eqs)?;
         let mut spec = ModelSpec::new(name, self.model, eqs);
         for input in &self.inputs {
@@ -64,8 +66,10 @@ impl LoadedModel {
             }
             let bare = oname.trim_end_matches('>');
             let dependent = eqs.constraints.iter().flat_map(|c| &c.dependent);
-            if dependent.map(|s| &self.model.ar.symbol_info(*s).name).any(|n| n.eq_ignore_ascii_case(oname)) {
-                // A dependent speed: solved from the constraints where the output is computed.
+            let loads = eqs.loads.iter().flat_map(|l| &l.loads);
+            let solved = dependent.chain(loads);
+            if solved.map(|s| &self.model.ar.symbol_info(*s).name).any(|n| n.eq_ignore_ascii_case(oname)) {
+                // A dependent speed or a load KANE solves for: solved where the output is computed.
                 if let Some(super::interp::Binding::Symbol(e, _)) =
                     self.bindings.get(&oname.to_ascii_uppercase())
                 {

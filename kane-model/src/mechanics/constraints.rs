@@ -108,10 +108,12 @@ impl Model {
         self.constraints.as_ref().map(|c| c.dependent.clone()).unwrap_or_default()
     }
 
-    /// The speeds Kane's equations are formed over: the independent ones, then the dependent.
+    /// The speeds Kane's equations are formed over: the independent ones, the dependent, then
+    /// the auxiliary.
     pub(crate) fn kane_speeds(&self) -> Vec<SymbolId> {
         let mut all = self.independent_speeds();
         all.extend(self.dependent_speeds());
+        all.extend(&self.auxiliary.speeds);
         all
     }
 

@@ -112,6 +112,26 @@ pub enum MechanicsError {
         /// Their names.
         names: String,
     },
+    /// An auxiliary speed that is not one of the model's speeds.
+    #[error("`{0}` is not a generalized speed of the model, so it cannot be auxiliary")]
+    NotASpeed(String),
+    /// KANE's arguments and the auxiliary speeds differ in number.
+    #[error("KANE solves for {loads} loads but the model has {auxiliary} auxiliary speeds: their equations determine one load each, so name as many loads in KANE(...) as there are speeds in CONSTRAIN(AUXILIARY[...])")]
+    AuxiliaryCount {
+        /// Auxiliary speeds.
+        auxiliary: usize,
+        /// Loads named in KANE.
+        loads: usize,
+    },
+    /// Auxiliary speeds together with motion constraints.
+    #[error("auxiliary speeds together with motion constraints (DEPENDENT) are not supported")]
+    AuxiliaryWithConstraints,
+    /// A load KANE solves for also has a formula.
+    #[error("{0} is solved for by KANE({0}, ...) and also given a formula: remove one of them")]
+    LoadHasFormula(String),
+    /// A load solved for enters an equation nonlinearly.
+    #[error("the load {0} enters equation {1} nonlinearly, so KANE cannot solve for it")]
+    LoadNotLinear(String, usize),
     /// The constraints' matrix of dependent speeds is (nearly) singular at the point asked for.
     #[error(
         "the constraints lose rank at {at}: their matrix of dependent speeds has reciprocal condition \

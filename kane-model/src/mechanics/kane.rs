@@ -7,6 +7,7 @@ use rustc_hash::FxHashMap;
 
 use crate::expr::{ExprId, Node, SymbolId, SymbolKind};
 
+use super::auxiliary::SolvedLoads;
 use super::error::{MechanicsError, Result};
 use super::ids::{FrameId, PointId};
 use super::model::{Load, Model};
@@ -35,8 +36,10 @@ pub struct KaneEquations {
     /// The symmetric mass matrix `M`, row by row (over the independent speeds, then the
     /// dependent ones when there are constraints).
     pub mass_matrix: Vec<Vec<ExprId>>,
-    /// The forcing vector `f`.
+    /// The forcing vector `f` (with the loads solved for zero).
     pub forcing: Vec<ExprId>,
+    /// Loads solved with the speed rates from the auxiliary speeds' equations (KANE(T1, ...)).
+    pub loads: Option<SolvedLoads>,
     /// False while `mass_matrix` and `forcing` are not formed (empty): a large tree whose
     /// order-n form may never need them; [`Model::form_equations`] forms them.
     pub formed: bool,
@@ -60,6 +63,10 @@ impl KaneEquations {
             c.a_dependent.iter_mut().chain(&mut c.a_independent).try_for_each(&mut each)?;
             each(&mut c.b)?;
             each(&mut c.bias)?;
+        }
+        if let Some(l) = &mut self.loads {
+            l.mass_rows.iter_mut().chain(&mut l.load_columns).try_for_each(&mut each)?;
+            each(&mut l.forcing)?;
         }
         Ok(())
     }
@@ -331,7 +338,8 @@ impl Model {
         Ok(if self.ar.graph_size(s) < self.ar.graph_size(e) { s } else { e })
     }
 
-    fn subs_vector(&mut self, v: &Vector, map: &FxHashMap<ExprId, ExprId>) -> Result<Vector> {
+    /// `v` with `map` substituted in its measure numbers.
+    pub(crate) fn subs_vector(&mut self, v: &Vector, map: &FxHashMap<ExprId, ExprId>) -> Result<Vector> {
         let mut out = v.clone();
         for (_, m) in out.terms.iter_mut() {
             let r = self.ar.subs_many(m, map)?;
@@ -388,6 +396,7 @@ impl Model {
         let mut eqs = self.kane_unformed()?;
         eqs.mass_matrix = mass_matrix;
         eqs.forcing = forcing;
+        self.split_auxiliary(&mut eqs)?;
         eqs.formed = true;
         Ok(eqs)
     }
@@ -400,6 +409,7 @@ impl Model {
         let kinematics = coordinates.iter().map(|q| self.kinematics[q]).collect();
         let speeds = self.independent_speeds();
         let mut rates = self.speed_derivative_symbols()?;
+        rates.truncate(speeds.len() + self.dependent_speeds().len());
         let dependent_rates = rates.split_off(speeds.len());
         let constraints = self.speed_constraints(dependent_rates)?;
         Ok(KaneEquations {
@@ -410,6 +420,7 @@ impl Model {
             kinematics,
             mass_matrix: Vec::new(),
             forcing: Vec::new(),
+            loads: None,
             formed: false,
         })
     }

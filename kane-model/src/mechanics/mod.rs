@@ -10,6 +10,7 @@
 //! `loads`, `masses`, `outputs`, `kane`, ...).
 
 mod algebra;
+mod auxiliary;
 mod constraints;
 mod derivative;
 mod error;
@@ -29,6 +30,7 @@ mod table;
 mod vector;
 mod vector_ops;
 
+pub use auxiliary::SolvedLoads;
 pub use error::{MechanicsError, Result};
 pub use ids::{BodyId, FrameId, Mat3, ParticleId, PointId};
 pub use inertia::Shape;

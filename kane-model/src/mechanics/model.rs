@@ -136,6 +136,14 @@ pub(crate) struct MotionConstraints {
     pub(crate) b: Vec<ExprId>,
 }
 
+/// Auxiliary speeds (zero in every motion; their equations bring loads into evidence) and the
+/// unknown loads solved from them.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Auxiliary {
+    pub(crate) speeds: Vec<SymbolId>,
+    pub(crate) loads: Vec<SymbolId>,
+}
+
 /// A multibody model: owner of the expressions and of every frame, point, body and load.
 pub struct Model {
     /// The expressions of the model.
@@ -155,6 +163,8 @@ pub struct Model {
     pub(crate) kinematics_cache: KinematicsCache,
     pub(crate) constraints: Option<MotionConstraints>,
     pub(crate) configuration_constraints: Vec<ExprId>,
+    /// Auxiliary speeds and the loads their equations determine (KANE's arguments).
+    pub(crate) auxiliary: Auxiliary,
     /// Position relations `(from, to, r)`, for position queries along the shortest chain.
     pub(crate) position_edges: Vec<(PointId, PointId, Vector)>,
     frame_names: FxHashMap<String, FrameId>,
@@ -186,6 +196,7 @@ impl Model {
             kinematics_cache: KinematicsCache::default(),
             constraints: None,
             configuration_constraints: Vec::new(),
+            auxiliary: Auxiliary::default(),
             position_edges: Vec::new(),
             frame_names: [(newtonian.to_string(), FrameId(0))].into_iter().collect(),
             point_names: FxHashMap::default(),

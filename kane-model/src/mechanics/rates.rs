@@ -8,6 +8,7 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::expr::{Arena, ExprError, ExprId, SymbolId};
 
+use super::auxiliary::SolvedLoads;
 use super::error::{MechanicsError, Result};
 use super::kane::KaneEquations;
 
@@ -27,6 +28,8 @@ pub struct Rates {
     pub mass_matrix: Vec<Vec<f64>>,
     /// `f` evaluated.
     pub forcing: Vec<f64>,
+    /// The loads solved for (KANE(T1, ...)), in KANE's order (empty without them).
+    pub loads: Vec<f64>,
 }
 
 fn rows_of(m: &DMatrix<f64>) -> Vec<Vec<f64>> {
@@ -37,6 +40,9 @@ impl KaneEquations {
     /// `q'`, `u'` and the dependent speeds where `value_of` gives every other symbol's value;
     /// an error names a missing value, a singular mass matrix or constraints losing rank.
     pub fn rates_at(&self, ar: &Arena, value_of: &dyn Fn(SymbolId) -> Option<f64>) -> Result<Rates> {
+        if let Some(l) = &self.loads {
+            return self.rates_with_loads(l, ar, value_of);
+        }
         let Some(c) = &self.constraints else {
             let m = matrix(ar, &self.mass_matrix, value_of)?;
             let f = values(ar, &self.forcing, value_of)?;
@@ -53,6 +59,7 @@ impl KaneEquations {
                 dependent: Vec::new(),
                 mass_matrix: rows_of(&m),
                 forcing: f,
+                loads: Vec::new(),
             });
         };
         let ad = matrix(ar, &c.a_dependent, value_of)?;
@@ -92,6 +99,37 @@ impl KaneEquations {
             dependent: ud.iter().copied().collect(),
             mass_matrix: rows_of(&m),
             forcing: f.iter().copied().collect(),
+            loads: Vec::new(),
+        })
+    }
+
+    /// The rates and the loads from `[M, -B_s; M_a, -B_a] [u'; T] = [f; f_a]` by LU with
+    /// partial pivoting.
+    fn rates_with_loads(
+        &self,
+        l: &SolvedLoads,
+        ar: &Arena,
+        value_of: &dyn Fn(SymbolId) -> Option<f64>,
+    ) -> Result<Rates> {
+        let (n, k) = (self.speeds.len(), l.loads.len());
+        let m = matrix(ar, &self.mass_matrix, value_of)?;
+        let ma = matrix(ar, &l.mass_rows, value_of)?;
+        let b = matrix(ar, &l.load_columns, value_of)?;
+        let mut e = DMatrix::zeros(n + k, n + k);
+        e.view_mut((0, 0), (n, n)).copy_from(&m);
+        e.view_mut((n, 0), (k, n)).copy_from(&ma);
+        e.view_mut((0, n), (n + k, k)).copy_from(&-b);
+        let f = values(ar, &self.forcing, value_of)?;
+        let mut rhs = f.clone();
+        rhs.extend(values(ar, &l.forcing, value_of)?);
+        let x = e.lu().solve(&DVector::from_vec(rhs)).ok_or(MechanicsError::SingularMassMatrix)?;
+        Ok(Rates {
+            coordinates: values(ar, &self.kinematics, value_of)?,
+            speeds: x.rows(0, n).iter().copied().collect(),
+            dependent: Vec::new(),
+            mass_matrix: rows_of(&m),
+            forcing: f,
+            loads: x.rows(n, k).iter().copied().collect(),
         })
     }
 }

@@ -7,6 +7,7 @@ mod explicit;
 pub(crate) mod exprs;
 mod hoist;
 mod householder;
+mod inverse;
 mod ldlt;
 mod outputs;
 mod rhs;
@@ -53,14 +54,19 @@ fn mass_matrix(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
         computed.extend(c.dependent.iter().chain(&c.dependent_rates));
         all.extend(c.a_dependent.iter().chain(&c.a_independent).flatten().chain(&c.b).chain(&c.bias));
     }
+    if let Some(l) = &eqs.loads {
+        computed.extend(&l.loads);
+        all.extend(inverse::system_roots(&eqs, l));
+    }
     let rhs_free = spec.model.ar.free_symbols(&all);
     for o in &spec.outputs {
         all.extend(&o.components);
     }
     let params = parameters(spec, &all, &states, &computed)?;
-    let (derive, rhs) = match &eqs.constraints {
-        Some(c) => constrained::lower(&mut spec.model.ar, &eqs, c, &params)?,
-        None => rhs::lower(&mut spec.model.ar, &eqs, &params)?,
+    let (derive, rhs) = match (&eqs.constraints, &eqs.loads) {
+        (Some(c), _) => constrained::lower(&mut spec.model.ar, &eqs, c, &params)?,
+        (None, Some(l)) => inverse::lower(&mut spec.model.ar, &eqs, l, &params)?,
+        (None, None) => rhs::lower(&mut spec.model.ar, &eqs, &params)?,
     };
     let outputs = outputs::lower(spec, &params)?;
     let nq = eqs.coordinates.len();

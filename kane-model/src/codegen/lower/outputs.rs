@@ -10,6 +10,7 @@ use super::super::ir::{Input, OutputCode};
 use super::super::CodegenError;
 use super::constrained;
 use super::exprs::ExprLowering;
+use super::inverse;
 
 /// One [`OutputCode`] per output of `spec`; `params` are the constants the code reads.
 pub fn lower(spec: &mut ModelSpec, params: &[SymbolId]) -> Result<Vec<OutputCode>, CodegenError> {
@@ -35,6 +36,11 @@ pub fn lower(spec: &mut ModelSpec, params: &[SymbolId]) -> Result<Vec<OutputCode
         }
         None => (Vec::new(), Vec::new()),
     };
+    let loads = spec.equations.loads.clone();
+    let load_exprs: Vec<ExprId> = match &loads {
+        Some(l) => l.loads.iter().map(|s| spec.model.ar.symbol_expr(*s)).collect(),
+        None => Vec::new(),
+    };
     let mut out = Vec::with_capacity(spec.outputs.len());
     for k in 0..spec.outputs.len() {
         let components = spec.outputs[k].components.clone();
@@ -47,6 +53,10 @@ pub fn lower(spec: &mut ModelSpec, params: &[SymbolId]) -> Result<Vec<OutputCode
         if let Some(c) = block {
             reads_from
                 .extend(c.a_dependent.iter().chain(&c.a_independent).flatten().chain(&c.b).chain(&c.bias));
+        }
+        let solved = loads.as_ref().filter(|l| l.loads.iter().any(|s| free.contains(s)));
+        if let Some(l) = solved {
+            reads_from.extend(inverse::system_roots(&spec.equations, l));
         }
         let reads = reads(spec, &reads_from, &states)?;
         let ar = &spec.model.ar;
@@ -64,6 +74,9 @@ pub fn lower(spec: &mut ModelSpec, params: &[SymbolId]) -> Result<Vec<OutputCode
             if c.dependent_rates.iter().any(|s| free.contains(s)) {
                 b.bind_rates(&mut lowering, &c.bias, &dependent_rates);
             }
+        }
+        if let Some(l) = solved {
+            inverse::bind_loads(&mut lowering, &spec.equations, l, &load_exprs);
         }
         let values = lowering.lower_all(&components);
         out.push(OutputCode { section: lowering.builder.finish(values), reads, needs_rates });

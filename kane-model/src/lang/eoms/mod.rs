@@ -52,6 +52,10 @@ pub struct PrintedEoms {
     pub dependent: Vec<String>,
     /// The motion constraints `A_d u_d + A_i u_i + b`, each `= 0`.
     pub constraints: Vec<Shown>,
+    /// The loads KANE solves for with the rates (their terms are in `equations`, not `f`).
+    pub loads: Vec<String>,
+    /// The auxiliary speeds, whose equations follow the speeds' in `equations`.
+    pub auxiliary: Vec<String>,
 }
 
 /// A failure to print one quantity, naming it.
@@ -105,6 +109,9 @@ pub fn printed_eoms(m: &mut LoadedModel) -> Result<Option<PrintedEoms>, EomsErro
         }
         equations.push(ar.add(&terms).map_err(named("the equations"))?);
     }
+    if let Some(l) = &e.loads {
+        with_loads(ar, &e, l, &mut equations).map_err(named("the equations"))?;
+    }
     let n = e.forcing.len();
     let mut labelled: Vec<(String, ExprId)> = Vec::new();
     labelled.extend(coordinates.iter().zip(&e.kinematics).map(|(q, k)| (format!("{q}'"), *k)));
@@ -124,10 +131,41 @@ pub fn printed_eoms(m: &mut LoadedModel) -> Result<Option<PrintedEoms>, EomsErro
         kinematics,
         mass_matrix,
         forcing: take(n),
-        equations: take(n),
+        equations: take(equations.len()),
         dependent: e.constraints.iter().flat_map(|c| &c.dependent).map(|s| name(ar, s)).collect(),
         constraints: take(constraints.len()),
+        loads: e.loads.iter().flat_map(|l| &l.loads).map(|s| name(ar, s)).collect(),
+        auxiliary: e.loads.iter().flat_map(|l| &l.auxiliary).map(|s| name(ar, s)).collect(),
     }))
+}
+
+/// The loads' terms `B T` added to the speeds' equations, then the auxiliary speeds'
+/// equations `f_a - M_a u' + B_a T` appended.
+fn with_loads(
+    ar: &mut Arena,
+    e: &crate::mechanics::KaneEquations,
+    l: &crate::mechanics::SolvedLoads,
+    equations: &mut Vec<ExprId>,
+) -> Result<(), ExprError> {
+    let loads: Vec<ExprId> = l.loads.iter().map(|s| ar.symbol_expr(*s)).collect();
+    for (a, f) in l.forcing.iter().enumerate() {
+        let mut terms = vec![*f];
+        for (m, u) in l.mass_rows[a].iter().zip(&e.speed_derivatives) {
+            let u = ar.symbol_expr(*u);
+            let t = ar.mul(&[*m, u])?;
+            terms.push(ar.neg(t)?);
+        }
+        let row = ar.add(&terms)?;
+        equations.push(row);
+    }
+    for (r, row) in equations.iter_mut().enumerate() {
+        let mut terms = vec![*row];
+        for (b, t) in l.load_columns[r].iter().zip(&loads) {
+            terms.push(ar.mul(&[*b, *t])?);
+        }
+        *row = ar.add(&terms)?;
+    }
+    Ok(())
 }
 
 /// Each quantity collected when its expansion stays within [`COLLECT_BUDGET`] terms and, the

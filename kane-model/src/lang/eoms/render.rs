@@ -110,6 +110,15 @@ impl PrintedEoms {
         for (i, x) in t.forcing.iter().enumerate() {
             s.push_str(&format!("f[{}] = {x}\n", i + 1));
         }
+        if !self.loads.is_empty() {
+            s.push_str(&format!(
+                "\n% Loads solved with the speed rates (KANE): {}, from the equations of the auxiliary speeds {}\n% (zero in every motion): ZERO[{}..{}] below; f is with these loads zero, ZERO has their terms\n",
+                self.loads.join(", "),
+                self.auxiliary.join(", "),
+                self.speeds.len() + 1,
+                self.speeds.len() + self.auxiliary.len()
+            ));
+        }
         s.push_str("\n% Equations of motion Fr + Fr* = f - M u' = 0, collected by state monomial");
         s.push_str(if t.intermediates.is_empty() { "\n" } else { " where short\n" });
         for (i, x) in t.equations.iter().enumerate() {

@@ -97,11 +97,12 @@ impl Interpreter {
 
     fn assign_array(&mut self, key: &str, idx: Vec<i64>, v: Value, span: &Span) -> IResult<()> {
         if key == "AUXILIARY" {
-            return Err(Diagnostic::error(
-                span.clone(),
-                "AUXILIARY[] (auxiliary speeds for constraint forces) is not supported",
-            )
-            .with_help("compute constraint forces from the equations of motion outside the model file"));
+            // Autolev lists the auxiliary speeds here; CONSTRAIN(AUXILIARY[...]) declares them.
+            return match v {
+                Value::Scalar(e) if self.model.ar.as_symbol(e).is_some() => Ok(()),
+                _ => Err(Diagnostic::error(span.clone(), "AUXILIARY[i] names one auxiliary speed")
+                    .with_help("write AUXILIARY[1] = U8, then CONSTRAIN(AUXILIARY[U8])")),
+            };
         }
         if key == "DEPENDENT" {
             if let Value::Scalar(e) = v {

@@ -5,7 +5,7 @@
 //! (orientations, loads, constraints, solutions, Kane's equations); a call that is no command is
 //! evaluated as a function and its value dropped.
 
-use crate::expr::ExprId;
+use crate::expr::{ExprId, SymbolKind};
 use crate::mechanics::{FrameId, Orientation, PointId, Vector};
 
 use super::super::ast::{BinOp, Expr, ExprKind};
@@ -58,13 +58,7 @@ impl Interpreter {
             // UNITSYSTEM and ENCODE choose how Autolev prints; results are unchanged.
             "UNITSYSTEM" | "ENCODE" => Ok(()),
             "KANE" => {
-                if let Some(a) = args.first() {
-                    return Err(Diagnostic::error(
-                        a.span.clone(),
-                        "KANE with arguments (specified quantities solved for: mixed forward and inverse dynamics) is not supported",
-                    )
-                    .with_help("call KANE() for the forward dynamics, and compute the inputs that give a motion outside the model file"));
-                }
+                self.solved_loads(args, &e.span)?;
                 self.form_kane(&e.span)
             }
             "EXPAND" | "FACTOR" | "ARRANGE" | "EXPLICIT" => self.rewrite_in_place(name, args, e),
@@ -76,6 +70,36 @@ impl Interpreter {
                 other => other.map(|_| ()),
             },
         }
+    }
+
+    /// `KANE(T1, ...)`: the loads solved for with the speed rates, one per auxiliary speed;
+    /// each a time-dependent quantity the forces and torques contain, with no formula.
+    fn solved_loads(&mut self, args: &[Expr], span: &Span) -> IResult<()> {
+        let mut loads = Vec::with_capacity(args.len());
+        for a in args {
+            let x = self.scalar(a)?;
+            let time_dependent = self.model.ar.as_symbol(x).is_some_and(|s| {
+                matches!(
+                    self.model.ar.symbol_info(s).kind,
+                    SymbolKind::Variable { order: 0 } | SymbolKind::Specified { order: 0 }
+                )
+            });
+            if !time_dependent {
+                return Err(Diagnostic::error(a.span.clone(), "KANE solves for time-dependent quantities (VARIABLES or SPECIFIED) by name")
+                    .with_help("declare the load, for example VARIABLES T1, use it in TORQUE or FORCE, and name it in KANE(T1)"));
+            }
+            loads.push(x);
+        }
+        if loads.len() != self.auxiliary_speeds.len() {
+            let span = args.first().map_or_else(|| span.clone(), |a| a.span.clone());
+            return Err(Diagnostic::error(
+                span,
+                format!("KANE names {} loads but CONSTRAIN(AUXILIARY[...]) declared {} auxiliary speeds", loads.len(), self.auxiliary_speeds.len()),
+            )
+            .with_help("each auxiliary speed's equation determines one load: name as many in KANE(...) as there are auxiliary speeds"));
+        }
+        self.model.set_solved_loads(&loads).at(span)?;
+        Ok(())
     }
 
     /// Kane's equations of the model as it stands (KANE()), their mass matrix left unformed
@@ -191,24 +215,32 @@ impl Interpreter {
         Ok(())
     }
 
-    /// `CONSTRAIN(DEPENDENT[u1, ...])`: the speeds the DEPENDENT constraints are solved for.
+    /// `CONSTRAIN(DEPENDENT[u1, ...])`: the speeds the DEPENDENT constraints are solved for;
+    /// `CONSTRAIN(AUXILIARY[u1, ...])`: auxiliary speeds (either or both, in any order).
     fn constrain(&mut self, args: &[Expr], e: &Expr) -> IResult<()> {
-        super::arity("CONSTRAIN", args, 1, &e.span)?;
-        let ExprKind::Index { name, args: speeds } = &args[0].kind else {
-            return Err(Diagnostic::error(args[0].span.clone(), "CONSTRAIN takes DEPENDENT[u1, ...]"));
-        };
-        if !name.eq_ignore_ascii_case("DEPENDENT") {
+        if args.is_empty() || args.len() > 2 {
             return Err(Diagnostic::error(
-                args[0].span.clone(),
-                format!("CONSTRAIN({name}[...]) is not supported"),
-            )
-            .with_help("write the constraints as DEPENDENT[i] = ... and call CONSTRAIN(DEPENDENT[u...])"));
+                e.span.clone(),
+                "CONSTRAIN takes DEPENDENT[u1, ...] and/or AUXILIARY[u1, ...]",
+            ));
         }
-        let mut dep = Vec::new();
-        for s in speeds {
-            dep.push(self.scalar(s)?);
+        for arg in args {
+            let ExprKind::Index { name, args: speeds } = &arg.kind else {
+                return Err(Diagnostic::error(
+                    arg.span.clone(),
+                    "CONSTRAIN takes DEPENDENT[u1, ...] or AUXILIARY[u1, ...]",
+                ));
+            };
+            let list = speeds.iter().map(|s| self.scalar(s)).collect::<IResult<Vec<_>>>()?;
+            match name.to_ascii_uppercase().as_str() {
+                "DEPENDENT" => self.dependent_speeds = list,
+                "AUXILIARY" => self.auxiliary_speeds = list,
+                _ => {
+                    return Err(Diagnostic::error(arg.span.clone(), format!("CONSTRAIN({name}[...]) is not supported"))
+                        .with_help("write the constraints as DEPENDENT[i] = ... and call CONSTRAIN(DEPENDENT[u...]), or name auxiliary speeds with CONSTRAIN(AUXILIARY[u...])"));
+                }
+            }
         }
-        self.dependent_speeds = dep;
         self.prepared = false;
         Ok(())
     }

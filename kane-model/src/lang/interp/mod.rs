@@ -160,6 +160,8 @@ pub(crate) struct Interpreter {
     pub(crate) kinematic: Vec<(SymbolId, ExprId)>,
     pub(crate) dependent: Vec<ExprId>,
     pub(crate) dependent_speeds: Vec<ExprId>,
+    /// The auxiliary speeds CONSTRAIN(AUXILIARY[...]) named.
+    pub(crate) auxiliary_speeds: Vec<ExprId>,
     pub(crate) prepared: bool,
     pub(crate) equations: Option<KaneEquations>,
     pub(crate) inputs: Vec<InputValue>,
@@ -237,6 +239,7 @@ impl Interpreter {
             kinematic: Vec::new(),
             dependent: Vec::new(),
             dependent_speeds: Vec::new(),
+            auxiliary_speeds: Vec::new(),
             prepared: false,
             equations: None,
             inputs: Vec::new(),
@@ -282,8 +285,15 @@ impl Interpreter {
     /// Puts the formulas given to SPECIFIED quantities into the equations (after the file ran).
     pub(crate) fn put_specified_formulas(&mut self) {
         let Some(eqs) = self.equations.as_mut() else { return };
-        let put = specified::specified_formulas(&mut self.model, &self.bindings)
-            .and_then(|map| eqs.substitute(&mut self.model.ar, &map));
+        let solved: Vec<_> = eqs.loads.iter().flat_map(|l| l.loads.clone()).collect();
+        let put = specified::specified_formulas(&mut self.model, &self.bindings).and_then(|map| {
+            let given = solved.iter().find(|s| map.contains_key(&self.model.ar.symbol_expr(**s)));
+            if let Some(s) = given {
+                let name = self.model.ar.symbol_info(*s).name.clone();
+                return Err(crate::mechanics::MechanicsError::LoadHasFormula(name));
+            }
+            eqs.substitute(&mut self.model.ar, &map)
+        });
         if let Err(e) = put {
             self.errors.push(Diagnostic::error(
                 0..0,

@@ -17,6 +17,10 @@ impl Interpreter {
         }
         self.apply_loads(span)?;
         self.choose_state(span)?;
+        if !self.auxiliary_speeds.is_empty() {
+            let aux = self.auxiliary_speeds.clone();
+            self.model.set_auxiliary_speeds(&aux).at(span)?;
+        }
         if !self.dependent.is_empty() || !self.dependent_speeds.is_empty() {
             let (c, d) = (self.dependent.clone(), self.dependent_speeds.clone());
             self.model.set_motion_constraints(&c, &d).at(span)?;

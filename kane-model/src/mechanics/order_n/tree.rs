@@ -68,7 +68,9 @@ pub(crate) fn frames_of(model: &Model, eqs: &KaneEquations) -> Option<Vec<Link>>
 
 fn frames(model: &Model, eqs: &KaneEquations) -> Option<(Vec<Link>, FxHashMap<FrameId, usize>)> {
     let n = eqs.speeds.len();
-    let constrained = model.constraints.is_some() || !model.configuration_constraints.is_empty();
+    let constrained = model.constraints.is_some()
+        || !model.configuration_constraints.is_empty()
+        || !model.auxiliary.speeds.is_empty();
     if constrained || eqs.constraints.is_some() || eqs.coordinates.len() != n || n == 0 {
         return None;
     }
