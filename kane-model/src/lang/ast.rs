@@ -169,12 +169,15 @@ pub enum StmtKind {
     },
     /// `MASS B = M1, C = M2`.
     Mass(Vec<(String, Span, Expr)>),
-    /// `INERTIA B, I11, I22, I33 [, I12, I23, I31]`.
+    /// `INERTIA B, I11, I22, I33 [, I12, I23, I31]`, `INERTIA B(A), ...` (measure numbers in
+    /// frame A) or `INERTIA B_P(A), ...` (the inertia about point P).
     Inertia {
-        /// Body name.
+        /// Body name (`B`, or `B_P`).
         body: String,
         /// Its span.
         body_span: Span,
+        /// The frame named in parentheses, with its span.
+        frame: Option<(String, Span)>,
         /// The moments.
         args: Vec<Expr>,
     },

@@ -317,23 +317,23 @@ impl<'a> Parser<'a> {
         Ok(StmtKind::Mass(out))
     }
 
-    /// `INERTIA B, I11, I22, I33[, I12, I23, I31]`.
+    /// `INERTIA B, I11, I22, I33[, I12, I23, I31]`, with an optional frame in parentheses after
+    /// the body (`INERTIA B(A), ...`; `B_P(A)` for the inertia about a point P).
     fn inertia_stmt(&mut self) -> PResult<StmtKind> {
         self.pos += 1;
         let (body, _, body_span) = self.name()?;
-        // INERTIA B(frame), ...: an optional frame or point in parentheses is not supported.
-        if self.is_punct('(') {
-            return Err(Diagnostic::error(
-                self.span_here(),
-                "INERTIA with a point or frame in parentheses is not supported",
-            )
-            .with_help("give the central moments in the body's own frame: INERTIA B, I11, I22, I33"));
-        }
+        let frame = if self.eat('(') {
+            let (f, _, span) = self.name()?;
+            self.expect(')', "after the frame named in INERTIA's parentheses")?;
+            Some((f, span))
+        } else {
+            None
+        };
         let mut args = Vec::new();
         while self.eat(',') {
             args.push(self.expr()?);
         }
-        Ok(StmtKind::Inertia { body, body_span, args })
+        Ok(StmtKind::Inertia { body, body_span, frame, args })
     }
 
     /// `UNITS NAME = unit, ...`.
@@ -729,6 +729,16 @@ mod tests {
         assert_eq!(items[0].unit.as_deref(), Some("DEG"));
         let StmtKind::Code { kind, file, .. } = &stmts[8].kind else { panic!() };
         assert_eq!((kind.as_str(), file.as_str()), ("DYNAMICS", "phase3.m, SUBS"));
+    }
+
+    #[test]
+    fn inertia_takes_a_frame_in_parentheses_after_the_body() {
+        let (stmts, errors) = parse("INERTIA B_O(A), I1, I2, I3\nINERTIA C, 1, 2, 3\nINERTIA D(, 1, 2, 3\n");
+        assert_eq!((stmts.len(), errors.len()), (2, 1), "{errors:?}");
+        let StmtKind::Inertia { body, frame, args, .. } = &stmts[0].kind else { panic!() };
+        assert_eq!((body.as_str(), frame.as_ref().map(|f| f.0.as_str()), args.len()), ("B_O", Some("A"), 3));
+        let StmtKind::Inertia { frame: None, .. } = &stmts[1].kind else { panic!("no frame") };
+        assert!(errors[0].message.contains("expected a name"), "{}", errors[0].message);
     }
 
     #[test]

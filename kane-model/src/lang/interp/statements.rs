@@ -24,7 +24,9 @@ impl Interpreter {
                 Ok(())
             }
             StmtKind::Mass(items) => self.mass_statement(items),
-            StmtKind::Inertia { body, body_span, args } => self.inertia(body, body_span, args),
+            StmtKind::Inertia { body, body_span, frame, args } => {
+                self.inertia(body, body_span, frame.as_ref(), args)
+            }
             StmtKind::Setting { name, on } => self.setting(name, *on, &s.span),
             StmtKind::Units(items) => {
                 for (name, _, e) in items {
