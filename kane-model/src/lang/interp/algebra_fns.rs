@@ -1,5 +1,6 @@
 //! Autolev's algebra on matrices and series: INV (a symbolic inverse by cofactors), EIG (the
-//! eigenvalues of a matrix of numbers) and TAYLOR (a truncated series about a point).
+//! eigenvalues and eigenvectors of a matrix of numbers, in `eigen`) and TAYLOR (a truncated
+//! series about a point).
 //!
 //! In: the upper-cased function name and its argument expressions. Out: a matrix or scalar
 //! [`Value`], or a diagnostic that says why the call has no answer here.
@@ -21,13 +22,13 @@ impl Interpreter {
     pub(super) fn algebra_function(&mut self, upper: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
         match upper {
             "INV" => self.inverse(args, e),
-            "EIG" => self.eigenvalues(args, e),
+            "EIG" => self.eigen(args, e),
             _ => self.taylor(args, e),
         }
     }
 
     /// A square matrix argument as rows.
-    fn square_rows(
+    pub(super) fn square_rows(
         &mut self,
         name: &str,
         args: &[Expr],
@@ -72,40 +73,6 @@ impl Interpreter {
             }
         }
         Ok(Value::Matrix { rows: n, cols: n, data })
-    }
-
-    /// `EIG(M)` of a matrix of numbers: its eigenvalues, ascending, when they are all real.
-    fn eigenvalues(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
-        if args.len() > 1 {
-            return Err(Diagnostic::error(
-                e.span.clone(),
-                "EIG with output names (EIG(M, VALUES, VECTORS)) is not supported",
-            )
-            .with_help("write VALUES = EIG(M) for the eigenvalues"));
-        }
-        let rows = self.square_rows("EIG", args, e, usize::MAX)?;
-        let n = rows.len();
-        let mut m = nalgebra::DMatrix::zeros(n, n);
-        for (i, row) in rows.iter().enumerate() {
-            for (j, x) in row.iter().enumerate() {
-                m[(i, j)] = self.model.ar.as_number(*x).map(|v| v.to_f64()).ok_or_else(|| {
-                    Diagnostic::error(args[0].span.clone(), "EIG needs a matrix of numbers; this one has symbols")
-                        .with_help("evaluate it first (EVALUATE(M, X = value, ...)); for the equations' eigenvalues use `kane linearize`")
-                })?;
-            }
-        }
-        let values = m.complex_eigenvalues();
-        let scale = values.iter().map(|z| z.norm()).fold(1.0, f64::max);
-        if let Some(z) = values.iter().find(|z| z.im.abs() > 1e-12 * scale) {
-            return Err(Diagnostic::error(
-                e.span.clone(),
-                format!("EIG: the matrix has complex eigenvalues ({} {:+}i and more), which values here cannot hold", z.re, z.im),
-            ));
-        }
-        let mut real: Vec<f64> = values.iter().map(|z| z.re).collect();
-        real.sort_by(f64::total_cmp);
-        let data = real.into_iter().map(|x| self.model.ar.float(x)).collect::<Result<_, _>>().at(&e.span)?;
-        Ok(Value::Matrix { rows: n, cols: 1, data })
     }
 
     /// `TAYLOR(F, lo:hi, X = a, Y = b, ...)`: the terms of total order `lo` to `hi` of `F`'s

@@ -4,7 +4,8 @@
 //! In: a call `NAME(args)` as parsed. Out: its [`Value`], or a diagnostic for a function that
 //! is unknown or not supported. The families are `scalar_fns` (elementary functions,
 //! substitution, coefficients), `vector_fns` (vector algebra and derivatives), `mass_fns`
-//! (generalized forces and mass properties) and `matrix_fns` (matrices).
+//! (generalized forces and mass properties), `matrix_fns` (matrices), `algebra_fns` and `eigen`
+//! (INV, EIG, TAYLOR) and `polynomial` (POLYNOMIAL, ROOTS).
 
 use crate::expr::ExprId;
 use crate::mechanics::{FrameId, Model, PointId};
@@ -17,13 +18,8 @@ use super::value::Value;
 use super::{At, IResult, Interpreter};
 
 /// Functions known to Autolev that this implementation rejects, with the reason.
-const UNSUPPORTED: &[(&str, &str)] = &[
-    ("POLYNOMIAL", "polynomial construction"),
-    ("ROOTS", "polynomial roots"),
-    ("INCLUDE", "term selection"),
-    ("EXCLUDE", "term selection"),
-    ("NICHECK", "Newtonian-inertia check"),
-];
+const UNSUPPORTED: &[(&str, &str)] =
+    &[("INCLUDE", "term selection"), ("EXCLUDE", "term selection"), ("NICHECK", "Newtonian-inertia check")];
 
 impl Interpreter {
     /// Evaluates `NAME(args)`.
@@ -38,6 +34,7 @@ impl Interpreter {
             }
             "ATAN2" => self.atan2_function(args, e),
             "INV" | "EIG" | "TAYLOR" => self.algebra_function(&upper, args, e),
+            "POLYNOMIAL" | "ROOTS" => self.polynomial_function(&upper, args, e),
             "INT" | "FLOOR" | "CEIL" | "ROUND" | "FACTORIAL" => self.whole_number_function(&upper, args, e),
             "EVALUATE" | "REPLACE" | "EXPLICIT" | "FACTOR" | "ARRANGE" | "EXPAND" | "COEF" | "RHS" => {
                 self.scalar_function(&upper, args, e)
@@ -192,8 +189,10 @@ pub(crate) const KNOWN_CALLS: &[&str] = &[
     "MATRIX",
     "MOMENTUM",
     "PARTIALS",
+    "POLYNOMIAL",
     "REPLACE",
     "RHS",
+    "ROOTS",
     "ROWS",
     "SIMPROT",
     "SIN",
