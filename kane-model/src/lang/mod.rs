@@ -12,6 +12,7 @@
 //! assert_eq!(eqs.speeds.len(), 1);
 //! ```
 
+pub mod algebraic;
 mod ast;
 mod check;
 mod compare;

@@ -26,15 +26,22 @@ pub fn bookkeeping_summary(model: &LoadedModel, source: &str) -> Option<String> 
         parts
             .push(format!("ignored (they change only Autolev's own printing, saving or pausing): {ignored}"));
     }
-    let code: Vec<String> = model
-        .code
-        .iter()
-        .map(|c| format!("CODE {} (line {}) {}", c.kind, line_column(source, c.span.start).0, c.file))
-        .collect();
-    if !code.is_empty() {
+    let code = |solved: bool| -> Vec<String> {
+        model
+            .code
+            .iter()
+            .filter(|c| c.system.is_some() == solved)
+            .map(|c| format!("CODE {} (line {}) {}", c.kind, line_column(source, c.span.start).0, c.file))
+            .collect()
+    };
+    let (solved, other) = (code(true), code(false));
+    if !solved.is_empty() {
+        parts.push(format!("solved numerically by `kane solve` (no file written): {}", solved.join(", ")));
+    }
+    if !other.is_empty() {
         parts.push(format!(
-            "not written (`kane gen` writes the equations of motion as Rust; no code is written for algebraic or nonlinear equations): {}",
-            code.join(", ")
+            "not written (`kane gen` writes the equations of motion as Rust): {}",
+            other.join(", ")
         ));
     }
     (!parts.is_empty()).then(|| parts.join("; "))
@@ -57,8 +64,7 @@ mod tests {
         let with_code = crate::lang::load("c.al", code).unwrap();
         assert_eq!(
             bookkeeping_summary(&with_code, code).unwrap(),
-            "not written (`kane gen` writes the equations of motion as Rust; no code is written for \
-             algebraic or nonlinear equations): CODE ALGEBRAIC (line 3) a.c"
+            "solved numerically by `kane solve` (no file written): CODE ALGEBRAIC (line 3) a.c"
         );
         let plain = crate::lang::load("p.al", "CONSTANTS M\n").unwrap();
         assert_eq!(bookkeeping_summary(&plain, "CONSTANTS M\n"), None);

@@ -285,7 +285,7 @@ impl Interpreter {
     }
 
     /// The equations under a name: an array EQN[1], EQN[2], ... or a column such as ZERO.
-    fn equations_named(&self, key: &str) -> Vec<ExprId> {
+    pub(crate) fn equations_named(&self, key: &str) -> Vec<ExprId> {
         match self.lookup_value(key) {
             Some(Value::Matrix { data, .. }) => data,
             Some(Value::Scalar(x)) => vec![x],

@@ -11,6 +11,7 @@
 mod algebra_fns;
 mod assign;
 mod cascade;
+mod code_request;
 mod commands;
 mod deferral;
 mod eigen;
@@ -92,6 +93,8 @@ pub struct CodeRequest {
     pub file: String,
     /// Where the request is.
     pub span: Span,
+    /// For ALGEBRAIC and NONLINEAR: the equations as they stood there and the unknowns.
+    pub system: Option<super::algebraic::AlgebraicSystem>,
 }
 
 /// The result of running a model file.

@@ -53,13 +53,22 @@ impl Interpreter {
                 }
                 Ok(())
             }
-            StmtKind::Code { kind, args: _, file } => {
+            StmtKind::Code { kind, args, file } => {
                 // CODE DYNAMICS() takes no arguments; ALGEBRAIC/NONLINEAR name equations.
                 if kind == "DYNAMICS" && self.equations.is_none() {
                     return Err(Diagnostic::error(s.span.clone(), "CODE DYNAMICS() needs Kane's equations")
                         .with_help("call KANE() (after ZERO = FR() + FRSTAR()) before CODE DYNAMICS()"));
                 }
-                self.code.push(CodeRequest { kind: kind.clone(), file: file.clone(), span: s.span.clone() });
+                let system = match kind.as_str() {
+                    "ALGEBRAIC" | "NONLINEAR" => Some(self.algebraic_system(kind, args, &s.span)?),
+                    _ => None,
+                };
+                self.code.push(CodeRequest {
+                    kind: kind.clone(),
+                    file: file.clone(),
+                    span: s.span.clone(),
+                    system,
+                });
                 Ok(())
             }
             StmtKind::Assign { target, op, value } => self.assign(target, *op, value),

@@ -1,5 +1,7 @@
 //! The `kane` command: check model files, print, evaluate and compare their equations.
 
+mod solve;
+
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -47,6 +49,18 @@ enum Command {
         #[arg(long = "set", value_name = "NAME=VALUE")]
         set: Vec<String>,
         /// Print one JSON object.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Solve the equations the file's CODE ALGEBRAIC and CODE NONLINEAR name, at its INPUT
+    /// values (starting values of a nonlinear system's unknowns from INPUT too).
+    Solve {
+        /// The model file.
+        file: PathBuf,
+        /// NAME=VALUE (case-insensitive), repeated.
+        #[arg(long = "set", value_name = "NAME=VALUE")]
+        set: Vec<String>,
+        /// Print one JSON object: {"systems": [{"unknowns", "values", ...}]}.
         #[arg(long)]
         json: bool,
     },
@@ -156,6 +170,7 @@ fn run(command: Command) -> Result<(), String> {
         Command::Check { file } => check(file),
         Command::Eoms { file, format, partials } => eoms(file, format, partials),
         Command::Eval { file, set, json } => eval(file, set, json),
+        Command::Solve { file, set, json } => solve::solve(file, set, json),
         Command::Linearize { file, set, input, json } => linearize(file, set, input, json),
         Command::Gen { file, out, stats, taylor, taylor_orders, lanes } => {
             gen(file, out, stats, CodeOptions { taylor, taylor_orders, lanes })
