@@ -26,6 +26,7 @@ pub mod rows;
 pub mod run;
 pub mod scene;
 pub mod solve;
+pub mod specified_table;
 pub mod sweep;
 pub mod trajectory;
 pub mod unit_norm;

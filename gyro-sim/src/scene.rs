@@ -10,6 +10,8 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 use toml::Spanned;
 
+use crate::specified_table::Table;
+
 /// A scene, validated.
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -148,7 +150,7 @@ struct SceneFile {
     integrator: Option<IntegratorFile>,
     parameters: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
     initial: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
-    specified: Option<BTreeMap<Spanned<String>, Spanned<String>>>,
+    specified: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
     axle: Option<Spanned<AxleFile>>,
     view: Option<crate::output::ViewSpec>,
     events: Option<Vec<crate::events::scene::EventFile>>,
@@ -315,25 +317,41 @@ impl Text<'_> {
         Ok(out)
     }
 
-    /// `[specified]`: each name (a SPECIFIED quantity of the model file) with its formula.
+    /// `[specified]`: each name (a SPECIFIED quantity of the model file) with its formula, or
+    /// a table of its values in time (a spline through them, covering the run).
     fn formulas(
         &self,
-        table: Option<BTreeMap<Spanned<String>, Spanned<String>>>,
+        table: Option<BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
+        t_final: f64,
     ) -> Result<Vec<(String, String, Span)>, SceneError> {
         let mut out = Vec::new();
         for (k, v) in table.unwrap_or_default() {
             let name = k.get_ref();
             let simple = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
                 && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
-            let formula = v.get_ref();
-            if !simple || formula.contains(['\n', '\r', '%', ';']) || formula.trim().is_empty() {
-                return Err(self.err(
-                    v.span(),
-                    format!("[specified] {name}: a name and a one-line formula are needed"),
-                    "write NAME = \"formula of t, states and parameters\", e.g. T = \"-K*Q1 - C*U1\"",
-                ));
-            }
-            out.push((name.clone(), formula.clone(), v.span()));
+            let help = "write NAME = \"formula of t, states and parameters\" (T = \"-K*Q1 - C*U1\"), or a table: NAME = { table = \"file.csv\" } (columns t and NAME) or NAME = { t = [...], values = [...] }";
+            let formula = match v.get_ref() {
+                toml::Value::String(f)
+                    if simple && !f.contains(['\n', '\r', '%', ';']) && !f.trim().is_empty() =>
+                {
+                    f.clone()
+                }
+                toml::Value::Table(t) if simple => {
+                    let folder = Path::new(self.file).parent().unwrap_or(Path::new("."));
+                    let table = Table::from_toml(name, t, folder)
+                        .and_then(|table| table.covers(t_final).map(|()| table))
+                        .map_err(|e| self.err(v.span(), format!("[specified] {name}: {e}"), help))?;
+                    table.spline_formula()
+                }
+                _ => {
+                    return Err(self.err(
+                        v.span(),
+                        format!("[specified] {name}: a name and a one-line formula or a table are needed"),
+                        help,
+                    ))
+                }
+            };
+            out.push((name.clone(), formula, v.span()));
         }
         Ok(out)
     }
@@ -544,7 +562,7 @@ impl Scene {
             model: model.into_inner(),
             parameters: text.values(raw.parameters)?,
             initial: text.values(raw.initial)?,
-            specified: text.formulas(raw.specified)?,
+            specified: text.formulas(raw.specified, t_final)?,
             axle: text.axle(raw.axle)?,
             view_span: view_span(source),
             view: raw.view,

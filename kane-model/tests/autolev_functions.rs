@@ -193,3 +193,28 @@ fn cross_with_a_dyadic_and_an_orientation_tree_not_rooted_at_n() {
     assert_eq!(text("XL"), "1");
     assert_eq!(text("XR"), "-1");
 }
+
+#[test]
+fn spline_through_a_cubic_is_the_cubic_with_its_derivatives() {
+    // f(x) = x^3 - 2 x^2 + 0.5 x - 1 sampled at unevenly spaced points.
+    let f = |x: f64| [x * x * x - 2.0 * x * x + 0.5 * x - 1.0, 3.0 * x * x - 4.0 * x + 0.5, 6.0 * x - 4.0];
+    let knots = [0.0, 0.3, 0.35, 1.0, 1.7, 2.0];
+    let values: Vec<String> = knots.iter().map(|x| format!("{:?}", f(*x)[0])).collect();
+    let list: Vec<String> = knots.iter().map(|x| format!("{x:?}")).collect();
+    for x in [0.0, 0.31, 1.0, 1.23, 2.0] {
+        let src = format!(
+            "VARIABLES X\nY = SPLINE(X, [{}], [{}])\nDY = D(Y, X)\nDDY = D(DY, X)\n\
+             V = EVALUATE(Y, X = {x})\nDV = EVALUATE(DY, X = {x})\nDDV = EVALUATE(DDY, X = {x})\n",
+            list.join(", "),
+            values.join(", ")
+        );
+        let m = lang::load("s.al", &src).unwrap();
+        for (name, want) in ["V", "DV", "DDV"].iter().zip(f(x)) {
+            let got = number(&m, name);
+            assert!((got - want).abs() < 1e-12, "{name} at {x}: {got} vs {want}");
+        }
+    }
+    let e =
+        lang::load("s.al", "VARIABLES X\nY = SPLINE(X, [0, 1, 1], [0, 1, 2])\n").err().unwrap().to_string();
+    assert!(e.contains("SPLINE's points must increase: point 3 (1) follows 1"), "{e}");
+}

@@ -35,6 +35,7 @@ impl Interpreter {
             "ATAN2" => self.atan2_function(args, e),
             "INV" | "EIG" | "TAYLOR" => self.algebra_function(&upper, args, e),
             "POLYNOMIAL" | "ROOTS" => self.polynomial_function(&upper, args, e),
+            "SPLINE" => self.spline(args, e),
             "INT" | "FLOOR" | "CEIL" | "ROUND" | "FACTORIAL" => self.whole_number_function(&upper, args, e),
             "EVALUATE" | "REPLACE" | "EXPLICIT" | "FACTOR" | "ARRANGE" | "EXPAND" | "COEF" | "RHS" => {
                 self.scalar_function(&upper, args, e)

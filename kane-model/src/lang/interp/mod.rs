@@ -29,6 +29,7 @@ mod prepare;
 mod scalar_fns;
 mod sources;
 mod specified;
+mod spline;
 pub(crate) use specified::specified_formulas;
 mod statements;
 pub mod value;
