@@ -14,6 +14,8 @@ const DISC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/rolling_disc
 const BICYCLE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/whipple_bicycle.al");
 const FOUR_BAR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/four_bar.al");
 const PRESCRIBED: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/tests/data/prescribed_elbow.al");
+const DISC_CONTACT: &str =
+    concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/tests/data/rolling_disc_contact.al");
 const STALLING: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/stalling_slider.al");
 
 /// A fresh folder for one test.
@@ -205,6 +207,24 @@ fn the_torque_solved_for_a_prescribed_elbow_puts_in_the_energy_the_pendulum_gain
     let gained = rows[n][4] - rows[0][4];
     assert!(gained.abs() > 0.5, "the torque does work: {gained}");
     assert!((gained - work).abs() < 1e-6, "energy gained {gained} vs work {work}");
+}
+
+#[test]
+fn the_rolling_disc_s_contact_force_is_what_newton_s_second_law_asks() {
+    let dir = folder("disc_contact");
+    let out = dir.join("out");
+    let run = gyro_sim(
+        &["--model", DISC_CONTACT, "--engine", "instant", "--t-final", "3", "--out", out.to_str().unwrap()],
+        &dir,
+    );
+    assert!(run.status.success(), "{}", text(&run));
+    // Columns: t, Q2, FC1..3, then m a - m g of the mass centre (from the rates), NEWTON1..3.
+    for r in rows(&out) {
+        for i in 0..3 {
+            assert!((r[2 + i] - r[5 + i]).abs() < 1e-12 * r[5 + i].abs().max(1.0), "at t = {}: {r:?}", r[0]);
+        }
+        assert!(r[4] > 0.0, "the plane pushes up: {r:?}");
+    }
 }
 
 #[test]

@@ -7,6 +7,8 @@ use common::kane;
 
 const PRESCRIBED: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/prescribed_elbow.al");
 const FREE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/free_elbow.al");
+const DISC: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/rolling_disc.al");
+const DISC_CONTACT: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/rolling_disc_contact.al");
 
 /// `kane eval FILE --json --set ...` parsed.
 fn eval(file: &str, sets: &[String]) -> serde_json::Value {
@@ -43,6 +45,23 @@ fn the_solved_torque_drives_the_free_pendulum_along_the_prescribed_motion() {
             (elbow - ea2).abs() < 1e-12 * ea2.abs().max(1.0),
             "the elbow's acceleration {elbow} vs {ea2}"
         );
+    }
+}
+
+#[test]
+fn contact_forces_brought_into_evidence_leave_the_rolling_disc_s_motion_as_it_was() {
+    for (q2, u2, u3) in [(0.2, 0.1, 4.0), (0.0, 0.0, 3.0), (-0.7, 1.5, -2.0)] {
+        let sets = [format!("Q2={q2}"), format!("U2={u2}"), format!("U3={u3}")];
+        let (plain, contact) = (eval(DISC, &sets), eval(DISC_CONTACT, &sets));
+        assert_eq!(contact["loads"], serde_json::json!(["FC1", "FC2", "FC3"]));
+        for i in 0..3 {
+            let (a, b) = (number(&plain, "udot", i), number(&contact, "udot", i));
+            assert!((a - b).abs() < 1e-13 * a.abs().max(1.0), "U{}': {a} vs {b}", i + 1);
+        }
+        for i in 0..2 {
+            assert_eq!(number(&plain, "dependent_values", i), number(&contact, "dependent_values", i));
+        }
+        assert!(number(&contact, "load_values", 2).is_finite());
     }
 }
 

@@ -7,7 +7,8 @@
 //! zero. The unknown loads `T` (a joint torque that makes a prescribed motion happen, a contact
 //! force) enter `f` linearly: `f = f0 + B T`. The speed rows and the auxiliary rows together,
 //! `M u' - B T = f0`, are as many equations as there are rates and loads, solved numerically at
-//! each evaluation.
+//! each evaluation. With motion constraints, `u' = C u_i' + g` and the speed rows are reduced
+//! by `C^T` as without loads.
 
 use rustc_hash::FxHashMap;
 
@@ -24,11 +25,12 @@ pub struct SolvedLoads {
     pub loads: Vec<SymbolId>,
     /// The auxiliary speeds (zero in every motion).
     pub auxiliary: Vec<SymbolId>,
-    /// The auxiliary rows of `M`, a column per speed.
+    /// The auxiliary rows of `M`, a column per speed (independent then dependent).
     pub mass_rows: Vec<Vec<ExprId>>,
     /// The auxiliary rows of `f` with the loads zero.
     pub forcing: Vec<ExprId>,
-    /// `B = df/dT`, the speed rows then the auxiliary rows, a column per load.
+    /// `B = df/dT`, the speed rows (independent then dependent) then the auxiliary rows, a
+    /// column per load.
     pub load_columns: Vec<Vec<ExprId>>,
 }
 
@@ -86,9 +88,6 @@ impl Model {
         }
         if aux.len() != loads.len() {
             return Err(MechanicsError::AuxiliaryCount { auxiliary: aux.len(), loads: loads.len() });
-        }
-        if self.constraints.is_some() {
-            return Err(MechanicsError::AuxiliaryWithConstraints);
         }
         let zero = self.auxiliary_zero_map()?;
         let n = eqs.mass_matrix.len() - aux.len();

@@ -30,6 +30,9 @@ impl Model {
         self.constraints = None;
         let qdot = self.dependent_map();
         let residuals = self.ar.subs_many(constraints, &qdot)?;
+        // Auxiliary speeds are zero in every motion the constraints restrict.
+        let auxiliary = self.auxiliary_zero_map()?;
+        let residuals = self.ar.subs_many(&residuals, &auxiliary)?;
         let independent: Vec<SymbolId> = self.speeds.iter().copied().filter(|s| !dep.contains(s)).collect();
         let (mut a_dependent, mut a_independent, mut b) = (Vec::new(), Vec::new(), Vec::new());
         for &r in &residuals {
@@ -150,6 +153,8 @@ impl Model {
     /// per independent speed. Symbolic, for FR() and FRSTAR(); evaluation never goes this way.
     pub(crate) fn constrain_symbolically(&mut self, y: &[ExprId]) -> Result<Vec<ExprId>> {
         let Some(c) = self.constraints.clone() else { return Ok(y.to_vec()) };
+        // The auxiliary speeds' entries come last and stay as they are.
+        let (y, auxiliary) = y.split_at(y.len() - self.auxiliary.speeds.len());
         let ni = y.len() - c.dependent.len();
         let (yi, yd) = y.split_at(ni);
         // x_r = y_r - sum_k (A_i)_kr z_k with A_d^T z = y_d, z = adj(A_d)^T y_d / det A_d.
@@ -165,6 +170,7 @@ impl Model {
             }
             x.push(self.ar.add(&terms)?);
         }
+        x.extend(auxiliary);
         Ok(x)
     }
 }

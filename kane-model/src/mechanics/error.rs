@@ -123,9 +123,6 @@ pub enum MechanicsError {
         /// Loads named in KANE.
         loads: usize,
     },
-    /// Auxiliary speeds together with motion constraints.
-    #[error("auxiliary speeds together with motion constraints (DEPENDENT) are not supported")]
-    AuxiliaryWithConstraints,
     /// A load KANE solves for also has a formula.
     #[error("{0} is solved for by KANE({0}, ...) and also given a formula: remove one of them")]
     LoadHasFormula(String),

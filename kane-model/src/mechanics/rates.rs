@@ -8,7 +8,6 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::expr::{Arena, ExprError, ExprId, SymbolId};
 
-use super::auxiliary::SolvedLoads;
 use super::error::{MechanicsError, Result};
 use super::kane::KaneEquations;
 
@@ -40,27 +39,13 @@ impl KaneEquations {
     /// `q'`, `u'` and the dependent speeds where `value_of` gives every other symbol's value;
     /// an error names a missing value, a singular mass matrix or constraints losing rank.
     pub fn rates_at(&self, ar: &Arena, value_of: &dyn Fn(SymbolId) -> Option<f64>) -> Result<Rates> {
-        if let Some(l) = &self.loads {
-            return self.rates_with_loads(l, ar, value_of);
-        }
         let Some(c) = &self.constraints else {
             let m = matrix(ar, &self.mass_matrix, value_of)?;
             let f = values(ar, &self.forcing, value_of)?;
-            let udot = m
-                .clone()
-                .lu()
-                .solve(&DVector::from_column_slice(&f))
-                .ok_or(MechanicsError::SingularMassMatrix)?;
-            let coordinates = values(ar, &self.kinematics, value_of)?;
-            let speeds = udot.iter().copied().collect();
-            return Ok(Rates {
-                coordinates,
-                speeds,
-                dependent: Vec::new(),
-                mass_matrix: rows_of(&m),
-                forcing: f,
-                loads: Vec::new(),
-            });
+            let n = m.nrows();
+            let reduction =
+                Reduction { c: DMatrix::identity(n, n), g: DVector::zeros(n), dependent: Vec::new() };
+            return self.reduced_rates(ar, value_of, m, f, reduction);
         };
         let ad = matrix(ar, &c.a_dependent, value_of)?;
         check_rank(&ad, self, ar, value_of)?;
@@ -79,7 +64,7 @@ impl KaneEquations {
             None => value_of(s),
         };
         let m = matrix(ar, &self.mass_matrix, &with_ud)?;
-        let f = DVector::from_vec(values(ar, &self.forcing, &with_ud)?);
+        let f = values(ar, &self.forcing, &with_ud)?;
         let bias = DVector::from_vec(values(ar, &c.bias, &with_ud)?);
         let cd = lu.solve(&-&ai).ok_or(MechanicsError::SingularConstraints)?;
         let gd = lu.solve(&-bias).ok_or(MechanicsError::SingularConstraints)?;
@@ -89,49 +74,61 @@ impl KaneEquations {
         cm.view_mut((ni, 0), (nd, ni)).copy_from(&cd);
         let mut g = DVector::zeros(ni + nd);
         g.rows_mut(ni, nd).copy_from(&gd);
-        let reduced = cm.transpose() * &m * &cm;
-        let forcing = cm.transpose() * (&f - &m * g);
-        let udot = reduced.lu().solve(&forcing).ok_or(MechanicsError::SingularMassMatrix)?;
-        let coordinates = values(ar, &self.kinematics, &with_ud)?;
-        Ok(Rates {
-            coordinates,
-            speeds: udot.iter().copied().collect(),
-            dependent: ud.iter().copied().collect(),
-            mass_matrix: rows_of(&m),
-            forcing: f.iter().copied().collect(),
-            loads: Vec::new(),
-        })
+        let reduction = Reduction { c: cm, g, dependent: ud.iter().copied().collect() };
+        self.reduced_rates(ar, &with_ud, m, f, reduction)
     }
 
-    /// The rates and the loads from `[M, -B_s; M_a, -B_a] [u'; T] = [f; f_a]` by LU with
-    /// partial pivoting.
-    fn rates_with_loads(
+    /// The rates from `(C^T M C) u_i' = C^T (f - M g)`; with loads solved for, from
+    /// `[C^T M C, -C^T B_s; M_a C, -B_a] [u_i'; T] = [C^T (f - M g); f_a - M_a g]`.
+    fn reduced_rates(
         &self,
-        l: &SolvedLoads,
         ar: &Arena,
         value_of: &dyn Fn(SymbolId) -> Option<f64>,
+        m: DMatrix<f64>,
+        f: Vec<f64>,
+        r: Reduction,
     ) -> Result<Rates> {
-        let (n, k) = (self.speeds.len(), l.loads.len());
-        let m = matrix(ar, &self.mass_matrix, value_of)?;
-        let ma = matrix(ar, &l.mass_rows, value_of)?;
-        let b = matrix(ar, &l.load_columns, value_of)?;
-        let mut e = DMatrix::zeros(n + k, n + k);
-        e.view_mut((0, 0), (n, n)).copy_from(&m);
-        e.view_mut((n, 0), (k, n)).copy_from(&ma);
-        e.view_mut((0, n), (n + k, k)).copy_from(&-b);
-        let f = values(ar, &self.forcing, value_of)?;
-        let mut rhs = f.clone();
-        rhs.extend(values(ar, &l.forcing, value_of)?);
-        let x = e.lu().solve(&DVector::from_vec(rhs)).ok_or(MechanicsError::SingularMassMatrix)?;
+        let fv = DVector::from_column_slice(&f);
+        let reduced = r.c.transpose() * &m * &r.c;
+        let forcing = r.c.transpose() * (&fv - &m * &r.g);
+        let (speeds, loads) = match &self.loads {
+            None => {
+                let udot = reduced.lu().solve(&forcing).ok_or(MechanicsError::SingularMassMatrix)?;
+                (udot.iter().copied().collect(), Vec::new())
+            }
+            Some(l) => {
+                let (n, ni, k) = (m.nrows(), r.c.ncols(), l.loads.len());
+                let ma = matrix(ar, &l.mass_rows, value_of)?;
+                let b = matrix(ar, &l.load_columns, value_of)?;
+                let fa = DVector::from_vec(values(ar, &l.forcing, value_of)?);
+                let mut e = DMatrix::zeros(ni + k, ni + k);
+                e.view_mut((0, 0), (ni, ni)).copy_from(&reduced);
+                e.view_mut((0, ni), (ni, k)).copy_from(&-(r.c.transpose() * b.rows(0, n)));
+                e.view_mut((ni, 0), (k, ni)).copy_from(&(&ma * &r.c));
+                e.view_mut((ni, ni), (k, k)).copy_from(&-b.rows(n, k));
+                let mut rhs = DVector::zeros(ni + k);
+                rhs.rows_mut(0, ni).copy_from(&forcing);
+                rhs.rows_mut(ni, k).copy_from(&(fa - &ma * &r.g));
+                let x = e.lu().solve(&rhs).ok_or(MechanicsError::SingularMassMatrix)?;
+                (x.rows(0, ni).iter().copied().collect(), x.rows(ni, k).iter().copied().collect())
+            }
+        };
         Ok(Rates {
             coordinates: values(ar, &self.kinematics, value_of)?,
-            speeds: x.rows(0, n).iter().copied().collect(),
-            dependent: Vec::new(),
+            speeds,
+            dependent: r.dependent,
             mass_matrix: rows_of(&m),
             forcing: f,
-            loads: x.rows(n, k).iter().copied().collect(),
+            loads,
         })
     }
+}
+
+/// `u' = C u_i' + g` (over all speeds) and the dependent speeds' values.
+struct Reduction {
+    c: DMatrix<f64>,
+    g: DVector<f64>,
+    dependent: Vec<f64>,
 }
 
 /// An error when `A_d`'s reciprocal condition number is below [`CONSTRAINT_RCOND_LIMIT`],

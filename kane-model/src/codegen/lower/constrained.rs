@@ -8,13 +8,14 @@
 #![allow(clippy::needless_range_loop)]
 
 use crate::expr::{Arena, ExprId, SymbolId};
-use crate::mechanics::{KaneEquations, SpeedConstraints};
+use crate::mechanics::{KaneEquations, SolvedLoads, SpeedConstraints};
 
 use super::super::ir::{Input, Op, Section, SectionBuilder};
 use super::super::CodegenError;
 use super::exprs::ExprLowering;
 use super::hoist::Hoisted;
 use super::householder::{self, sum, Factored};
+use super::inverse::{self, LoadValues};
 use super::solve;
 
 /// The `derive` and `rhs` sections of the constrained `eqs`.
@@ -33,6 +34,8 @@ pub fn lower(
     roots.extend(&eqs.forcing);
     roots.extend(&c.bias);
     roots.extend(&eqs.kinematics);
+    let loads = eqs.loads.as_ref().map(inverse::load_roots).unwrap_or_default();
+    roots.extend(&loads);
     let is_param = |s: SymbolId| params.contains(&s);
     let mut hoisted = Hoisted::default();
     let roots = roots.iter().map(|r| hoisted.rewrite(ar, *r, &is_param)).collect::<Result<Vec<_>, _>>()?;
@@ -53,12 +56,23 @@ pub fn lower(
     }
     let f = &values[k..k + n];
     let bias = &values[k + n..k + n + c.dependent.len()];
-    let kinematics = values[k + n + c.dependent.len()..].to_vec();
-    let (m_reduced, f_reduced) = block.reduce(b, &m, f, bias);
-    let some: Vec<Vec<Option<u32>>> =
-        m_reduced.iter().map(|row| row.iter().map(|v| Some(*v)).collect()).collect();
-    let recips = vec![None; some.len()];
-    let x = solve::lower(b, &solve::System { m: &some, f: &f_reduced, recips: &recips, dets: &[] });
+    let kinematics_end = values.len() - loads.len();
+    let kinematics = values[k + n + c.dependent.len()..kinematics_end].to_vec();
+    let reduced = block.reduce(b, &m, f, bias);
+    let x = match &eqs.loads {
+        Some(l) => {
+            let loads = LoadValues::from_values(&values[kinematics_end..], n, l.loads.len());
+            let mut x = inverse::solve_reduced(b, &reduced.m, &reduced.f, &reduced.cd, &reduced.g, &loads);
+            x.truncate(eqs.speeds.len());
+            x
+        }
+        None => {
+            let some: Vec<Vec<Option<u32>>> =
+                reduced.m.iter().map(|row| row.iter().map(|v| Some(*v)).collect()).collect();
+            let recips = vec![None; some.len()];
+            solve::lower(b, &solve::System { m: &some, f: &reduced.f, recips: &recips, dets: &[] })
+        }
+    };
     let mut results = kinematics;
     results.extend(x);
     Ok((derive, lowering.builder.finish(results)))
@@ -134,13 +148,7 @@ impl Block {
     }
 
     /// `C^T M C` and `C^T (f - M g)` from `M` and `f` over all speeds and the values of `bias`.
-    fn reduce(
-        &self,
-        b: &mut SectionBuilder,
-        m: &[Vec<u32>],
-        f: &[u32],
-        bias: &[u32],
-    ) -> (Vec<Vec<u32>>, Vec<u32>) {
+    fn reduce(&self, b: &mut SectionBuilder, m: &[Vec<u32>], f: &[u32], bias: &[u32]) -> Reduced {
         let (md, ni) = (bias.len(), f.len() - bias.len());
         let zero = b.constant(0.0);
         // Columns of C_d = -A_d^-1 A_i and g_d = -A_d^-1 bias.
@@ -185,6 +193,42 @@ impl Block {
                 b.add(f[r], s)
             })
             .collect();
-        (reduced, forcing)
+        Reduced { m: reduced, f: forcing, cd, g }
     }
+
+    /// Makes the section read the loads (their symbols' expressions `loads`) of `eqs` with the
+    /// constraints `c` and the loads `l`, this block lowered in it already.
+    pub fn bind_loads(
+        &self,
+        lowering: &mut ExprLowering,
+        eqs: &KaneEquations,
+        c: &SpeedConstraints,
+        l: &SolvedLoads,
+        loads: &[ExprId],
+    ) {
+        let n = eqs.speeds.len() + c.dependent.len();
+        let mut roots: Vec<ExprId> = (0..n).flat_map(|i| eqs.mass_matrix[i].clone()).collect();
+        roots.extend(&eqs.forcing);
+        roots.extend(&c.bias);
+        roots.extend(inverse::load_roots(l));
+        let values = lowering.lower_all(&roots);
+        let b = &mut lowering.builder;
+        let m: Vec<Vec<u32>> = (0..n).map(|i| values[i * n..(i + 1) * n].to_vec()).collect();
+        let f = &values[n * n..n * n + n];
+        let bias = &values[n * n + n..n * n + n + c.dependent.len()];
+        let reduced = self.reduce(b, &m, f, bias);
+        let load_values = LoadValues::from_values(&values[n * n + n + c.dependent.len()..], n, l.loads.len());
+        let x = inverse::solve_reduced(b, &reduced.m, &reduced.f, &reduced.cd, &reduced.g, &load_values);
+        for (e, v) in loads.iter().zip(&x[eqs.speeds.len()..]) {
+            lowering.bind(*e, *v);
+        }
+    }
+}
+
+/// `C^T M C`, `C^T (f - M g)`, and the reduction `C = [I; cd]`, `g = [0; g]`.
+struct Reduced {
+    m: Vec<Vec<u32>>,
+    f: Vec<u32>,
+    cd: Vec<Vec<u32>>,
+    g: Vec<u32>,
 }

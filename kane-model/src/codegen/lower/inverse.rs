@@ -13,16 +13,19 @@ use super::super::ir::{Op, Section, SectionBuilder};
 use super::super::CodegenError;
 use super::exprs::ExprLowering;
 use super::hoist::Hoisted;
-use super::householder;
+use super::householder::{self, sum};
 
-/// The `derive` and `rhs` sections of `eqs` with the loads `l`.
+/// The `derive` and `rhs` sections of the unconstrained `eqs` with the loads `l`.
 pub fn lower(
     ar: &mut Arena,
     eqs: &KaneEquations,
     l: &SolvedLoads,
     params: &[SymbolId],
 ) -> Result<(Section, Section), CodegenError> {
-    let mut roots = system_roots(eqs, l);
+    let n = eqs.speeds.len();
+    let mut roots: Vec<ExprId> = (0..n).flat_map(|i| eqs.mass_matrix[i][i..].to_vec()).collect();
+    roots.extend(&eqs.forcing);
+    roots.extend(load_roots(l));
     let first = roots.len();
     roots.extend(&eqs.kinematics);
     let is_param = |s: SymbolId| params.contains(&s);
@@ -32,58 +35,111 @@ pub fn lower(
     let (symbols, derive) = hoisted.reading(ar, &states, params);
     let mut lowering = ExprLowering::new(ar, &symbols, None);
     let values = lowering.lower_all(&roots);
-    let x = solve(&mut lowering.builder, eqs.speeds.len(), l.loads.len(), &values[..first]);
+    let x = solve_unconstrained(&mut lowering.builder, n, l.loads.len(), &values[..first]);
     let mut results = values[first..].to_vec();
-    results.extend(&x[..eqs.speeds.len()]);
+    results.extend(&x[..n]);
     Ok((derive, lowering.builder.finish(results)))
 }
 
-/// `M`'s upper triangle, `f`, the auxiliary rows of `M`, `f_a`, then `B` row by row.
-pub fn system_roots(eqs: &KaneEquations, l: &SolvedLoads) -> Vec<ExprId> {
-    let n = eqs.speeds.len();
-    let mut roots: Vec<ExprId> = (0..n).flat_map(|i| eqs.mass_matrix[i][i..].to_vec()).collect();
-    roots.extend(&eqs.forcing);
-    roots.extend(l.mass_rows.iter().flatten());
+/// The auxiliary rows of `M`, `f_a`, then `B` row by row.
+pub fn load_roots(l: &SolvedLoads) -> Vec<ExprId> {
+    let mut roots: Vec<ExprId> = l.mass_rows.iter().flatten().copied().collect();
     roots.extend(&l.forcing);
     roots.extend(l.load_columns.iter().flatten());
     roots
 }
 
-/// Makes the section read the loads (their symbols' expressions `loads`) from the system,
-/// lowered from [`system_roots`].
+/// The lowered values of [`load_roots`], as rows.
+pub struct LoadValues {
+    /// `M_a`, a row per auxiliary speed over all speeds.
+    pub mass_rows: Vec<Vec<u32>>,
+    /// `f_a`.
+    pub forcing: Vec<u32>,
+    /// `B`, a row per speed then per auxiliary speed.
+    pub columns: Vec<Vec<u32>>,
+}
+
+impl LoadValues {
+    /// Split from the values of [`load_roots`] for `n` speeds (all of them) and `k` loads.
+    pub fn from_values(values: &[u32], n: usize, k: usize) -> LoadValues {
+        let rows = |start: usize, count: usize, width: usize| -> Vec<Vec<u32>> {
+            (0..count).map(|i| values[start + i * width..start + (i + 1) * width].to_vec()).collect()
+        };
+        LoadValues {
+            mass_rows: rows(0, k, n),
+            forcing: values[k * n..k * n + k].to_vec(),
+            columns: rows(k * n + k, n + k, k),
+        }
+    }
+}
+
+/// Makes the section of an unconstrained model read the loads (their symbols' expressions
+/// `loads`) from the system.
 pub fn bind_loads(lowering: &mut ExprLowering, eqs: &KaneEquations, l: &SolvedLoads, loads: &[ExprId]) {
-    let values = lowering.lower_all(&system_roots(eqs, l));
     let n = eqs.speeds.len();
-    let x = solve(&mut lowering.builder, n, l.loads.len(), &values);
+    let mut roots: Vec<ExprId> = (0..n).flat_map(|i| eqs.mass_matrix[i][i..].to_vec()).collect();
+    roots.extend(&eqs.forcing);
+    roots.extend(load_roots(l));
+    let values = lowering.lower_all(&roots);
+    let x = solve_unconstrained(&mut lowering.builder, n, l.loads.len(), &values);
     for (e, v) in loads.iter().zip(&x[n..]) {
         lowering.bind(*e, *v);
     }
 }
 
-/// `[u'; T]` from the values of [`system_roots`] for `n` speeds and `k` loads.
-fn solve(b: &mut SectionBuilder, n: usize, k: usize, values: &[u32]) -> Vec<u32> {
-    let size = n + k;
-    let mut e = vec![vec![0; size]; size];
+/// `[u'; T]` from the values of `M`'s upper triangle, `f` and [`load_roots`].
+fn solve_unconstrained(b: &mut SectionBuilder, n: usize, k: usize, values: &[u32]) -> Vec<u32> {
+    let mut m = vec![vec![0; n]; n];
     let mut at = 0;
     for i in 0..n {
         for j in i..n {
-            (e[i][j], e[j][i]) = (values[at], values[at]);
+            (m[i][j], m[j][i]) = (values[at], values[at]);
             at += 1;
         }
     }
-    let mut rhs: Vec<u32> = values[at..at + n].to_vec();
-    at += n;
-    for a in 0..k {
-        e[n + a][..n].copy_from_slice(&values[at..at + n]);
-        at += n;
-    }
-    rhs.extend(&values[at..at + k]);
-    at += k;
-    for i in 0..size {
+    let f = &values[at..at + n];
+    let loads = LoadValues::from_values(&values[at + n..], n, k);
+    solve_reduced(b, &m, f, &[], &[], &loads)
+}
+
+/// `[u_i'; T]` from `[C^T M C, -C^T B_s; M_a C, -B_a] [u_i'; T] = [C^T (f - M g); f_a - M_a g]`:
+/// `reduced` and `reduced_f` are `C^T M C` and `C^T (f - M g)`, `C = [I; cd]` and `g = [0; g]`
+/// (`cd` and `g` empty without constraints).
+pub fn solve_reduced(
+    b: &mut SectionBuilder,
+    reduced: &[Vec<u32>],
+    reduced_f: &[u32],
+    cd: &[Vec<u32>],
+    g: &[u32],
+    loads: &LoadValues,
+) -> Vec<u32> {
+    let (ni, k) = (reduced_f.len(), loads.forcing.len());
+    let n = ni + g.len();
+    let zero = b.constant(0.0);
+    let mut e = vec![vec![zero; ni + k]; ni + k];
+    for r in 0..ni {
+        e[r][..ni].copy_from_slice(&reduced[r]);
         for c in 0..k {
-            e[i][n + c] = b.push(Op::Neg(values[at]));
-            at += 1;
+            let terms: Vec<u32> = (0..g.len()).map(|l| b.mul(cd[l][r], loads.columns[ni + l][c])).collect();
+            let s = sum(b, &terms, zero);
+            let t = b.add(loads.columns[r][c], s);
+            e[r][ni + c] = b.push(Op::Neg(t));
         }
+    }
+    let mut rhs = reduced_f.to_vec();
+    for a in 0..k {
+        let row = &loads.mass_rows[a];
+        for s in 0..ni {
+            let terms: Vec<u32> = (0..g.len()).map(|l| b.mul(row[ni + l], cd[l][s])).collect();
+            let t = sum(b, &terms, zero);
+            e[ni + a][s] = b.add(row[s], t);
+        }
+        for c in 0..k {
+            e[ni + a][ni + c] = b.push(Op::Neg(loads.columns[n + a][c]));
+        }
+        let terms: Vec<u32> = (0..g.len()).map(|l| b.mul(row[ni + l], g[l])).collect();
+        let t = sum(b, &terms, zero);
+        rhs.push(b.sub(loads.forcing[a], t));
     }
     householder::factor(b, e).solve(b, &rhs)
 }

@@ -56,7 +56,7 @@ fn mass_matrix(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
     }
     if let Some(l) = &eqs.loads {
         computed.extend(&l.loads);
-        all.extend(inverse::system_roots(&eqs, l));
+        all.extend(inverse::load_roots(l));
     }
     let rhs_free = spec.model.ar.free_symbols(&all);
     for o in &spec.outputs {

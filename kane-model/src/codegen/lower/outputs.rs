@@ -46,17 +46,18 @@ pub fn lower(spec: &mut ModelSpec, params: &[SymbolId]) -> Result<Vec<OutputCode
         let components = spec.outputs[k].components.clone();
         let ar = &spec.model.ar;
         let free = ar.free_symbols(&components);
-        let block = constraints
-            .as_ref()
-            .filter(|c| c.dependent.iter().chain(&c.dependent_rates).any(|s| free.contains(s)));
+        let solved = loads.as_ref().filter(|l| l.loads.iter().any(|s| free.contains(s)));
+        let block = constraints.as_ref().filter(|c| {
+            solved.is_some() || c.dependent.iter().chain(&c.dependent_rates).any(|s| free.contains(s))
+        });
         let mut reads_from = components.clone();
         if let Some(c) = block {
             reads_from
                 .extend(c.a_dependent.iter().chain(&c.a_independent).flatten().chain(&c.b).chain(&c.bias));
         }
-        let solved = loads.as_ref().filter(|l| l.loads.iter().any(|s| free.contains(s)));
         if let Some(l) = solved {
-            reads_from.extend(inverse::system_roots(&spec.equations, l));
+            reads_from.extend(spec.equations.mass_matrix.iter().flatten().chain(&spec.equations.forcing));
+            reads_from.extend(inverse::load_roots(l));
         }
         let reads = reads(spec, &reads_from, &states)?;
         let ar = &spec.model.ar;
@@ -74,8 +75,10 @@ pub fn lower(spec: &mut ModelSpec, params: &[SymbolId]) -> Result<Vec<OutputCode
             if c.dependent_rates.iter().any(|s| free.contains(s)) {
                 b.bind_rates(&mut lowering, &c.bias, &dependent_rates);
             }
-        }
-        if let Some(l) = solved {
+            if let Some(l) = solved {
+                b.bind_loads(&mut lowering, &spec.equations, c, l, &load_exprs);
+            }
+        } else if let Some(l) = solved {
             inverse::bind_loads(&mut lowering, &spec.equations, l, &load_exprs);
         }
         let values = lowering.lower_all(&components);
