@@ -80,3 +80,35 @@ fn kane_with_arguments_needs_as_many_auxiliary_speeds() {
         lang::load("t.al", &rod("SPECIFIED T\nZERO = FR() + FRSTAR()\nKANE(T)")).err().unwrap().to_string();
     assert!(e.contains("KANE names 1 loads but CONSTRAIN(AUXILIARY[...]) declared 0"), "{e}");
 }
+
+#[test]
+fn solve_takes_a_bracketed_list_and_rhs_reads_solved_assigned_and_kinematic_quantities() {
+    let bracketed =
+        lang::load("b.al", &rod("ZERO = FR() + FRSTAR()\nSOLVE(ZERO, [U'])\nUD = RHS(U')")).unwrap();
+    let want = -3.0 * 9.81 * 0.1_f64.cos() / (3.0 / 12.0 + 3.0);
+    assert!((rate(&bracketed) - want).abs() < 1e-13, "{}", rate(&bracketed));
+    // RHS(U') of the equations of motion: U' solved symbolically (one speed).
+    let Some(lang::Value::Scalar(ud)) = bracketed.value("UD") else { panic!("UD") };
+    let at = |s: kane_model::expr::SymbolId| match bracketed.model.ar.symbol_info(s).name.as_str() {
+        "L" => Some(1.0),
+        "M" => Some(3.0),
+        "G" => Some(9.81),
+        "Q" => Some(0.1),
+        _ => Some(0.0),
+    };
+    let ud = bracketed.model.ar.eval(&[ud], at).unwrap()[0];
+    assert!((ud - want).abs() < 1e-13, "{ud} vs {want}");
+    let src = "VARIABLES X, Y, Q', U'\nQ' = 2*U\nZ = 5*X\nEQN[1] = X + Y - 3\nEQN[2] = X - Y - 1\n\
+               SOLVE(EQN, [X, Y])\nA = RHS(X)\nB = RHS(Y)\nC = RHS(Z)\nD = RHS(Q')\n";
+    let m = lang::load("r.al", src).unwrap();
+    let text = |name: &str| match m.value(name) {
+        Some(lang::Value::Scalar(x)) => m.model.ar.to_text(x),
+        other => panic!("{name}: {other:?}"),
+    };
+    assert_eq!(
+        (text("A"), text("B"), text("C"), text("D")),
+        ("2".into(), "1".into(), "5*X".into(), "2*U".into())
+    );
+    let e = lang::load("n.al", "VARIABLES X\nA = RHS(X)\n").err().unwrap().to_string();
+    assert!(e.contains("`X` has not been solved for or assigned"), "{e}");
+}

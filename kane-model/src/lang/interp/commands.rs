@@ -245,7 +245,8 @@ impl Interpreter {
         Ok(())
     }
 
-    /// `SOLVE(EQN, X, Y, ...)`: the linear equations EQN solved for the unknowns, kept for RHS.
+    /// `SOLVE(EQN, X, Y, ...)` or `SOLVE(EQN, [X, Y])`: the linear equations EQN solved for the
+    /// unknowns, kept for RHS.
     fn solve(&mut self, args: &[Expr], e: &Expr) -> IResult<()> {
         if args.len() < 2 {
             return Err(Diagnostic::error(e.span.clone(), "SOLVE takes (EQN, X, Y, ...)"));
@@ -257,7 +258,15 @@ impl Interpreter {
         let eqs = self.equations_named(&key);
         let mut names = Vec::new();
         let mut syms = Vec::new();
-        for a in &args[1..] {
+        // Unknowns one by one or in a bracketed list: SOLVE(ZERO, [U4', U6']).
+        let unknowns: Vec<&Expr> = args[1..]
+            .iter()
+            .flat_map(|a| match &a.kind {
+                ExprKind::Matrix(rows) => rows.iter().flatten().collect::<Vec<_>>(),
+                _ => vec![a],
+            })
+            .collect();
+        for a in unknowns {
             let ExprKind::Name { name, primes, .. } = &a.kind else {
                 return Err(Diagnostic::error(a.span.clone(), "SOLVE takes unknowns by name"));
             };

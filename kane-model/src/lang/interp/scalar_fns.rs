@@ -13,7 +13,7 @@ use super::super::ast::{Expr, ExprKind};
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
 use super::value::Value;
-use super::{At, IResult, Interpreter};
+use super::{At, Binding, IResult, Interpreter};
 
 /// An elementary function of one scalar.
 pub(super) enum Elementary {
@@ -161,13 +161,81 @@ impl Interpreter {
     /// `RHS(X)`: the solution SOLVE found for the unknown `X`.
     fn solved_value(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
         super::arity("RHS", args, 1, &e.span)?;
-        let ExprKind::Name { name, primes, .. } = &args[0].kind else {
-            return Err(Diagnostic::error(args[0].span.clone(), "RHS takes the name of a solved unknown"));
+        let ExprKind::Name { name, primes, suffix } = &args[0].kind else {
+            return Err(Diagnostic::error(
+                args[0].span.clone(),
+                "RHS takes the name of a solved or assigned quantity",
+            ));
         };
-        let key = format!("{}{}", name.to_ascii_uppercase(), "'".repeat(*primes as usize));
-        self.solved.get(&key).map(|x| Value::Scalar(*x)).ok_or_else(|| {
-            Diagnostic::error(args[0].span.clone(), format!("`{name}` has not been solved for"))
-                .with_help("call SOLVE(EQN, ...) first")
-        })
+        let upper = name.to_ascii_uppercase();
+        let key = format!("{upper}{}", "'".repeat(*primes as usize));
+        if let Some(x) = self.solved.get(&key) {
+            return Ok(Value::Scalar(*x));
+        }
+        if *primes == 1 {
+            if let Some(x) = self.speed_rate_solved(&key, &args[0].span)? {
+                return Ok(Value::Scalar(x));
+            }
+        }
+        // A kinematic equation Q' = ...: its right-hand side.
+        let coordinate = self
+            .kinematic
+            .iter()
+            .find(|(q, _)| self.model.ar.symbol_info(*q).name.eq_ignore_ascii_case(&upper));
+        if let (1, Some((_, rhs))) = (*primes, coordinate) {
+            return Ok(Value::Scalar(*rhs));
+        }
+        // An assigned quantity: its value (a declared symbol has no right-hand side).
+        let bound = format!("{key}{}", ">".repeat(*suffix as usize));
+        match self.bindings.get(&bound) {
+            Some(Binding::Value(v)) => Ok(v.clone()),
+            _ => Err(Diagnostic::error(
+                args[0].span.clone(),
+                format!("`{name}` has not been solved for or assigned"),
+            )
+            .with_help("call SOLVE(EQN, ...) first, or assign it (X = ...)")),
+        }
+    }
+
+    /// `u'` of a speed named `key` (`U2'`) from the equations of motion solved symbolically, for
+    /// an unconstrained model of at most [`SYMBOLIC_RATES_UP_TO`] speeds (larger ones are solved
+    /// numerically only); None for a name that is not a speed's rate.
+    fn speed_rate_solved(&mut self, key: &str, span: &Span) -> IResult<Option<ExprId>> {
+        let Some(eqs) = self.equations.clone() else { return Ok(None) };
+        let ar = &mut self.model.ar;
+        let Some(k) =
+            eqs.speed_derivatives.iter().position(|s| ar.symbol_info(*s).name.eq_ignore_ascii_case(key))
+        else {
+            return Ok(None);
+        };
+        let n = eqs.speeds.len();
+        if eqs.constraints.is_some() || eqs.loads.is_some() || n > SYMBOLIC_RATES_UP_TO {
+            return Err(Diagnostic::error(
+                span.clone(),
+                format!(
+                    "RHS({key}) of a model with {n} speeds, constraints or loads is not formed symbolically"
+                ),
+            )
+            .with_help("evaluate the rates with `kane eval` or linearise with `kane linearize`"));
+        }
+        let mut zero = Vec::with_capacity(n);
+        for r in 0..n {
+            let mut terms = vec![eqs.forcing[r]];
+            for (m, u) in eqs.mass_matrix[r].iter().zip(&eqs.speed_derivatives) {
+                let u = ar.symbol_expr(*u);
+                let t = ar.mul(&[*m, u]).at(span)?;
+                terms.push(ar.neg(t).at(span)?);
+            }
+            zero.push(ar.add(&terms).at(span)?);
+        }
+        let solution = ar.solve_linear(&zero, &eqs.speed_derivatives).at(span)?;
+        for (s, x) in eqs.speed_derivatives.iter().zip(&solution) {
+            let name = ar.symbol_info(*s).name.to_ascii_uppercase();
+            self.solved.insert(name, *x);
+        }
+        Ok(Some(solution[k]))
     }
 }
+
+/// The most speeds whose rates RHS solves symbolically.
+const SYMBOLIC_RATES_UP_TO: usize = 4;
