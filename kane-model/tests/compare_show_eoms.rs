@@ -21,11 +21,37 @@ fn k1_written_for_k2_prints_the_differing_term() {
 }
 
 #[test]
-fn every_equation_negated_is_equal_up_to_sign() {
-    let (ok, out, err) = kane(&["compare", GIMBAL, &data("gimbal_hand_negated.al")]);
+fn every_equation_negated_is_equal_up_to_sign_only_when_asked() {
+    let (ok, out, _) = kane(&["compare", GIMBAL, &data("gimbal_hand_negated.al")]);
+    assert!(!ok, "a sign difference passes only with --up-to-sign: {out}");
+    assert!(
+        out.contains("3 of 3 differ (3 only in sign: hand = -derived; an equation negated as a whole"),
+        "{out}"
+    );
+    let (ok, out, err) = kane(&["compare", GIMBAL, &data("gimbal_hand_negated.al"), "--up-to-sign"]);
     assert!(ok, "{out}{err}");
     assert_eq!(out.matches("equal up to sign (hand = -derived), proven").count(), 3, "{out}");
     assert!(out.contains("equal up to sign: every equation is the derived one negated"), "{out}");
+}
+
+#[test]
+fn a_velocity_component_of_the_opposite_sign_differs_even_up_to_sign() {
+    let dir = std::env::temp_dir().join(format!("kane-compare-sign-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let hand = dir.join("hand.al");
+    let right = std::fs::read_to_string(data("gimbal_hand_velocity.al")).unwrap();
+    let line = right.lines().find(|l| l.starts_with("V_P_A>")).expect("a velocity line").to_string();
+    let (name, value) = line.split_once('=').unwrap();
+    std::fs::write(&hand, right.replace(&line, &format!("{name}= -({})", value.trim()))).unwrap();
+    for extra in [None, Some("--up-to-sign")] {
+        let mut args = vec!["compare", GIMBAL, hand.to_str().unwrap()];
+        args.extend(extra);
+        let (ok, out, _) = kane(&args);
+        assert!(!ok, "{out}");
+        assert!(out.contains("V_P_A> . D") && out.contains("DIFFERS in sign: hand = -derived"), "{out}");
+        assert!(out.contains("a rate or a quantity of the opposite sign is a different one"), "{out}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

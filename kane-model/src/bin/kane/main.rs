@@ -107,6 +107,10 @@ enum Command {
         file: PathBuf,
         /// The hand-derived equations.
         hand: PathBuf,
+        /// Count an equation (ZERO[r] = ...) equal to a derived one negated as equal (a rate or
+        /// a quantity of the opposite sign still differs).
+        #[arg(long)]
+        up_to_sign: bool,
     },
     /// Print any quantity of the model (scalar, vector, dyadic), simplified: I1, A_P_A>, ...
     Show {
@@ -175,7 +179,7 @@ fn run(command: Command) -> Result<(), String> {
         Command::Gen { file, out, stats, taylor, taylor_orders, lanes } => {
             gen(file, out, stats, CodeOptions { taylor, taylor_orders, lanes })
         }
-        Command::Compare { file, hand } => compare(file, hand),
+        Command::Compare { file, hand, up_to_sign } => compare(file, hand, up_to_sign),
         Command::Show { file, name, frame } => show(file, name, frame),
     }
 }
@@ -458,10 +462,12 @@ fn write_output(path: &Path, text: &str) -> Result<(), String> {
 }
 
 /// `kane compare`: hand-derived equations against the derived ones, and how they differ.
-fn compare(file: PathBuf, hand: PathBuf) -> Result<(), String> {
+fn compare(file: PathBuf, hand: PathBuf, up_to_sign: bool) -> Result<(), String> {
     let (src, hand_src) = (read(&file)?, read(&hand)?);
-    let outcome = lang::compare(&file.display().to_string(), &src, &hand.display().to_string(), &hand_src)
-        .map_err(|r| r.render())?;
+    let mut outcome =
+        lang::compare(&file.display().to_string(), &src, &hand.display().to_string(), &hand_src)
+            .map_err(|r| r.render())?;
+    outcome.up_to_sign = up_to_sign;
     print!("{outcome}");
     if outcome.differs() {
         Err("some equations differ".into())

@@ -31,6 +31,9 @@ pub struct Comparison {
     pub relation: Relation,
     /// The verdict behind the relation (for [`Relation::Differs`], the point where they differ).
     pub verdict: Equivalence,
+    /// True for an equation `ZERO[r] = ...` (which means the same negated as a whole); false
+    /// for a rate or a quantity, where a sign is part of the value.
+    pub equation: bool,
 }
 
 /// Every comparison of a hand file, with the names of the derived rows for messages.
@@ -40,12 +43,26 @@ pub struct Outcome {
     pub comparisons: Vec<Comparison>,
     /// The derived rows' labels (`ZERO[1]`, ...), for [`Relation::Row`].
     pub rows: Vec<String>,
+    /// Whether an equation equal to a derived one negated counts as equal (asked for with
+    /// `--up-to-sign`); a rate or a quantity of the opposite sign never does.
+    pub up_to_sign: bool,
 }
 
 impl Outcome {
-    /// True when something differs (up to sign and order counts as equal).
+    /// True when something differs or cannot be decided: a difference, an inconclusive
+    /// comparison, a rate or quantity of the opposite sign, or an equation negated unless
+    /// [`Outcome::up_to_sign`]. The order of the equations does not count.
     pub fn differs(&self) -> bool {
-        self.comparisons.iter().any(|c| matches!(c.relation, Relation::Differs { .. }))
+        self.comparisons.iter().any(|c| !self.accepted(c))
+    }
+
+    /// Whether `c` counts as equal.
+    pub(crate) fn accepted(&self, c: &Comparison) -> bool {
+        match c.relation {
+            Relation::Equal | Relation::Row { negated: false, .. } => true,
+            Relation::Negated | Relation::Row { negated: true, .. } => c.equation && self.up_to_sign,
+            Relation::Differs { .. } | Relation::Inconclusive => false,
+        }
     }
 }
 
@@ -71,7 +88,7 @@ pub fn compare(model_file: &str, model: &str, hand_file: &str, hand: &str) -> Re
     let cfg = s.physical_sampling();
     let presenter = s.presenter(None).map_err(fail)?;
     let rows: Vec<String> = (1..=eqs.speeds.len()).map(|r| format!("ZERO[{r}]")).collect();
-    let mut out = Outcome { comparisons: Vec::new(), rows };
+    let mut out = Outcome { comparisons: Vec::new(), rows, up_to_sign: false };
     let model = &mut s.it.model;
     if given.iter().any(|g| matches!(g, Given::Udot(..))) {
         out.comparisons = udot_rows(model, &cfg, &presenter, &eqs, &given).map_err(|e| match e {
@@ -89,7 +106,12 @@ pub fn compare(model_file: &str, model: &str, hand_file: &str, hand: &str) -> Re
         let mut judge = Judge { ar: &mut model.ar, cfg: &cfg, presenter: &presenter };
         if let Given::Zero(r, x) = g {
             let (relation, verdict) = judge.judge(*x, &derived, *r, true).map_err(fail)?;
-            out.comparisons.push(Comparison { label: out.rows[*r].clone(), relation, verdict });
+            out.comparisons.push(Comparison {
+                label: out.rows[*r].clone(),
+                relation,
+                verdict,
+                equation: true,
+            });
         }
     }
     for g in &given {
@@ -157,7 +179,7 @@ fn udot_rows(
         let (relation, verdict) = judge.judge(*x, &eqs.forcing, r, false)?;
         let name = &ar.symbol_info(eqs.speeds[r]).name;
         let label = format!("{name}' (row {} of M u' = f, hand = M*(hand u'), derived = f)", r + 1);
-        out.push(Comparison { label, relation, verdict });
+        out.push(Comparison { label, relation, verdict, equation: false });
     }
     // Rates equal up to sign only all together (u' = -h); one negated row is a wrong rate.
     if !out.iter().all(|c| c.relation == Relation::Negated) {
@@ -192,7 +214,7 @@ fn quantity(
     for (k, label) in labels.into_iter().enumerate() {
         let mut judge = Judge { ar: &mut model.ar, cfg, presenter };
         let (relation, verdict) = judge.judge(hand[k], &derived, k, false).map_err(|e| e.to_string())?;
-        out.push(Comparison { label, relation, verdict });
+        out.push(Comparison { label, relation, verdict, equation: false });
     }
     Ok(out)
 }

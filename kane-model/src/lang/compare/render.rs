@@ -31,8 +31,11 @@ impl Comparison {
         match &self.relation {
             Relation::Equal if self.verdict == Equivalence::Proven => format!("{}: proven equal", self.label),
             Relation::Equal => format!("{}: equal {}", self.label, how(&self.verdict)),
-            Relation::Negated => {
+            Relation::Negated if self.equation => {
                 format!("{}: equal up to sign (hand = -derived), {}", self.label, how(&self.verdict))
+            }
+            Relation::Negated => {
+                format!("{}: DIFFERS in sign: hand = -derived, {}", self.label, how(&self.verdict))
             }
             Relation::Row { row, negated } => format!(
                 "{}: equals derived {}{} (the order of the equations differs), {}",
@@ -60,21 +63,34 @@ impl Outcome {
     /// What the comparisons say together.
     pub fn summary(&self) -> String {
         let c = &self.comparisons;
-        let count = |f: fn(&Relation) -> bool| c.iter().filter(|x| f(&x.relation)).count();
-        let differ = count(|r| matches!(r, Relation::Differs { .. } | Relation::Inconclusive));
-        let negated = count(|r| matches!(r, Relation::Negated | Relation::Row { negated: true, .. }));
-        let moved = count(|r| matches!(r, Relation::Row { .. }));
         if c.is_empty() {
             return "nothing to compare".into();
         }
-        if differ > 0 {
-            return format!("{differ} of {} differ", c.len());
+        let negated =
+            |x: &&Comparison| matches!(x.relation, Relation::Negated | Relation::Row { negated: true, .. });
+        let rejected = c.iter().filter(|x| !self.accepted(x)).count();
+        if rejected > 0 {
+            let signs = c.iter().filter(negated).filter(|x| !self.accepted(x)).count();
+            let mut s = format!("{rejected} of {} differ", c.len());
+            if signs > 0 {
+                s.push_str(&format!(
+                    " ({signs} only in sign: hand = -derived{})",
+                    if c.iter().filter(negated).all(|x| x.equation) {
+                        "; an equation negated as a whole is the same equation: pass --up-to-sign to accept that"
+                    } else {
+                        ", a rate or a quantity of the opposite sign is a different one"
+                    }
+                ));
+            }
+            return s;
         }
+        let negated_count = c.iter().filter(negated).count();
+        let moved = c.iter().filter(|x| matches!(x.relation, Relation::Row { .. })).count();
         let mut s = String::from("equal");
-        if negated == c.len() {
+        if negated_count == c.len() {
             s.push_str(" up to sign: every equation is the derived one negated");
-        } else if negated > 0 {
-            s.push_str(&format!(" up to sign: {negated} of {} negated", c.len()));
+        } else if negated_count > 0 {
+            s.push_str(&format!(" up to sign: {negated_count} of {} negated", c.len()));
         }
         if moved > 0 {
             let pairs: Vec<String> = c
@@ -86,7 +102,7 @@ impl Outcome {
                 .collect();
             s.push_str(&format!(
                 "{} up to the order of the equations: {}",
-                if negated > 0 { " and" } else { "" },
+                if negated_count > 0 { " and" } else { "" },
                 pairs.join(", ")
             ));
         }
@@ -115,9 +131,10 @@ mod tests {
                 label: format!("ZERO[{}]", i + 1),
                 relation,
                 verdict: Equivalence::Proven,
+                equation: true,
             })
             .collect();
-        Outcome { comparisons, rows: vec!["ZERO[1]".into(), "ZERO[2]".into()] }
+        Outcome { comparisons, rows: vec!["ZERO[1]".into(), "ZERO[2]".into()], up_to_sign: true }
     }
 
     #[test]
