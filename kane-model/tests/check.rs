@@ -225,3 +225,28 @@ fn a_load_given_twice_is_a_warning_naming_both_lines() {
     let src = format!("{base}FORCE(P, F*N1>)\nFORCE(P, M*N1>)\nZERO = FR() + FRSTAR()\nKANE()\n");
     assert!(lang::check("slide.al", &src).unwrap().warnings.diagnostics.is_empty());
 }
+
+/// A rod whose mass is written `mass` in MASS, with `inputs` in INPUT.
+fn rod(mass: &str, inputs: &str) -> String {
+    format!(
+        "NEWTONIAN N\nBODIES PC\nCONSTANTS MC, L, G\nVARIABLES Q', U'\nMASS PC = {mass}\n\
+         INERTIA PC, 0, MC*L^2/12, MC*L^2/12\nSIMPROT(N, PC, 3, Q)\nQ' = U\nPOINTS O\n\
+         P_O_PCO> = L*PC1>\nV_O_N> = 0>\nV2PTS(N, PC, O, PCO)\nGRAVITY(-G*N2>)\n\
+         ZERO = FR() + FRSTAR()\nKANE()\nINPUT {inputs}\n"
+    )
+}
+
+#[test]
+fn a_misspelt_mass_is_an_error_with_a_did_you_mean_at_its_use() {
+    let src = rod("MCC", "MC = 1, L = 1, G = 9.81");
+    let report = lang::check("typo.al", &src).err().expect("an error").render();
+    assert!(report.contains("`MCC` is declared nowhere and given no value"), "{report}");
+    assert!(report.contains("did you mean `MC`?") && report.contains("typo.al:5:11"), "{report}");
+    // A mass declared by its use and given in INPUT is fine; without INPUT and with no near name,
+    // a warning says runs will need it.
+    assert!(lang::check("given.al", &rod("MROD", "MC = 1, L = 1, G = 9.81, MROD = 2")).is_ok());
+    let checked = lang::check("open.al", &rod("MROD", "MC = 1, L = 1, G = 9.81")).expect("only a warning");
+    let warnings = checked.warnings.render();
+    assert!(warnings.contains("`MROD` (declared by its use here) has no INPUT value"), "{warnings}");
+    assert!(checked.warnings.diagnostics.iter().all(|d| d.severity == Severity::Warning));
+}

@@ -146,6 +146,7 @@ impl Interpreter {
             if !self.bindings.contains_key(&key) && key != "T" && key != "PI" {
                 let c = self.model.ar.constant(name).at(&e.span)?;
                 self.bindings.insert(key, Binding::Symbol(c, 0));
+                self.sources.implicit_constants.push((name.clone(), e.span.clone()));
             }
         }
         Ok(())

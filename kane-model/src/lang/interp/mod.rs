@@ -44,6 +44,7 @@ use super::ast::{Expr, Stmt};
 use super::diagnostic::Diagnostic;
 use super::token::Span;
 use super::units::size::UnitSystem;
+pub(crate) use names::edit_distance;
 pub(crate) use sources::{LoadSource, Sources};
 use value::Value;
 

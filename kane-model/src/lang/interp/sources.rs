@@ -30,6 +30,8 @@ pub(crate) struct Sources {
     /// Every load given, in order: `FORCE_P>` / `TORQUE_B>` and where (assignments, and the
     /// FORCE and TORQUE commands).
     pub(crate) loads: Vec<LoadSource>,
+    /// Constants MASS and INERTIA declared by using them (`MASS A = MA`), with where.
+    pub(crate) implicit_constants: Vec<(String, Span)>,
 }
 
 /// One statement adding to a load.

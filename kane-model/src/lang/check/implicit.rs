@@ -1,0 +1,48 @@
+//! Constants a file declares only by using them in MASS or INERTIA (`MASS A = MA`, as Autolev
+//! allows): one that no INPUT gives a value is most often a misspelling (`MASS PC = MCC` beside
+//! `CONSTANTS MC`). In: a loaded model. Out: an error with a did-you-mean when a declared name
+//! is one edit away (two for names of six letters or more), else a warning that runs will need
+//! a value.
+
+use crate::expr::SymbolKind;
+
+use super::super::diagnostic::Diagnostic;
+use super::super::interp::{edit_distance, LoadedModel};
+
+/// Diagnostics for the implicit constants without an INPUT value.
+pub(crate) fn implicit_constants_without_values(m: &LoadedModel) -> Vec<Diagnostic> {
+    let implicit = &m.sources.implicit_constants;
+    let declared: Vec<String> = m
+        .model
+        .ar
+        .symbols()
+        .filter(|(_, info)| matches!(info.kind, SymbolKind::Constant))
+        .map(|(_, info)| info.name.clone())
+        .filter(|n| !implicit.iter().any(|(i, _)| i.eq_ignore_ascii_case(n)))
+        .collect();
+    let mut out = Vec::new();
+    for (name, span) in implicit {
+        if m.inputs.iter().any(|i| i.name.eq_ignore_ascii_case(name)) {
+            continue;
+        }
+        let upper = name.to_ascii_uppercase();
+        let near = declared
+            .iter()
+            .map(|d| (edit_distance(&upper, &d.to_ascii_uppercase()), d))
+            // Short names are close to many others (M1 and C1): only a near miss of a longer one.
+            .filter(|(k, _)| (*k == 1 && upper.len() >= 3) || (*k == 2 && upper.len() >= 6))
+            .min_by_key(|(k, _)| *k);
+        out.push(match near {
+            Some((_, d)) => Diagnostic::error(
+                span.clone(),
+                format!("`{name}` is declared nowhere and given no value (MASS and INERTIA declare it by using it)"),
+            )
+            .with_help(format!("did you mean `{d}`? Otherwise declare it with CONSTANTS and give it in INPUT")),
+            None => Diagnostic::warning(
+                span.clone(),
+                format!("`{name}` (declared by its use here) has no INPUT value: runs need one (--set {name}=VALUE)"),
+            ),
+        });
+    }
+    out
+}
