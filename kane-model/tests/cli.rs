@@ -96,3 +96,22 @@ fn errors_name_file_line_and_column() {
     assert!(err.contains("help:"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn a_closed_pipe_ends_the_command_quietly() {
+    use std::io::Read;
+    use std::process::{Command, Stdio};
+    let bicycle = concat!(env!("CARGO_MANIFEST_DIR"), "/models/whipple_bicycle.al");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_kane"))
+        .args(["eoms", bicycle])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Read a little, then close the pipe, as `kane eoms FILE | head -1` does.
+    let mut first = [0u8; 16];
+    child.stdout.take().unwrap().read_exact(&mut first).unwrap();
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success() && !err.contains("panicked"), "{:?} {err}", out.status);
+}

@@ -1,6 +1,9 @@
 //! The `kane` command: check model files, print, evaluate and compare their equations.
 
+mod output;
 mod solve;
+
+use output::{out, outln};
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -200,7 +203,7 @@ fn check(file: PathBuf) -> Result<(), String> {
                 }
                 None => String::new(),
             };
-            println!(
+            outln!(
                 "{}: ok: {} coordinates ({}), {} speeds ({}){dependent}, {} bodies; M {n}x{n} in {} operations, f in {}",
                 file.display(),
                 e.coordinates.len(),
@@ -213,10 +216,10 @@ fn check(file: PathBuf) -> Result<(), String> {
                 n = e.mass_matrix.len(),
             );
         }
-        None => println!("{}: ok: no KANE() in this file", file.display()),
+        None => outln!("{}: ok: no KANE() in this file", file.display()),
     }
     if let Some(b) = bookkeeping {
-        println!("{}: bookkeeping {b}", file.display());
+        outln!("{}: bookkeeping {b}", file.display());
     }
     Ok(())
 }
@@ -228,15 +231,15 @@ fn eoms(file: PathBuf, format: Format, partials: bool) -> Result<(), String> {
     let p = lang::printed_eoms(&mut m).map_err(|e| format!("{}: {e}", file.display()))?;
     let p = p.ok_or_else(|| format!("{}: the file derives no equations; call KANE()", file.display()))?;
     match format {
-        Format::Latex => print!("{}", p.to_latex(&mut m.model.ar)),
+        Format::Latex => out!("{}", p.to_latex(&mut m.model.ar)),
         Format::Text => {
-            print!("{}", p.to_text(&m.model.ar));
+            out!("{}", p.to_text(&m.model.ar));
             let table = partial_velocities(&mut m)?;
             if partials || table.len() <= PARTIALS_TABLE_BUDGET {
-                println!("\n% Partial velocities and partial angular velocities");
-                print!("{table}");
+                outln!("\n% Partial velocities and partial angular velocities");
+                out!("{table}");
             } else {
-                println!(
+                outln!(
                     "\n% Partial velocities and partial angular velocities: {} rows ({} KB) left out; \
                      --partials prints them",
                     table.lines().count(),
@@ -258,7 +261,7 @@ fn eoms(file: PathBuf, format: Format, partials: bool) -> Result<(), String> {
                 "mass_matrix": t.mass_matrix, "forcing": t.forcing, "equations": t.equations,
                 "dependent_speeds": p.dependent, "constraints": t.constraints,
             });
-            println!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
+            outln!("{}", serde_json::to_string_pretty(&v).map_err(|e| e.to_string())?);
         }
     }
     Ok(())
@@ -334,18 +337,18 @@ fn linearize(file: PathBuf, set: Vec<String>, inputs: Vec<String>, json: bool) -
     if json {
         let assembled: serde_json::Map<String, serde_json::Value> =
             moved.iter().map(|(n, _, to)| (n.to_string(), serde_json::json!(to))).collect();
-        println!(
+        outln!(
             "{}",
             serde_json::json!({ "states": states, "inputs": inputs, "assembled": assembled, "A": l.a, "B": l.b })
         );
     } else {
         for (n, from, to) in moved {
-            println!("assembled: {n} = {to} (from {from}) so the configuration constraints hold");
+            outln!("assembled: {n} = {to} (from {from}) so the configuration constraints hold");
         }
-        println!("states: {}\ninputs: {}", states.join(", "), inputs.join(", "));
+        outln!("states: {}\ninputs: {}", states.join(", "), inputs.join(", "));
         for (n, row) in states.iter().zip(l.a.iter().zip(&l.b)) {
             let cells: Vec<String> = row.0.iter().chain(row.1).map(|x| format!("{x:.12e}")).collect();
-            println!("{n}' : {}", cells.join(" "));
+            outln!("{n}' : {}", cells.join(" "));
         }
     }
     Ok(())
@@ -393,20 +396,20 @@ fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
             "qdot": rates.coordinates, "udot": rates.speeds,
             "loads": names(&m, &loads), "load_values": rates.loads,
         });
-        println!("{v}");
+        outln!("{v}");
     } else {
         for (name, v) in names(&m, &dependent)
             .iter()
             .zip(&rates.dependent)
             .chain(names(&m, &loads).iter().zip(&rates.loads))
         {
-            println!("{name} = {v}");
+            outln!("{name} = {v}");
         }
         for (name, v) in names(&m, &e.coordinates).iter().zip(&rates.coordinates) {
-            println!("{name}' = {v}");
+            outln!("{name}' = {v}");
         }
         for (name, v) in names(&m, &e.speeds).iter().zip(&rates.speeds) {
-            println!("{name}' = {v}");
+            outln!("{name}' = {v}");
         }
     }
     Ok(())
@@ -426,7 +429,7 @@ fn gen(file: PathBuf, out: Option<PathBuf>, stats: bool, options: CodeOptions) -
     let source = format!("{header}\n//! Generated in {seconds:.3} s.\n\n{body}");
     match out {
         Some(path) => write_output(&path, &source)?,
-        None => print!("{source}"),
+        None => out!("{source}"),
     }
     if stats {
         eprintln!(
@@ -468,7 +471,7 @@ fn compare(file: PathBuf, hand: PathBuf, up_to_sign: bool) -> Result<(), String>
         lang::compare(&file.display().to_string(), &src, &hand.display().to_string(), &hand_src)
             .map_err(|r| r.render())?;
     outcome.up_to_sign = up_to_sign;
-    print!("{outcome}");
+    out!("{outcome}");
     if outcome.differs() {
         Err("some equations differ".into())
     } else {
@@ -481,6 +484,6 @@ fn show(file: PathBuf, name: String, frame: Option<String>) -> Result<(), String
     let src = read(&file)?;
     let text =
         lang::show(&file.display().to_string(), &src, &name, frame.as_deref()).map_err(|r| r.render())?;
-    println!("{text}");
+    outln!("{text}");
     Ok(())
 }

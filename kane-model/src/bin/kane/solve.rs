@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use kane_model::expr::SymbolId;
 use kane_model::lang::{self, algebraic::Solution};
 
+use super::output::outln;
 use super::{read, values_with_sets};
 
 /// One request solved: its kind, line, unknowns and solution.
@@ -49,16 +50,19 @@ pub fn solve(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> 
                 })
             })
             .collect();
-        println!("{}", serde_json::json!({ "systems": each }));
+        outln!("{}", serde_json::json!({ "systems": each }));
         return Ok(());
     }
     for s in &solved {
-        println!(
+        outln!(
             "% CODE {} (line {}): {} step(s), largest residual {:.1e}",
-            s.kind, s.line, s.solution.iterations, s.solution.residual
+            s.kind,
+            s.line,
+            s.solution.iterations,
+            s.solution.residual
         );
         for (name, v) in s.names.iter().zip(&s.solution.values) {
-            println!("{name} = {v}");
+            outln!("{name} = {v}");
         }
     }
     Ok(())
