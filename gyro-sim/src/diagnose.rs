@@ -15,9 +15,12 @@ use crate::solve::{kinetic_energy_output, BoundModel, SolveError};
 /// A pivot this small against the largest diagonal entry makes the mass matrix singular.
 const SINGULAR_PIVOT: f64 = 1e-10;
 
-/// The coordinates, `Q1 = 0 deg, Q2 = 90 deg` (angles integrated in radians shown in degrees).
+/// The coordinates the equations read, `Q1 = 0 deg, Q2 = 90 deg` (angles integrated in radians
+/// shown in degrees): cyclic ones cannot matter to a configuration and, when no output needs
+/// them, are not integrated (their start value would be a wrong one).
 pub(crate) fn configuration(info: &ModelInfo, y: &[f64]) -> String {
-    named_values(info, y, 0..info.n_coordinates)
+    let read: Vec<usize> = (0..info.n_coordinates).filter(|i| !info.cyclic.contains(i)).collect();
+    named_values(info, y, read)
 }
 
 /// Every state, as [`configuration`] writes the coordinates.
@@ -25,13 +28,13 @@ pub(crate) fn state_text(info: &ModelInfo, y: &[f64]) -> String {
     named_values(info, y, 0..info.state_names.len().min(y.len()))
 }
 
-fn named_values(info: &ModelInfo, y: &[f64], range: std::ops::Range<usize>) -> String {
+fn named_values(info: &ModelInfo, y: &[f64], states: impl IntoIterator<Item = usize>) -> String {
     let text = |i: usize| match info.state_units[i] {
         u if u.eq_ignore_ascii_case("DEG") => format!("{} = {} deg", info.state_names[i], y[i].to_degrees()),
         "" => format!("{} = {}", info.state_names[i], y[i]),
         u => format!("{} = {} {u}", info.state_names[i], y[i]),
     };
-    range.map(text).collect::<Vec<_>>().join(", ")
+    states.into_iter().map(text).collect::<Vec<_>>().join(", ")
 }
 
 /// The mass matrix of the speeds at `(t, y)` (row-major), when the model has a kinetic-energy
