@@ -100,12 +100,23 @@ pub(crate) fn mass_matrix_error<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Op
 /// The smallest over the largest singular value of the motion constraints' matrix of
 /// dependent speeds at `(t, y)`, when the model has that matrix as an output.
 pub(crate) fn constraint_rcond<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Option<f64> {
-    let info = sys.info();
-    let k = info.outputs.iter().position(|o| o.kind == "constraint_matrix")?;
-    let n = info.outputs[k].columns.len().isqrt();
-    let mut entries = vec![0.0; n * n];
-    sys.output(k, t, y, &[], &mut entries);
-    Some(reciprocal_condition(n, &entries))
+    let k = sys.info().outputs.iter().position(|o| o.kind == "constraint_matrix")?;
+    Some(matrix_rcond(sys, k, t, y, &mut Vec::new()))
+}
+
+/// The reciprocal condition number of the constraint-matrix output `k` at `(t, y)`, its
+/// entries written into `scratch`.
+pub(crate) fn matrix_rcond<B: BoundModel>(
+    sys: &B,
+    k: usize,
+    t: f64,
+    y: &[f64],
+    scratch: &mut Vec<f64>,
+) -> f64 {
+    let size = sys.info().outputs[k].columns.len();
+    scratch.resize(size, 0.0);
+    sys.output(k, t, y, &[], scratch);
+    reciprocal_condition(size.isqrt(), scratch)
 }
 
 /// Motion constraints that lose rank at `(t, y)` (reciprocal condition number below

@@ -345,6 +345,8 @@ pub(crate) struct Residuals {
     outputs: [Option<usize>; 2],
     configuration: Option<f64>,
     motion: Option<f64>,
+    /// The constraint-matrix output, found once.
+    matrix: Option<usize>,
     /// The worst conditioning so far, when the model has a constraint-matrix output.
     conditioning: Option<Conditioning>,
     scratch: Vec<f64>,
@@ -356,6 +358,7 @@ impl Residuals {
         let find = |kind: &str| info.outputs.iter().position(|o| o.kind == kind);
         Residuals {
             outputs: [find("configuration_residuals"), find("motion_residuals")],
+            matrix: find("constraint_matrix"),
             ..Default::default()
         }
     }
@@ -368,10 +371,8 @@ impl Residuals {
             model.output(k, t, y, &[], &mut self.scratch);
             *slot = Some(kane_model::assembly::largest_magnitude(slot.unwrap_or(0.0), &self.scratch));
         }
-        if self.outputs[1].is_none() {
-            return;
-        }
-        let Some(rcond) = diagnose::constraint_rcond(model, t, y) else { return };
+        let Some(k) = self.matrix else { return };
+        let rcond = diagnose::matrix_rcond(model, k, t, y, &mut self.scratch);
         let worse = match &self.conditioning {
             Some(c) => rcond.is_nan() || rcond < c.rcond,
             None => true,

@@ -28,9 +28,7 @@ pub fn lower(
     let n = eqs.speeds.len() + c.dependent.len();
     let mut roots: Vec<ExprId> = block_roots(c);
     let first = roots.len();
-    for i in 0..n {
-        roots.extend(&eqs.mass_matrix[i][i..]);
-    }
+    roots.extend(solve::upper_triangle(&eqs.mass_matrix));
     roots.extend(&eqs.forcing);
     roots.extend(&c.bias);
     roots.extend(&eqs.kinematics);
@@ -46,14 +44,8 @@ pub fn lower(
     let block = Block::lower(&mut lowering, &dependent, &roots[..first], eqs.coordinates.len());
     let values = lowering.lower_all(&roots[first..]);
     let b = &mut lowering.builder;
-    let mut m = vec![vec![0; n]; n];
-    let mut k = 0;
-    for i in 0..n {
-        for j in i..n {
-            (m[i][j], m[j][i]) = (values[k], values[k]);
-            k += 1;
-        }
-    }
+    let m = solve::symmetric(&values, n);
+    let k = n * (n + 1) / 2;
     let f = &values[k..k + n];
     let bias = &values[k + n..k + n + c.dependent.len()];
     let kinematics_end = values.len() - loads.len();
@@ -207,17 +199,17 @@ impl Block {
         loads: &[ExprId],
     ) {
         let n = eqs.speeds.len() + c.dependent.len();
-        let mut roots: Vec<ExprId> = (0..n).flat_map(|i| eqs.mass_matrix[i].clone()).collect();
+        let mut roots = solve::upper_triangle(&eqs.mass_matrix);
         roots.extend(&eqs.forcing);
         roots.extend(&c.bias);
         roots.extend(inverse::load_roots(l));
         let values = lowering.lower_all(&roots);
         let b = &mut lowering.builder;
-        let m: Vec<Vec<u32>> = (0..n).map(|i| values[i * n..(i + 1) * n].to_vec()).collect();
-        let f = &values[n * n..n * n + n];
-        let bias = &values[n * n + n..n * n + n + c.dependent.len()];
+        let m = solve::symmetric(&values, n);
+        let at = n * (n + 1) / 2;
+        let (f, bias) = (&values[at..at + n], &values[at + n..at + n + c.dependent.len()]);
         let reduced = self.reduce(b, &m, f, bias);
-        let load_values = LoadValues::from_values(&values[n * n + n + c.dependent.len()..], n, l.loads.len());
+        let load_values = LoadValues::from_values(&values[at + n + c.dependent.len()..], n, l.loads.len());
         let x = inverse::solve_reduced(b, &reduced.m, &reduced.f, &reduced.cd, &reduced.g, &load_values);
         for (e, v) in loads.iter().zip(&x[eqs.speeds.len()..]) {
             lowering.bind(*e, *v);

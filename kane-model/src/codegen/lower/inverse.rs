@@ -14,6 +14,7 @@ use super::super::CodegenError;
 use super::exprs::ExprLowering;
 use super::hoist::Hoisted;
 use super::householder::{self, sum};
+use super::solve::{symmetric, upper_triangle};
 
 /// The `derive` and `rhs` sections of the unconstrained `eqs` with the loads `l`.
 pub fn lower(
@@ -23,7 +24,7 @@ pub fn lower(
     params: &[SymbolId],
 ) -> Result<(Section, Section), CodegenError> {
     let n = eqs.speeds.len();
-    let mut roots: Vec<ExprId> = (0..n).flat_map(|i| eqs.mass_matrix[i][i..].to_vec()).collect();
+    let mut roots = upper_triangle(&eqs.mass_matrix);
     roots.extend(&eqs.forcing);
     roots.extend(load_roots(l));
     let first = roots.len();
@@ -77,7 +78,7 @@ impl LoadValues {
 /// `loads`) from the system.
 pub fn bind_loads(lowering: &mut ExprLowering, eqs: &KaneEquations, l: &SolvedLoads, loads: &[ExprId]) {
     let n = eqs.speeds.len();
-    let mut roots: Vec<ExprId> = (0..n).flat_map(|i| eqs.mass_matrix[i][i..].to_vec()).collect();
+    let mut roots = upper_triangle(&eqs.mass_matrix);
     roots.extend(&eqs.forcing);
     roots.extend(load_roots(l));
     let values = lowering.lower_all(&roots);
@@ -89,14 +90,8 @@ pub fn bind_loads(lowering: &mut ExprLowering, eqs: &KaneEquations, l: &SolvedLo
 
 /// `[u'; T]` from the values of `M`'s upper triangle, `f` and [`load_roots`].
 fn solve_unconstrained(b: &mut SectionBuilder, n: usize, k: usize, values: &[u32]) -> Vec<u32> {
-    let mut m = vec![vec![0; n]; n];
-    let mut at = 0;
-    for i in 0..n {
-        for j in i..n {
-            (m[i][j], m[j][i]) = (values[at], values[at]);
-            at += 1;
-        }
-    }
+    let m = symmetric(values, n);
+    let at = n * (n + 1) / 2;
     let f = &values[at..at + n];
     let loads = LoadValues::from_values(&values[at + n..], n, k);
     solve_reduced(b, &m, f, &[], &[], &loads)

@@ -20,6 +20,24 @@ pub struct System<'a> {
     pub dets: &'a [((usize, usize), u32)],
 }
 
+/// The upper triangle of the symmetric `m`, row by row (the entries a section lowers).
+pub fn upper_triangle<T: Copy>(m: &[Vec<T>]) -> Vec<T> {
+    m.iter().enumerate().flat_map(|(i, row)| row[i..].iter().copied()).collect()
+}
+
+/// The `n x n` symmetric matrix whose upper triangle, row by row, starts `values`.
+pub fn symmetric(values: &[u32], n: usize) -> Vec<Vec<u32>> {
+    let mut m = vec![vec![0; n]; n];
+    let mut at = 0;
+    for i in 0..n {
+        for j in i..n {
+            (m[i][j], m[j][i]) = (values[at], values[at]);
+            at += 1;
+        }
+    }
+    m
+}
+
 /// The values of `u'`.
 pub fn lower(b: &mut SectionBuilder, sys: &System<'_>) -> Vec<u32> {
     let n = sys.f.len();
