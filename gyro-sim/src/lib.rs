@@ -14,6 +14,7 @@ mod diagnose;
 pub mod events;
 pub mod initial;
 pub mod instant;
+pub mod interrupt;
 pub mod model_file;
 pub mod models;
 pub mod ode;

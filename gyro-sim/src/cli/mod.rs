@@ -156,6 +156,9 @@ pub struct CompiledModel {
 /// Runs the command line with `registry`'s models (and `compiled`, when this binary is a
 /// model file's compiled path).
 pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCode {
+    if let Err(e) = crate::interrupt::listen() {
+        eprintln!("warning: stop signals cannot be caught ({e}): Ctrl-C ends a run without keeping its rows");
+    }
     let result = match Cli::parse().command {
         Command::Run(args) => run_command(&args, registry, compiled),
         Command::Bench(args) => bench::bench_command(&args.scene, args.repeats, &args.out, &registry),
@@ -181,7 +184,7 @@ pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCod
         Ok(code) => code,
         Err(message) => {
             eprintln!("{}", message.trim_end());
-            ExitCode::FAILURE
+            crate::interrupt::requested().map_or(ExitCode::FAILURE, |by| ExitCode::from(by.exit_code()))
         }
     }
 }
@@ -299,21 +302,32 @@ fn model_scene(path: &Path, run: &FileRun, entry: &ModelEntry, args: &RunArgs) -
 }
 
 /// Builds (or finds) the compiled binary (with Taylor coefficients when `taylor`) and runs it
-/// with the same arguments.
+/// with the same arguments: on Unix in place of this process, so signals reach it directly.
 fn run_compiled(file: &ModelFile, taylor: bool) -> Result<ExitCode, String> {
     let (binary, built) = crate::compiled::ensure_binary(file, taylor).map_err(|e| e.to_string())?;
     if built {
         eprintln!("compiled: {}", binary.display());
     }
-    let status = std::process::Command::new(&binary)
-        .args(std::env::args_os().skip(1))
-        .status()
-        .map_err(|e| format!("cannot start the compiled model {}: {e}", binary.display()))?;
-    Ok(match status.code() {
-        Some(0) => ExitCode::SUCCESS,
-        Some(c) => ExitCode::from(u8::try_from(c).unwrap_or(1)),
-        None => ExitCode::FAILURE,
-    })
+    let mut command = std::process::Command::new(&binary);
+    command.args(std::env::args_os().skip(1));
+    #[cfg(unix)]
+    {
+        use std::os::unix::process::CommandExt;
+        // Only returns when the binary could not be started.
+        let e = command.exec();
+        Err(format!("cannot start the compiled model {}: {e}", binary.display()))
+    }
+    #[cfg(not(unix))]
+    {
+        let status = command
+            .status()
+            .map_err(|e| format!("cannot start the compiled model {}: {e}", binary.display()))?;
+        Ok(match status.code() {
+            Some(0) => ExitCode::SUCCESS,
+            Some(c) => ExitCode::from(u8::try_from(c).unwrap_or(1)),
+            None => ExitCode::FAILURE,
+        })
+    }
 }
 
 /// Runs, writes and summarises.

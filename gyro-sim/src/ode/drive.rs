@@ -41,6 +41,7 @@ pub struct Watched {
 /// `Some(t_stop)` inside the step, the outputs before `t_stop` are given and the run ends there.
 /// `interpolates`: the stepper steps freely to the last time (its stop time is set already) and
 /// outputs inside a step come from its dense output; otherwise each output time is a stop time.
+/// A stop signal ends the run after the step it arrived in, with [`OdeError::Interrupted`].
 pub fn drive<St: Stepping>(
     stepper: &mut St,
     times: &[f64],
@@ -73,6 +74,9 @@ pub fn drive<St: Stepping>(
             stepper.set_stop_time(target);
         }
         stepper.step()?;
+        if let Some(by) = crate::interrupt::requested() {
+            return Err(OdeError::Interrupted { time: stepper.t(), by });
+        }
         if let Some(t_stop) = watch(stepper) {
             while let Some(&target) = times.get(next).filter(|t| **t < t_stop) {
                 stepper.interpolate(target, &mut inside)?;

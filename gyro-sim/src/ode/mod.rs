@@ -123,6 +123,14 @@ pub enum OdeError {
     /// A Runge-Kutta stepper was given the Taylor method.
     #[error("the taylor method has no Butcher tableau: integrate it with ode::integrate or a TaylorStepper")]
     NotRungeKutta,
+    /// A stop signal arrived (see [`crate::interrupt`]).
+    #[error("{by} at t = {time}")]
+    Interrupted {
+        /// The time reached.
+        time: f64,
+        /// The signal.
+        by: crate::interrupt::Interrupted,
+    },
     /// A slice's length is not the system's dimension (or the stepper's compile-time one).
     #[error("expected {expected} values, got {found}")]
     DimensionMismatch {
