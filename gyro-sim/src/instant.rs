@@ -9,7 +9,7 @@ use kane_model::codegen::ProgramModel;
 use kane_model::runtime::ModelInfo;
 
 use crate::ode::{System, TaylorWork};
-use crate::registry::{Engine, ModelEntry};
+use crate::registry::{Engine, ModelEntry, ProgramSource};
 use crate::solve::{solve_bound, BoundModel};
 
 /// A program model with its parameters bound.
@@ -54,12 +54,14 @@ impl BoundModel for InstantSystem<'_> {
 
 /// The registry entry running `model` on the instant path.
 pub fn instant_entry(model: Arc<ProgramModel>) -> ModelEntry {
-    let (a, b, c) = (model.clone(), model.clone(), model.clone());
+    let (a, b, c, d) = (model.clone(), model.clone(), model.clone(), model.clone());
     ModelEntry {
         info: model.info(),
         initial_state: Arc::new(move || a.initial_state()),
         default_params: Arc::new(move || b.default_params()),
         solve: Arc::new(move |problem| solve_bound(problem, &InstantSystem::new(&c, problem.params.clone()))),
         engine: Engine::Instant,
+        program: Some(ProgramSource(Arc::new(move || Some(d.clone())))),
+        source: None,
     }
 }

@@ -53,12 +53,25 @@ pub mod heavy_top_rust {
     kane_derive::builtin_model!("heavy_top_rust", taylor, lanes, taylor_orders = [8, 12, 14, 16, 20]);
 }
 
-/// `registry` with the compiled models added.
+/// `registry` with the compiled models added (those from model files with their file's text,
+/// to name the operation behind a failure).
 pub fn register(registry: Registry) -> Registry {
     registry
-        .with::<gimbal_gyroscope::Model>()
-        .with::<heavy_top::Model>()
-        .with::<heavy_top_axle::Model>()
+        .with_entry_of::<gimbal_gyroscope::Model>(Some((
+            "gimbal_gyroscope.al",
+            include_str!("../../kane-model/models/gimbal_gyroscope.al"),
+        )))
+        .with_entry_of::<heavy_top::Model>(Some((
+            "heavy_top.al",
+            include_str!("../../kane-model/models/heavy_top.al"),
+        )))
+        .with_entry_of::<heavy_top_axle::Model>(Some((
+            "heavy_top_axle.al",
+            include_str!("../../kane-model/models/heavy_top_axle.al"),
+        )))
         .with::<heavy_top_rust::Model>()
-        .with::<free_body::Model>()
+        .with_entry_of::<free_body::Model>(Some((
+            "free_body.al",
+            include_str!("../../kane-model/models/free_body.al"),
+        )))
 }

@@ -51,6 +51,8 @@ pub struct Problem {
     /// Where the rows go as they are produced (then only a bounded set stays in memory); none:
     /// every row is kept. Leave it none when an accuracy is asked: refinement compares runs.
     pub rows_to: Option<crate::rows::RowStream>,
+    /// The model's lowered program, to name the operation behind a failure (when known).
+    pub program: Option<crate::registry::ProgramSource>,
 }
 
 /// Most output rows a run may ask for (every row is held in memory until it is written).

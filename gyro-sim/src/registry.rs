@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use kane_model::codegen::ProgramModel;
 use kane_model::runtime::{GeneratedModel, ModelInfo};
 
 use crate::problem::Problem;
@@ -33,6 +34,22 @@ impl Engine {
 pub type SolveFn = Arc<dyn Fn(&Problem) -> Result<Trajectory, SolveError> + Send + Sync>;
 /// A vector a model gives (its initial state, its parameter defaults).
 pub type ValuesFn = Arc<dyn Fn() -> Vec<f64> + Send + Sync>;
+/// A model's lowered program, made when asked (to name the operation behind a failure).
+#[derive(Clone)]
+pub struct ProgramSource(pub Arc<dyn Fn() -> Option<Arc<ProgramModel>> + Send + Sync>);
+
+impl ProgramSource {
+    /// The program, when it can be made.
+    pub fn program(&self) -> Option<Arc<ProgramModel>> {
+        (self.0)()
+    }
+}
+
+impl std::fmt::Debug for ProgramSource {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("ProgramSource")
+    }
+}
 
 /// One model: its metadata and what runs it.
 #[derive(Clone)]
@@ -47,6 +64,10 @@ pub struct ModelEntry {
     pub solve: SolveFn,
     /// How it runs.
     pub engine: Engine,
+    /// Its lowered program, the same operations as it runs, when known.
+    pub program: Option<ProgramSource>,
+    /// The path and text of the model file it was compiled from, for a built-in model.
+    pub source: Option<(&'static str, &'static str)>,
 }
 
 impl ModelEntry {
@@ -58,7 +79,20 @@ impl ModelEntry {
             default_params: Arc::new(default_params::<M>),
             solve: Arc::new(solve_model::<M>),
             engine: Engine::Compiled,
+            program: None,
+            source: None,
         }
+    }
+
+    /// This entry with its lowered program made, when asked, from `source`, the text of the
+    /// model file at `path` it was generated from.
+    pub fn with_source(self, path: &'static str, source: &'static str) -> ModelEntry {
+        let program = move || {
+            let file =
+                crate::model_file::ModelFile::from_source(std::path::Path::new(path), source.to_string());
+            file.ok().map(|f| f.program)
+        };
+        ModelEntry { program: Some(ProgramSource(Arc::new(program))), source: Some((path, source)), ..self }
     }
 }
 
@@ -87,6 +121,19 @@ impl Registry {
     /// This registry with `M` added.
     pub fn with<M: GeneratedModel + 'static>(self) -> Registry {
         self.with_entry(M::INFO.name, ModelEntry::of::<M>())
+    }
+
+    /// This registry with `M` added, with its model file's path and text when it has one.
+    pub fn with_entry_of<M: GeneratedModel + 'static>(
+        self,
+        file: Option<(&'static str, &'static str)>,
+    ) -> Registry {
+        let entry = ModelEntry::of::<M>();
+        let entry = match file {
+            Some((path, source)) => entry.with_source(path, source),
+            None => entry,
+        };
+        self.with_entry(M::INFO.name, entry)
     }
 
     /// This registry with `entry` found under `key` (a model's name, or the model file a

@@ -49,6 +49,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
         unit_norms: unit_norms(scene, info)?,
         events: crate::events::resolve::events(scene, info)?,
         rows_to: None,
+        program: entry.program.clone(),
     };
     if scene.axle.is_none() {
         euler_parameters_named_e(scene, info, &problem.initial)?;
@@ -106,6 +107,9 @@ fn method(scene: &Scene) -> Method {
 fn parameters(scene: &Scene, entry: &ModelEntry) -> Result<Vec<f64>, SceneError> {
     let info = entry.info;
     let mut values = (entry.default_params)();
+    given_once(scene, &scene.parameters, |n| {
+        info.param_names.iter().position(|p| p.eq_ignore_ascii_case(n))
+    })?;
     for (name, v, span) in &scene.parameters {
         let Some(i) = info.param_names.iter().position(|p| p.eq_ignore_ascii_case(name)) else {
             return Err(scene.error_at(
@@ -122,10 +126,33 @@ fn parameters(scene: &Scene, entry: &ModelEntry) -> Result<Vec<f64>, SceneError>
     Ok(values)
 }
 
+/// An error when two entries of a table (`[parameters]` or `[initial]`) set the same model
+/// quantity (`index` finds it), as `M` and `m` do: it names both.
+fn given_once<T>(
+    scene: &Scene,
+    table: &[(String, T, std::ops::Range<usize>)],
+    index: impl Fn(&str) -> Option<usize>,
+) -> Result<(), SceneError> {
+    for (k, (name, _, span)) in table.iter().enumerate() {
+        let Some(i) = index(name) else { continue };
+        if let Some((first, _, _)) = table[..k].iter().find(|(n, _, _)| index(n) == Some(i)) {
+            return Err(scene.error_at(
+                span.clone(),
+                format!(
+                    "`{name}` is given twice: `{first}` sets the same quantity (names are case-insensitive)"
+                ),
+                &format!("keep one of `{first}` and `{name}`"),
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// The model's initial state with the scene's values.
 fn initial_state(scene: &Scene, entry: &ModelEntry) -> Result<Vec<f64>, SceneError> {
     let info = entry.info;
     let mut y = (entry.initial_state)();
+    given_once(scene, &scene.initial, |n| info.state(n))?;
     for (name, v, span) in &scene.initial {
         let Some(i) = info.state(name) else {
             return Err(scene.error_at(

@@ -64,7 +64,7 @@ pub enum SolveError {
         pivot: f64,
     },
     /// A rate is NaN or infinite (an overflow when infinite) at a finite state.
-    #[error("integration failed: the rate of {name} is {value} at t = {time} (overflow or a division by zero in the equations) at the state {state}\n  help: check the parameters and initial values for extreme magnitudes")]
+    #[error("integration failed: the rate of {name} is {value} at t = {time}: {} at the state {state}\n  help: check the parameters and initial values for extreme magnitudes, and the model's expressions where they divide, take roots or logarithms", operation.as_deref().unwrap_or("an operation outside its domain (a division by zero, a root or logarithm of a negative number) or an overflow in the equations"))]
     RateNotFinite {
         /// The state whose rate it is.
         name: String,
@@ -74,6 +74,18 @@ pub enum SolveError {
         value: f64,
         /// The state, `NAME = value unit, ...`.
         state: String,
+        /// The operation that made it, when the model's program is known.
+        operation: Option<String>,
+    },
+    /// The step size collapsed where the equations approach a singularity.
+    #[error("integration failed: the equations approach a singularity at t = {time}: {operation}; the step size collapsed there, at the state {state}\n  help: keep the motion away from where this divisor vanishes (parameters, initial values), or stop the run before it with an event")]
+    NearSingularity {
+        /// When.
+        time: f64,
+        /// The state, `NAME = value unit, ...`.
+        state: String,
+        /// The quotient whose divisor nearly vanishes.
+        operation: String,
     },
     /// A state or rate so large that the next steps overflow.
     #[error("integration failed: overflow: {name} is {value:e} at t = {time}, beyond what double precision can step (about 1e150)\n  help: scale the model's units or lower the initial values")]
@@ -530,7 +542,18 @@ fn integrate<B: BoundModel>(
         }),
         (Err(other), _) => Err(SolveError::Ode(other)),
     };
-    let stats = outcome.map_err(|e| diagnose::explain(sys.inner, e, t_good, &y_end))?;
+    let stats = outcome.map_err(|e| {
+        let probed = diagnose::explainable(&e).then(|| {
+            let from: Vec<f64> = keep.iter().map(|k| y_end[*k]).collect();
+            let t_end = all_times.last().copied().unwrap_or(t_good);
+            let (t, y_red) = diagnose::probe(&held, t_good, &from, t_end, method, problem.max_steps)?;
+            let mut full = vec![0.0; n];
+            sys.expand(&y_red, &mut full);
+            normalise(&problem.unit_norms, &mut full);
+            Some((t, full))
+        });
+        diagnose::explain(sys.inner, problem, e, t_good, &y_end, probed.flatten())
+    })?;
     let norm_drift = (!groups.is_empty()).then(|| held.drift());
     let (rows, plot_rows) = (rows.into_rows(), plot_rows.into_rows());
     Ok(Integration { stats, rows, plot_rows, y_end, norm_drift, events, largest_residual })

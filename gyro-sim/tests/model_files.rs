@@ -480,6 +480,19 @@ fn the_compiled_path_builds_once_per_file_version() {
     assert!(after_edit.status.success() && text(&after_edit).contains("compiling"), "{}", text(&after_edit));
     let settled = gyro_sim(&args, &dir);
     assert!(settled.status.success() && !text(&settled).contains("compiling"), "{}", text(&settled));
+    let settled_rows = rows(&out);
+    // A damaged cached binary is rebuilt once, and the run goes on.
+    let built = text(&after_edit);
+    let binary = built.lines().find_map(|l| l.strip_prefix("compiled: ")).expect("the binary's path");
+    std::fs::write(binary.trim(), b"not a program").unwrap();
+    let repaired = gyro_sim(&args, &dir);
+    assert!(repaired.status.success(), "{}", text(&repaired));
+    assert!(
+        text(&repaired).contains("cannot be started") && text(&repaired).contains("rebuilding it"),
+        "{}",
+        text(&repaired)
+    );
+    assert_eq!(rows(&out), settled_rows, "the rebuilt binary gives the same rows");
 }
 
 #[test]

@@ -50,3 +50,30 @@ fn known_units_load_with_their_grouping() {
     assert_eq!(units["C"], "RAD/SEC^2");
     assert!(lang::load("gimbal.al", GIMBAL).is_ok());
 }
+
+/// `kane check`'s errors for `src`.
+fn check_errors(src: &str) -> String {
+    match lang::check("units.al", src) {
+        Ok(_) => panic!("expected an error"),
+        Err(report) => report.to_string(),
+    }
+}
+
+#[test]
+fn a_unit_of_another_dimension_than_the_quantitys_use_is_an_error() {
+    // L places the rotor's points: a length, not a mass.
+    let src = GIMBAL.replace("UNITS L = M", "UNITS L = KG");
+    assert_ne!(src, GIMBAL, "the gimbal gives L its unit");
+    let e = check_errors(&src);
+    assert!(e.contains("error: `L` is a length (it places point"), "{e}");
+    assert!(e.contains("its unit KG is not a length"), "{e}");
+    let line = line_of(&src, "UNITS L");
+    assert!(e.contains(&format!("units.al:{line}:")), "{e}");
+    // A mass given in metres, by its INPUT tag.
+    let particle = "NEWTONIAN N\nPARTICLES P\nPOINTS O\nCONSTANTS M, R\nV_O_N> = 0>\nP_O_P> = R*N1>\nMASS P = M\nINPUT M = 2 M, R = 0.5 M\n";
+    let e = check_errors(particle);
+    assert!(e.contains("units.al:8:7: error: `M` is the mass of P, but its unit M is not a mass"), "{e}");
+    // The right units pass.
+    assert!(lang::check("units.al", &particle.replace("M = 2 M", "M = 2 KG")).is_ok());
+    assert!(lang::check("units.al", GIMBAL).is_ok());
+}

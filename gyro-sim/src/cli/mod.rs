@@ -5,6 +5,7 @@
 
 mod bench;
 mod model_scene;
+mod origins;
 mod summary;
 mod sweep;
 mod sweep_plot;
@@ -213,6 +214,9 @@ fn run_command(
                 scene.model
             ));
         }
+        if let Some(entry) = registry.find(&scene.model) {
+            plausible_builtin(entry, &scene, &registry)?;
+        }
         return finish(&scene, &registry, args);
     };
     let specified = scene.as_ref().map_or(&[][..], |s| &s.specified[..]);
@@ -232,23 +236,36 @@ fn run_command(
             (entry, file.run.clone(), Some(file))
         }
     };
-    let scene = match scene {
-        Some(s) => s,
-        None => model_scene(&file_path, &run, &entry, args)?,
+    let Some(scene) = scene else {
+        let scene = model_scene(&file_path, &run, &entry, args)?;
+        let given = origins::Given { model: &file_path, sets: &args.sets, t_final: args.t_final };
+        return run_scene(&scene, registry, entry, file.as_ref(), args)
+            .map_err(|e| origins::point_at_arguments(&e, &scene.source, &given));
     };
+    run_scene(&scene, registry, entry, file.as_ref(), args)
+}
+
+/// Runs `scene` with `entry` (a model file's, checked for plausibility when `file` is given).
+fn run_scene(
+    scene: &Scene,
+    registry: Registry,
+    entry: ModelEntry,
+    file: Option<&ModelFile>,
+    args: &RunArgs,
+) -> Result<ExitCode, String> {
     if args.print_scene {
         print!("{}", scene.source);
         return Ok(ExitCode::SUCCESS);
     }
     let registry = registry.with_entry(&scene.model, entry);
-    if let Some(file) = &file {
-        let problem = crate::resolve::resolve(&scene, &registry).map_err(|e| e.to_string())?;
+    if let Some(file) = file {
+        let problem = crate::resolve::resolve(scene, &registry).map_err(|e| e.to_string())?;
         plausible(file, &problem)?;
         if args.engine == EngineChoice::Compiled {
             return run_compiled(file, scene.integrator.method == crate::ode::TAYLOR);
         }
     }
-    finish(&scene, &registry, args)
+    finish(scene, &registry, args)
 }
 
 /// `compiled` with its parameter defaults and initial state taken from `current` (the same
@@ -269,6 +286,7 @@ fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
     ModelEntry {
         default_params: std::sync::Arc::new(move || param_values.clone()),
         initial_state: std::sync::Arc::new(move || state_values.clone()),
+        program: current.program.clone(),
         ..compiled
     }
 }
@@ -295,15 +313,37 @@ fn model_file_of(scene: &Scene) -> Option<PathBuf> {
 fn model_scene(path: &Path, run: &FileRun, entry: &ModelEntry, args: &RunArgs) -> Result<Scene, String> {
     let model_args = ModelRunArgs { sets: args.sets.clone(), t_final: args.t_final };
     let text = scene_text(&path.display().to_string(), run, entry.info, &model_args)?;
-    let mut scene = Scene::parse("<command line>", &text).map_err(|e| e.to_string())?;
+    let given = origins::Given { model: path, sets: &args.sets, t_final: args.t_final };
+    let mut scene = Scene::parse(origins::GENERATED, &text)
+        .map_err(|e| origins::point_at_arguments(&e.to_string(), &text, &given))?;
     // The model is found under the path as given (not relative to a scene file).
-    scene.path = PathBuf::from("<command line>");
+    scene.path = PathBuf::from(origins::GENERATED);
     Ok(scene)
 }
 
 /// Builds (or finds) the compiled binary (with Taylor coefficients when `taylor`) and runs it
-/// with the same arguments: on Unix in place of this process, so signals reach it directly.
+/// with the same arguments: on Unix in place of this process, so signals reach it directly. A
+/// cached binary that cannot be started (damaged) is removed and rebuilt once.
 fn run_compiled(file: &ModelFile, taylor: bool) -> Result<ExitCode, String> {
+    let first = start_compiled(file, taylor)?;
+    eprintln!(
+        "the cached compiled model {} cannot be started ({}): rebuilding it",
+        first.0.display(),
+        first.1
+    );
+    let _ = std::fs::remove_file(&first.0);
+    let (binary, e) = start_compiled(file, taylor)?;
+    Err(format!(
+        "cannot start the compiled model {} even after rebuilding it: {e}\n  help: run with --engine instant, or remove {} and try again",
+        binary.display(),
+        crate::compiled::cache_dir().display()
+    ))
+}
+
+/// Builds (or finds) the binary and runs it in place of this process; returns only when it
+/// could not be started: its path and why. Elsewhere than on Unix, runs it and returns its
+/// exit code.
+fn start_compiled(file: &ModelFile, taylor: bool) -> Result<(PathBuf, String), String> {
     let (binary, built) = crate::compiled::ensure_binary(file, taylor).map_err(|e| e.to_string())?;
     if built {
         eprintln!("compiled: {}", binary.display());
@@ -313,20 +353,15 @@ fn run_compiled(file: &ModelFile, taylor: bool) -> Result<ExitCode, String> {
     #[cfg(unix)]
     {
         use std::os::unix::process::CommandExt;
-        // Only returns when the binary could not be started.
         let e = command.exec();
-        Err(format!("cannot start the compiled model {}: {e}", binary.display()))
+        Ok((binary, e.to_string()))
     }
     #[cfg(not(unix))]
     {
         let status = command
             .status()
             .map_err(|e| format!("cannot start the compiled model {}: {e}", binary.display()))?;
-        Ok(match status.code() {
-            Some(0) => ExitCode::SUCCESS,
-            Some(c) => ExitCode::from(u8::try_from(c).unwrap_or(1)),
-            None => ExitCode::FAILURE,
-        })
+        std::process::exit(status.code().unwrap_or(1))
     }
 }
 
@@ -361,21 +396,37 @@ fn print_timing(scene: &Scene, registry: &Registry, times: usize) -> Result<(), 
 /// An error naming the parameter when a run's values are implausible (negative mass, inertia
 /// breaking the triangle inequality, non-unit Euler parameters).
 fn plausible(file: &ModelFile, problem: &crate::problem::Problem) -> Result<(), String> {
+    plausible_values(&file.model, &file.path.display().to_string(), problem)
+}
+
+/// As [`plausible`], for a built-in model compiled from a model file (its text is kept).
+fn plausible_builtin(entry: &ModelEntry, scene: &Scene, registry: &Registry) -> Result<(), String> {
+    let Some((path, text)) = entry.source else { return Ok(()) };
+    let Ok(checked) = kane_model::lang::check(path, text) else { return Ok(()) };
+    let problem = crate::resolve::resolve(scene, registry).map_err(|e| e.to_string())?;
+    plausible_values(&checked.model.model, &scene.path.display().to_string(), &problem)
+        .map_err(|e| format!("{e} (the model {})", entry.info.name))
+}
+
+/// The first implausible value (a negative mass, inertias that break the triangle
+/// inequality) of `problem` for `model`, as an error at `place`.
+fn plausible_values(
+    model: &kane_model::mechanics::Model,
+    place: &str,
+    problem: &crate::problem::Problem,
+) -> Result<(), String> {
     let info = problem.model;
     let value = |name: &str| {
         let param =
             info.param_names.iter().position(|p| p.eq_ignore_ascii_case(name)).map(|i| problem.params[i]);
         param.or_else(|| info.state(name).map(|i| problem.initial[i]))
     };
-    let issues = kane_model::plausibility::plausibility(&file.model, value);
+    let issues = kane_model::plausibility::plausibility(model, value);
     match issues.first() {
         None => Ok(()),
         Some(i) => Err(format!(
-            "{}: error: implausible value of {}: {}\n  help: change {} (under [parameters] or [initial], or with --set)",
-            file.path.display(),
-            i.parameter,
-            i.message,
-            i.parameter
+            "{place}: error: implausible value of {}: {}\n  help: change {} (under [parameters] or [initial], or with --set)",
+            i.parameter, i.message, i.parameter
         )),
     }
 }

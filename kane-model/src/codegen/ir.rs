@@ -47,25 +47,30 @@ impl Section {
     pub fn eval_in<T: num_traits::Float>(&self, read: impl Fn(Input) -> T, regs: &mut Vec<T>, out: &mut [T]) {
         regs.clear();
         for op in &self.ops {
-            let r = |v: u32| regs[v as usize];
-            let v = match *op {
-                Op::Input(k) => read(self.inputs[k as usize]),
-                Op::Const(c) => T::from(c).unwrap_or_else(T::nan),
-                Op::Add(a, b) => r(a) + r(b),
-                Op::Sub(a, b) => r(a) - r(b),
-                Op::Mul(a, b) => r(a) * r(b),
-                Op::Div(a, b) => r(a) / r(b),
-                Op::Neg(a) => -r(a),
-                Op::Powi(a, k) => r(a).powi(k),
-                Op::Sqrt(a) => r(a).sqrt(),
-                Op::Powf(a, b) => r(a).powf(r(b)),
-                Op::Func(f, a) => f.apply(r(a)),
-                Op::Atan2(a, b) => r(a).atan2(r(b)),
-            };
+            let v = self.apply(op, regs, &read);
             regs.push(v);
         }
         for (o, v) in out.iter_mut().zip(&self.results) {
             *o = regs[*v as usize];
+        }
+    }
+
+    /// The value of instruction `op`, its operands read from `regs` (the earlier values).
+    pub(crate) fn apply<T: num_traits::Float>(&self, op: &Op, regs: &[T], read: &impl Fn(Input) -> T) -> T {
+        let r = |v: u32| regs[v as usize];
+        match *op {
+            Op::Input(k) => read(self.inputs[k as usize]),
+            Op::Const(c) => T::from(c).unwrap_or_else(T::nan),
+            Op::Add(a, b) => r(a) + r(b),
+            Op::Sub(a, b) => r(a) - r(b),
+            Op::Mul(a, b) => r(a) * r(b),
+            Op::Div(a, b) => r(a) / r(b),
+            Op::Neg(a) => -r(a),
+            Op::Powi(a, k) => r(a).powi(k),
+            Op::Sqrt(a) => r(a).sqrt(),
+            Op::Powf(a, b) => r(a).powf(r(b)),
+            Op::Func(f, a) => f.apply(r(a)),
+            Op::Atan2(a, b) => r(a).atan2(r(b)),
         }
     }
 

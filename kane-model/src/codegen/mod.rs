@@ -8,6 +8,7 @@
 //! The same spec gives byte-identical code.
 
 pub mod event;
+pub mod fault;
 pub mod ir;
 pub mod linearize;
 mod lower;

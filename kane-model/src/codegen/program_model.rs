@@ -7,6 +7,7 @@ use crate::dual::Dual;
 use crate::runtime::{quaternion_from_dcm, ModelInfo, TaylorWork};
 use crate::spec::ModelSpec;
 
+use super::fault::{first_fault, near_division_by_zero, text, Fault};
 use super::ir::{Input, Program, Section};
 use super::meta::Meta;
 use super::print::is_quaternion;
@@ -144,6 +145,46 @@ impl ProgramModel {
 }
 
 impl ProgramModel {
+    /// The first operation of `rhs` (or of `derive`) at `(t, y)` whose operands are finite and
+    /// whose result is not, named (see [`super::fault`]).
+    pub fn rhs_fault(&self, t: f64, y: &[f64], params: &[f64]) -> Option<Fault> {
+        let derived = self.derive(params);
+        let at = At { t, y, rates: &[], params, derived: &derived };
+        first_fault(&self.program.derive, |i| at.read(i), &|i| self.input_name(i))
+            .or_else(|| first_fault(&self.program.rhs, |i| at.read(i), &|i| self.input_name(i)))
+    }
+
+    /// The quotient of `rhs` at `(t, y)` whose divisor cancels most nearly to zero (a
+    /// singularity approached), named; see [`super::fault::near_division_by_zero`].
+    pub fn rhs_near_fault(&self, t: f64, y: &[f64], params: &[f64]) -> Option<Fault> {
+        let derived = self.derive(params);
+        let at = At { t, y, rates: &[], params, derived: &derived };
+        near_division_by_zero(&self.program.rhs, |i| at.read(i), &|i| self.input_name(i))
+    }
+
+    /// The first faulty operation of output `k` at `(t, y)` (`rates` are `u'`), named.
+    pub fn output_fault(&self, k: usize, t: f64, y: &[f64], rates: &[f64], params: &[f64]) -> Option<Fault> {
+        let at = At { t, y, rates, params, derived: &[] };
+        first_fault(&self.program.outputs[k].section, |i| at.read(i), &|i| self.input_name(i))
+    }
+
+    /// An input as the model file names it (a parameter-only quantity written out).
+    fn input_name(&self, input: Input) -> String {
+        let info = self.info;
+        let state = |i: usize| info.state_names.get(i).copied().unwrap_or("?");
+        match input {
+            Input::Time => "T".to_string(),
+            Input::State(i) => state(i).to_string(),
+            Input::Param(i) => info.param_names.get(i).copied().unwrap_or("?").to_string(),
+            Input::Rate(i) => format!("{}'", state(info.n_coordinates + i)),
+            Input::Derived(i) => match self.program.derive.results.get(i) {
+                Some(&v) => format!("({})", text(&self.program.derive, v, &|i| self.input_name(i), 3)),
+                None => "?".to_string(),
+            },
+            Input::Slot(i) => format!("slot {i}"),
+        }
+    }
+
     /// Output `k` at `(t, y)` into `out` and its time derivative along `y' = dy` into `rate`
     /// (the section run in dual numbers); meaningful only for an output that reads no speed
     /// rates.

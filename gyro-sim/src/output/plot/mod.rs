@@ -2,6 +2,7 @@
 //! for: the time series like the paper's Figures 3-5 (`series`), the EJS elevation window
 //! (`elevation`) and the axle tip's trace seen from above (`trace`). Each is written atomically.
 
+mod drawable;
 mod elevation;
 mod panel;
 mod series;

@@ -4,6 +4,7 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
+use super::drawable::{clip, clipped, padded_range, DRAWABLE};
 use super::COLORS;
 
 /// What one panel shows.
@@ -18,24 +19,9 @@ pub(super) struct Panel<'a> {
     pub y_title: String,
 }
 
-/// The range of the series, widened when (nearly) constant and padded by 5 %.
+/// The range of the series (see [`padded_range`]).
 fn y_range(panel: &Panel<'_>) -> (f64, f64) {
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for r in panel.rows {
-        for (_, c) in &panel.series {
-            lo = lo.min(r[*c]);
-            hi = hi.max(r[*c]);
-        }
-    }
-    // A (nearly) constant series gets a visible range instead of magnified round-off.
-    let scale = lo.abs().max(hi.abs()).max(1e-300);
-    if hi - lo <= 1e-9 * scale || (hi - lo).is_nan() {
-        let mid = if lo.is_finite() { 0.5 * (lo + hi) } else { 0.0 };
-        let half = if mid == 0.0 { 1.0 } else { 0.05 * mid.abs() };
-        (lo, hi) = (mid - half, mid + half);
-    }
-    let pad = 0.05 * (hi - lo);
-    (lo - pad, hi + pad)
+    padded_range(panel.rows.iter().flat_map(|r| panel.series.iter().map(|(_, c)| r[*c])))
 }
 
 /// Draws `panel` on `area`: the chart on the left, the legend in a strip on the right.
@@ -46,6 +32,11 @@ pub(super) fn draw(area: &DrawingArea<BitMapBackend<'_>, Shift>, panel: &Panel<'
     let x0 = panel.rows.first().map_or(0.0, |r| r[0]);
     let x1 = panel.rows.last().map_or(1.0, |r| r[0]).max(x0 + 1e-12);
     let (lo, hi) = y_range(panel);
+    let beyond = panel.rows.iter().any(|r| panel.series.iter().any(|(_, c)| clipped(r[*c])));
+    let y_title = match beyond {
+        true => format!("{} (clipped at ±{DRAWABLE:e})", panel.y_title),
+        false => panel.y_title.clone(),
+    };
     let mut chart = ChartBuilder::on(&chart_area)
         .margin(12)
         .x_label_area_size(45)
@@ -55,14 +46,17 @@ pub(super) fn draw(area: &DrawingArea<BitMapBackend<'_>, Shift>, panel: &Panel<'
     chart
         .configure_mesh()
         .x_desc(panel.x_title.as_str())
-        .y_desc(panel.y_title.as_str())
+        .y_desc(y_title.as_str())
         .axis_desc_style(("sans-serif", 16))
         .draw()
         .map_err(|e| e.to_string())?;
     for (k, (_, c)) in panel.series.iter().enumerate() {
         let color = COLORS[k % COLORS.len()];
         chart
-            .draw_series(LineSeries::new(panel.rows.iter().map(|r| (r[0], r[*c])), color.stroke_width(2)))
+            .draw_series(LineSeries::new(
+                panel.rows.iter().map(|r| (r[0], clip(r[*c]))),
+                color.stroke_width(2),
+            ))
             .map_err(|e| e.to_string())?;
     }
     for (k, (label, _)) in panel.series.iter().enumerate() {

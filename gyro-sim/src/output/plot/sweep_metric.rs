@@ -10,6 +10,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::super::write_atomically;
+use super::drawable::padded_range;
 use super::register_font;
 
 /// One member: its varied values on the axes (`y` unused with one axis) and the metric (None
@@ -53,18 +54,6 @@ pub fn write_sweep_metric(
     })
 }
 
-/// The padded range of `values` (a unit-wide one around a single value).
-fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    let (lo, hi) = values
-        .filter(|v| v.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
-    if !lo.is_finite() {
-        return (0.0, 1.0);
-    }
-    let pad = if hi > lo { 0.05 * (hi - lo) } else { 0.5 * lo.abs().max(1.0) };
-    (lo - pad, hi + pad)
-}
-
 /// A chart over `x` and `y` on `area`, its mesh drawn with the axis `titles`.
 fn framed<'a, 'b>(
     area: &'a DrawingArea<BitMapBackend<'b>, Shift>,
@@ -96,8 +85,8 @@ fn draw_line(
 ) -> Result<(), String> {
     let mut ok: Vec<(f64, f64)> = points.iter().filter_map(|p| p.metric.map(|m| (p.x, m))).collect();
     ok.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let (x0, x1) = range(points.iter().map(|p| p.x));
-    let (y0, y1) = range(ok.iter().map(|p| p.1));
+    let (x0, x1) = padded_range(points.iter().map(|p| p.x));
+    let (y0, y1) = padded_range(ok.iter().map(|p| p.1));
     let mut chart = framed(area, (x0, x1), (y0, y1), (&axes.varied[0], axes.metric))?;
     let blue = RGBColor(31, 119, 180);
     // A line only through distinct x (a projection of a two-way sweep is markers alone).
@@ -119,8 +108,8 @@ fn draw_map(
 ) -> Result<(), String> {
     let (w, _) = area.dim_in_pixel();
     let (chart_area, bar_area) = area.split_horizontally(w.saturating_sub(130));
-    let (x0, x1) = range(points.iter().map(|p| p.x));
-    let (y0, y1) = range(points.iter().map(|p| p.y));
+    let (x0, x1) = padded_range(points.iter().map(|p| p.x));
+    let (y0, y1) = padded_range(points.iter().map(|p| p.y));
     let values = points.iter().filter_map(|p| p.metric);
     let (lo, hi) = values.clone().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
     let shade = |m: f64| viridis(if hi > lo { (m - lo) / (hi - lo) } else { 0.5 });

@@ -9,6 +9,7 @@
 mod bookkeeping;
 mod consistency;
 mod coordinates;
+mod dimensions;
 mod implicit;
 mod loads;
 mod marker;
@@ -48,6 +49,7 @@ fn checked(file: &str, source: &str, mut model: super::LoadedModel) -> Result<Ch
     diagnostics.extend(loads::repeated_loads(&model, source));
     diagnostics.extend(warnings::input_warnings(&model));
     diagnostics.extend(implicit::implicit_constants_without_values(&model));
+    diagnostics.extend(dimensions::units_against_use(&model, source));
     diagnostics.sort_by_key(|d| d.span.start);
     let report = Report { file: file.to_string(), source: source.to_string(), diagnostics };
     if report.diagnostics.iter().any(|d| d.severity == Severity::Error) {

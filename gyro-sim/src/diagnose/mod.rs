@@ -1,19 +1,28 @@
-//! Failures named: in comes a bound model at the state where an integration starts or last
-//! succeeded; out goes what is wrong there (motion constraints that lose rank, a singular or
-//! indefinite mass matrix, rates that are not finite or overflow), with the configuration, or
-//! nothing.
+//! Failures named: in comes a bound model at the state where an integration starts, where a
+//! failed one went wrong (found by [`probe`]) or last succeeded; out goes what is wrong there (motion constraints that lose rank, a singular or
+//! indefinite mass matrix, rates that are not finite or overflow, a singularity approached),
+//! with the configuration and the operation that made it, or nothing.
 //!
 //! The mass matrix of the speeds is read off the model's kinetic-energy output (generated from
 //! the same lowered program as the right-hand side): `T = u^T M u / 2 + b^T u + c`, so
 //! `M_ij = (T(e_i + e_j) - T(e_i - e_j) - T(-e_i + e_j) + T(-e_i - e_j)) / 4`.
 
+mod probe;
+
+pub(crate) use probe::probe;
+
+use kane_model::codegen::ProgramModel;
 use kane_model::mechanics::{reciprocal_condition, CONSTRAINT_RCOND_LIMIT};
 use kane_model::runtime::ModelInfo;
 
+use crate::problem::Problem;
 use crate::solve::{kinetic_energy_output, BoundModel, SolveError};
 
 /// A pivot this small against the largest diagonal entry makes the mass matrix singular.
 const SINGULAR_PIVOT: f64 = 1e-10;
+/// Where the step size collapsed, a pivot this small against the mass matrix's largest diagonal
+/// entry at the start names it as the cause.
+const COLLAPSED_PIVOT: f64 = 1e-6;
 
 /// The coordinates the equations read, `Q1 = 0 deg, Q2 = 90 deg` (angles integrated in radians
 /// shown in degrees): cyclic ones cannot matter to a configuration and, when no output needs
@@ -67,11 +76,17 @@ fn mass_matrix<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Option<Vec<f64>> {
 
 /// The first pivot of `M = L D L^T` that is not clearly positive: its index and value (only
 /// the lower triangle is read).
-fn bad_pivot(mut m: Vec<f64>, n: usize) -> Option<(usize, f64)> {
-    let scale = (0..n).map(|i| m[i * n + i].abs()).fold(0.0, f64::max);
+fn bad_pivot(m: Vec<f64>, n: usize) -> Option<(usize, f64)> {
+    bad_pivot_against(m, n, 0.0, SINGULAR_PIVOT)
+}
+
+/// The first pivot not above `tolerance` times the largest diagonal entry of `m` or
+/// `reference`, whichever is larger.
+fn bad_pivot_against(mut m: Vec<f64>, n: usize, reference: f64, tolerance: f64) -> Option<(usize, f64)> {
+    let scale = (0..n).map(|i| m[i * n + i].abs()).fold(reference, f64::max);
     for k in 0..n {
         let d = m[k * n + k];
-        if !d.is_finite() || d <= SINGULAR_PIVOT * scale || scale == 0.0 {
+        if !d.is_finite() || d <= tolerance * scale || scale == 0.0 {
             return Some((k, d));
         }
         for i in k + 1..n {
@@ -88,7 +103,30 @@ fn bad_pivot(mut m: Vec<f64>, n: usize) -> Option<(usize, f64)> {
 pub(crate) fn mass_matrix_error<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Option<SolveError> {
     let info = sys.info();
     let n = info.state_names.len() - info.n_coordinates;
-    let (k, pivot) = bad_pivot(mass_matrix(sys, t, y)?, n)?;
+    let found = bad_pivot(mass_matrix(sys, t, y)?, n);
+    singular_mass_matrix(sys, t, y, found)
+}
+
+/// Where the step size collapsed at `(t, y)`: a mass matrix whose pivot fell below
+/// [`COLLAPSED_PIVOT`] of its size at the start `y0`, named with the configuration.
+fn collapsed_mass_matrix<B: BoundModel>(sys: &B, t: f64, y: &[f64], y0: &[f64]) -> Option<SolveError> {
+    let info = sys.info();
+    let n = info.state_names.len() - info.n_coordinates;
+    let start = mass_matrix(sys, 0.0, y0)?;
+    let reference = (0..n).map(|i| start[i * n + i].abs()).fold(0.0, f64::max);
+    let found = bad_pivot_against(mass_matrix(sys, t, y)?, n, reference, COLLAPSED_PIVOT);
+    singular_mass_matrix(sys, t, y, found)
+}
+
+/// The error for the pivot `found` (its index and value) of the mass matrix at `(t, y)`.
+fn singular_mass_matrix<B: BoundModel>(
+    sys: &B,
+    t: f64,
+    y: &[f64],
+    found: Option<(usize, f64)>,
+) -> Option<SolveError> {
+    let info = sys.info();
+    let (k, pivot) = found?;
     Some(SolveError::SingularMassMatrix {
         time: t,
         configuration: configuration(info, y),
@@ -141,6 +179,7 @@ pub(crate) fn rates_error<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Option<S
         time: t,
         value: dy[i],
         state: state_text(info, y),
+        operation: None,
     })
 }
 
@@ -160,23 +199,73 @@ fn overflow_error<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Option<SolveErro
     found.map(|(name, value)| SolveError::Overflow { name, time: t, value })
 }
 
-/// `error` explained at the last good state `(t, y)` when a cause is found there: a singular
-/// mass matrix, rates that are not finite, values about to overflow; otherwise `error` itself.
-pub(crate) fn explain<B: BoundModel>(sys: &B, error: SolveError, t: f64, y: &[f64]) -> SolveError {
-    let explainable = matches!(
+/// Whether a failure may have a cause that [`explain`] can name.
+pub(crate) fn explainable(error: &SolveError) -> bool {
+    matches!(
         error,
         SolveError::NonFiniteState { .. }
             | SolveError::NonFiniteOutput { .. }
             | SolveError::Ode(crate::ode::OdeError::StepSizeUnderflow { .. })
-    );
-    if !explainable {
+    )
+}
+
+/// `error` explained: first where the probe found the failure (`probed`: a full state whose
+/// rates are not finite, or the last step's end), then at the last good output `(t, y)`. A
+/// cause found there (constraints losing rank, a singular mass matrix, rates that are not
+/// finite, values about to overflow, a singularity approached) replaces it, with the operation
+/// that made it named when the model's program is known.
+pub(crate) fn explain<B: BoundModel>(
+    sys: &B,
+    problem: &Problem,
+    error: SolveError,
+    t: f64,
+    y: &[f64],
+    probed: Option<(f64, Vec<f64>)>,
+) -> SolveError {
+    if !explainable(&error) {
         return error;
     }
-    constraint_rank_error(sys, t, y)
-        .or_else(|| mass_matrix_error(sys, t, y))
-        .or_else(|| rates_error(sys, t, y))
-        .or_else(|| overflow_error(sys, t, y))
-        .unwrap_or(error)
+    let program = problem.program.as_ref().and_then(|p| p.program()).filter(|p| {
+        let (a, b) = (p.info(), sys.info());
+        a.param_names == b.param_names && a.state_names == b.state_names
+    });
+    let params = &problem.params;
+    let cause_at = |t: f64, y: &[f64]| {
+        constraint_rank_error(sys, t, y)
+            .or_else(|| mass_matrix_error(sys, t, y))
+            .or_else(|| rates_error(sys, t, y).map(|e| named_operation(e, program.as_deref(), params, t, y)))
+            .or_else(|| overflow_error(sys, t, y))
+    };
+    if let Some((tp, yp)) = &probed {
+        if let Some(e) = cause_at(*tp, yp) {
+            return e;
+        }
+        if let Some(e) = collapsed_mass_matrix(sys, *tp, yp, &problem.initial) {
+            return e;
+        }
+        let near = program.as_deref().and_then(|p| p.rhs_near_fault(*tp, yp, params));
+        if let Some(fault) = near {
+            let state = state_text(sys.info(), yp);
+            return SolveError::NearSingularity { time: *tp, state, operation: fault.to_string() };
+        }
+    }
+    cause_at(t, y).unwrap_or(error)
+}
+
+/// `error` (rates that are not finite at `(t, y)`) with the operation that made them named.
+fn named_operation(
+    error: SolveError,
+    program: Option<&ProgramModel>,
+    params: &[f64],
+    t: f64,
+    y: &[f64],
+) -> SolveError {
+    match (error, program.and_then(|p| p.rhs_fault(t, y, params))) {
+        (SolveError::RateNotFinite { name, time, value, state, .. }, Some(fault)) => {
+            SolveError::RateNotFinite { name, time, value, state, operation: Some(fault.to_string()) }
+        }
+        (error, _) => error,
+    }
 }
 
 #[cfg(test)]
