@@ -42,9 +42,11 @@ enum Command {
     /// A parameter sweep: the scene once per member of a grid (`--vary NAME=START:STOP:N`) or a
     /// Latin-hypercube sample (`--vary NAME=START:STOP --samples N --seed S`), in parallel;
     /// writes DIR/sweep.csv (one row per member) and DIR/timing.csv; resumes what a killed run
-    /// left; `--shard K/N` (or a Slurm array task) runs a disjoint slice.
+    /// of the same plan left (another plan is refused; --new starts over); `--shard K/N` (or a
+    /// Slurm array task) runs a disjoint slice.
     Sweep(SweepCli),
-    /// Joins shard folders' sweep.csv into DIR/sweep.csv, in member order.
+    /// Joins shard folders' sweep.csv into DIR/sweep.csv, in member order, once they are one
+    /// sweep's shards, each once, holding every member exactly once.
     SweepMerge {
         /// Output folder.
         #[arg(long)]
@@ -84,9 +86,14 @@ struct SweepCli {
     /// The sample's seed.
     #[arg(long, default_value_t = 1)]
     seed: u64,
-    /// This run's slice, K/N (K from 1); defaults to the Slurm array task when set.
+    /// This run's slice, K/N (K from 1); defaults to the Slurm array task when set (an evenly
+    /// spaced array: rank (ID-MIN)/STEP of COUNT; other sparse arrays need --shard).
     #[arg(long)]
     shard: Option<String>,
+    /// Start over when the folder holds another sweep's rows (they are removed); without it
+    /// such a folder is refused.
+    #[arg(long)]
+    new: bool,
     /// Output folder.
     #[arg(long)]
     out: PathBuf,
@@ -170,6 +177,7 @@ pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCod
                 samples: a.samples,
                 seed: a.seed,
                 shard: a.shard.as_deref(),
+                new: a.new,
                 out: &a.out,
             };
             sweep::sweep_command(&args, &registry)

@@ -1,16 +1,19 @@
 //! `gyro-sim sweep` and `gyro-sim sweep-merge`: in come a scene, ranges to vary and a folder (or
 //! shard folders); out go `sweep.csv` (one row per member, member order, reproducible byte for
-//! byte) and `timing.csv` (wall times), with a progress bar. Members already in the folder's
-//! `sweep.csv` are skipped, so a killed run resumes where it stopped.
+//! byte) and `timing.csv` (wall times), with a progress bar. A folder holds one sweep: its plan
+//! is kept in `sweep.plan.toml`, a re-run of the same plan skips the members already done (so a
+//! killed or interrupted run resumes where it stopped), another plan is refused (or, with
+//! `--new`, starts over), and a lock keeps a second sweep out while one runs.
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::registry::Registry;
 use crate::scene::Scene;
-use crate::sweep::{self, Member, Range};
+use crate::sweep::{self, Design, MemberSet, Members, Range, Shard, SweepPlan};
 
 /// What a sweep is asked.
 pub struct SweepArgs<'a> {
@@ -24,124 +27,159 @@ pub struct SweepArgs<'a> {
     pub seed: u64,
     /// `K/N`, 1-based.
     pub shard: Option<&'a str>,
+    /// Start over when the folder holds another sweep.
+    pub new: bool,
     /// The folder.
     pub out: &'a Path,
 }
 
 /// Runs the members of this shard not yet in `out/sweep.csv` (or its journal, after a kill),
-/// journaling each as it ends, and rewrites `sweep.csv` and `timing.csv` with all of them.
+/// journaling each as it ends, and rewrites `sweep.csv` and `timing.csv` with all of them; the
+/// folder must hold this sweep (or none) and no other sweep may be running in it.
 pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCode, String> {
     let scene = Scene::load(args.scene).map_err(|e| e.to_string())?;
     let registry = super::with_file_model(&scene, registry.clone())?;
-    let members = match args.samples {
-        Some(n) => sweep::latin_hypercube(args.vary, n, args.seed),
-        None => sweep::grid(args.vary)?,
+    let design = match args.samples {
+        Some(count) => Design::Samples { count, seed: args.seed },
+        None => Design::Grid,
     };
-    let (k, n) = shard_of(args.shard)?;
-    let members = sweep::shard(members, k, n);
+    let members = Members::new(args.vary, &design)?;
+    let shard = Shard::resolve(args.shard, &|name| std::env::var(name).ok())?;
+    let plan = plan_of(&scene, args.vary, &design, members.len(), shard)?;
     let names: Vec<String> = args.vary.iter().map(|r| r.name.clone()).collect();
     let header = sweep::table::header(&names, &sweep::value_columns(&scene, &registry)?);
-    let csv_path = args.out.join("sweep.csv");
-    let (old_header, rows) = sweep::read_rows(&csv_path)?;
-    if !old_header.is_empty() && old_header != header {
+    std::fs::create_dir_all(args.out).map_err(|e| format!("{}: {e}", args.out.display()))?;
+    let _lock = sweep::lock::FolderLock::take(args.out)?;
+    sweep::identity::bind(args.out, &plan, args.new)?;
+    let fingerprint = plan.fingerprint();
+    let (journal, journaled) = sweep::Journal::open(args.out, &fingerprint, &header)?;
+    let done = done_members(args.out, &header, &journaled, members.len())?;
+    let shard_len = (shard.index..members.len()).step_by(shard.count).len();
+    let todo = sweep::todo(members.len(), shard, &done);
+    let run =
+        Run { scene: &scene, vary: args.vary, members: &members, registry: &registry, journal: &journal };
+    let (ran, failed) =
+        run.journaled(todo, shard_len.saturating_sub(done.len()), header.len() - names.len() - 4)?;
+    let entries = sweep::scan_journal(args.out, &fingerprint, &header)?;
+    if let Some(by) = crate::interrupt::requested() {
         return Err(format!(
-            "{} holds another sweep's rows (other columns): give another --out",
-            csv_path.display()
+            "{by}: {} members done are kept in {}; run the same command again to resume",
+            entries.len(),
+            args.out.join(sweep::JOURNAL_FILE).display()
         ));
     }
-    std::fs::create_dir_all(args.out).map_err(|e| format!("{}: {e}", args.out.display()))?;
-    let journaled = sweep::read_journal(args.out, &header)?;
-    let done: Vec<usize> = rows
-        .iter()
-        .chain(journaled.iter().map(|(r, _)| r))
-        .filter_map(|r| sweep::table::member_of(r))
-        .collect();
-    let todo: Vec<Member> = members.into_iter().filter(|m| !done.contains(&m.index)).collect();
-    let journal = sweep::Journal::open(args.out, &header)?;
-    let results =
-        run_journaled(&scene, args.vary, &todo, &registry, &journal, header.len() - names.len() - 4)?;
-    let journaled = sweep::read_journal(args.out, &header)?;
-    finish(args.out, &header, rows, &journaled)?;
+    sweep::finish(args.out, &header, entries)?;
     journal.remove()?;
-    let failed = results.iter().filter(|(r, _)| r.status != "ok").count();
     println!(
-        "{}: {} members run ({} failed, named in their rows), {} already done; wrote {}",
+        "{}: {ran} members run ({failed} failed, named in their rows), {} already done; wrote {}",
         scene.title,
-        results.len(),
-        failed,
         done.len(),
-        csv_path.display()
+        args.out.join("sweep.csv").display()
     );
     Ok(ExitCode::SUCCESS)
 }
 
-/// Runs `todo` with a progress bar, appending each finished member to `journal`.
-fn run_journaled(
+/// The plan of a sweep of `scene`: what its rows depend on.
+fn plan_of(
     scene: &Scene,
     vary: &[Range],
-    todo: &[Member],
-    registry: &Registry,
-    journal: &sweep::Journal,
-    n_values: usize,
-) -> Result<Vec<(sweep::SweepRow, f64)>, String> {
-    let bar = ProgressBar::new(todo.len() as u64).with_style(
-        ProgressStyle::with_template("{bar:40} {pos}/{len} members, {eta} left")
-            .map_err(|e| e.to_string())?,
-    );
-    let journal_error = std::sync::Mutex::new(None::<String>);
-    let record = |row: &sweep::SweepRow, ms: f64| {
-        if let Err(e) = journal.record(&sweep::table::cells(row, n_values), ms) {
-            journal_error.lock().map(|mut slot| slot.get_or_insert(e).clone()).ok();
+    design: &Design,
+    members: usize,
+    shard: Shard,
+) -> Result<SweepPlan, String> {
+    let (model, model_text) = match super::model_file_of(scene) {
+        Some(path) => {
+            let text = std::fs::read(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+            (path.display().to_string(), sweep::identity::fnv1a64(&text))
         }
-        bar.inc(1);
+        None => (scene.model.clone(), "built-in".to_string()),
     };
-    let results = sweep::run_members(scene, vary, todo, registry, &record);
-    bar.finish_and_clear();
-    match journal_error.into_inner().ok().flatten() {
-        Some(e) => Err(format!("the sweep's journal could not be written: {e}")),
-        None => Ok(results),
-    }
+    let design = match design {
+        Design::Grid => "grid".to_string(),
+        Design::Samples { count, seed } => format!("Latin-hypercube sample of {count} from seed {seed}"),
+    };
+    Ok(SweepPlan {
+        scene: scene.path.display().to_string(),
+        scene_text: sweep::identity::fnv1a64(scene.source.as_bytes()),
+        model,
+        model_text,
+        vary: vary.iter().map(Range::to_string).collect(),
+        design,
+        members,
+        shard: shard.index + 1,
+        shards: shard.count,
+    })
 }
 
-/// Writes `sweep.csv` (the earlier rows and the journaled ones, member order) and `timing.csv`
-/// (the earlier wall times and the journaled ones).
-fn finish(
+/// The members already done in `out`: rows of its `sweep.csv` (whose columns must be `header`)
+/// and those `journaled`.
+fn done_members(
     out: &Path,
     header: &[String],
-    mut rows: Vec<Vec<String>>,
-    journaled: &sweep::Journaled,
-) -> Result<(), String> {
-    rows.extend(journaled.iter().map(|(r, _)| r.clone()));
-    rows.sort_by_key(|r| sweep::table::member_of(r));
-    rows.dedup_by_key(|r| sweep::table::member_of(r));
-    sweep::write_rows(&out.join("sweep.csv"), header, &rows)?;
-    let timing_path = out.join("timing.csv");
-    let (_, mut timing) = sweep::read_rows(&timing_path)?;
-    timing.extend(journaled.iter().map(|(r, ms)| vec![r[0].clone(), format!("{ms:.4}")]));
-    timing.sort_by_key(|r| sweep::table::member_of(r));
-    timing.dedup_by_key(|r| sweep::table::member_of(r));
-    sweep::write_rows(&timing_path, &["member".to_string(), "wall_ms".to_string()], &timing)
+    journaled: &[sweep::Entry],
+    count: usize,
+) -> Result<MemberSet, String> {
+    let mut done = MemberSet::new(count);
+    let csv_path = out.join("sweep.csv");
+    if let Some(mut rows) = sweep::table::RowLines::open(&csv_path)? {
+        if rows.header != header {
+            return Err(format!(
+                "{} holds another sweep's rows (other columns): give another --out, or --new to start over",
+                csv_path.display()
+            ));
+        }
+        while let Some((m, _)) = rows.next_row()? {
+            done.insert(m);
+        }
+    }
+    for e in journaled {
+        done.insert(e.member);
+    }
+    Ok(done)
 }
 
-/// The 0-based shard and the count: `--shard K/N` (K from 1), else Slurm's array task
-/// (`SLURM_ARRAY_TASK_ID` less `SLURM_ARRAY_TASK_MIN`, of `SLURM_ARRAY_TASK_COUNT`), else all.
-fn shard_of(arg: Option<&str>) -> Result<(usize, usize), String> {
-    if let Some(text) = arg {
-        let bad = || format!("--shard {text}: write K/N with 1 <= K <= N, e.g. --shard 2/4");
-        let (k, n) = text.split_once('/').ok_or_else(bad)?;
-        let (k, n): (usize, usize) =
-            (k.trim().parse().map_err(|_| bad())?, n.trim().parse().map_err(|_| bad())?);
-        if k == 0 || k > n {
-            return Err(bad());
+/// What members run with.
+struct Run<'a> {
+    scene: &'a Scene,
+    vary: &'a [Range],
+    members: &'a Members,
+    registry: &'a Registry,
+    journal: &'a sweep::Journal,
+}
+
+impl Run<'_> {
+    /// Runs `todo` (`len` members) with a progress bar, appending each finished member to the
+    /// journal; how many ran and how many of them failed.
+    fn journaled(
+        &self,
+        todo: impl Iterator<Item = usize> + Send,
+        len: usize,
+        n_values: usize,
+    ) -> Result<(usize, usize), String> {
+        let bar = ProgressBar::new(len as u64).with_style(
+            ProgressStyle::with_template("{bar:40} {pos}/{len} members, {eta} left")
+                .map_err(|e| e.to_string())?,
+        );
+        let (ran, failed) = (AtomicUsize::new(0), AtomicUsize::new(0));
+        let journal_error = std::sync::Mutex::new(None::<String>);
+        let record = |row: &sweep::SweepRow, ms: f64| {
+            match self.journal.record(&sweep::table::cells(row, n_values), ms) {
+                Ok(()) => {
+                    ran.fetch_add(1, Ordering::Relaxed);
+                    failed.fetch_add(usize::from(row.status != "ok"), Ordering::Relaxed);
+                }
+                Err(e) => {
+                    journal_error.lock().map(|mut slot| slot.get_or_insert(e).clone()).ok();
+                }
+            }
+            bar.inc(1);
+        };
+        sweep::run_members(self.scene, self.vary, self.members, todo, self.registry, &record);
+        bar.finish_and_clear();
+        match journal_error.into_inner().ok().flatten() {
+            Some(e) => Err(format!("the sweep's journal could not be written: {e}")),
+            None => Ok((ran.into_inner(), failed.into_inner())),
         }
-        return Ok((k - 1, n));
-    }
-    let var = |name: &str| std::env::var(name).ok().and_then(|v| v.parse::<usize>().ok());
-    match (var("SLURM_ARRAY_TASK_ID"), var("SLURM_ARRAY_TASK_COUNT")) {
-        (Some(id), Some(count)) if count > 0 => {
-            Ok((id - var("SLURM_ARRAY_TASK_MIN").unwrap_or(0).min(id), count))
-        }
-        _ => Ok((0, 1)),
     }
 }
 

@@ -1,8 +1,9 @@
 //! A running sweep's journal: in come finished members' rows, one at a time from any thread;
 //! out goes `sweep.journal.csv` beside `sweep.csv`, one line per member appended and flushed as
-//! soon as the member ends, so a killed sweep keeps every member it finished. A line is complete
-//! once its newline is written: reading keeps only complete lines. Each line is the member's
-//! wall time in milliseconds, then its `sweep.csv` cells.
+//! soon as the member ends, so a killed sweep keeps every member it finished. The first line is
+//! the sweep's fingerprint (`plan,fnv1a64:...`), the second the header; then each line is the
+//! member's wall time in milliseconds and its `sweep.csv` cells. A line is complete once its
+//! newline is written: a cut last line is dropped when the journal is opened again.
 
 use std::fs::{File, OpenOptions};
 use std::io::Write;
@@ -18,16 +19,24 @@ pub struct Journal {
     file: Mutex<File>,
 }
 
-/// The rows a journal holds: each member's cells and wall time (ms).
-pub type Journaled = Vec<(Vec<String>, f64)>;
+/// One journaled member: its index and where its line is in the file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Entry {
+    /// The member's index.
+    pub member: usize,
+    /// The line's first byte.
+    pub start: u64,
+    /// One past its newline.
+    pub end: u64,
+}
 
 impl Journal {
-    /// Opens (creating) the journal in `dir`, whose rows carry `header`; an error when it holds
-    /// another sweep's rows.
-    pub fn open(dir: &Path, header: &[String]) -> Result<Journal, String> {
+    /// Opens (creating) the journal in `dir` of the sweep `fingerprint` whose rows carry
+    /// `header`, with the members it holds; an error when it holds another sweep's rows.
+    pub fn open(dir: &Path, fingerprint: &str, header: &[String]) -> Result<(Journal, Vec<Entry>), String> {
         let path = dir.join(JOURNAL_FILE);
-        drop_cut_line(&path)?;
-        let fresh = std::fs::metadata(&path).map(|m| m.len() == 0).unwrap_or(true);
+        let fresh = !has_header(&path)?;
+        let entries = if fresh { Vec::new() } else { scan(dir, fingerprint, header)? };
         let file = OpenOptions::new()
             .create(true)
             .append(true)
@@ -37,9 +46,11 @@ impl Journal {
         if fresh {
             let mut line = vec!["wall_ms".to_string()];
             line.extend(header.iter().cloned());
-            journal.append(&line)?;
+            let mut head = super::table::record_bytes(&["plan".to_string(), fingerprint.to_string()])?;
+            head.extend(super::table::record_bytes(&line)?);
+            journal.write(&head)?;
         }
-        Ok(journal)
+        Ok((journal, entries))
     }
 
     /// Appends one member's `cells` and wall time, flushed before returning.
@@ -51,13 +62,13 @@ impl Journal {
 
     /// Writes `line` as one CSV record in a single write.
     fn append(&self, line: &[String]) -> Result<(), String> {
-        let mut w = csv::Writer::from_writer(Vec::new());
-        w.write_record(line).map_err(|e| e.to_string())?;
-        let bytes = w.into_inner().map_err(|e| e.to_string())?;
+        self.write(&super::table::record_bytes(line)?)
+    }
+
+    /// Writes `bytes` in a single write, flushed.
+    fn write(&self, bytes: &[u8]) -> Result<(), String> {
         let mut file = self.file.lock().map_err(|_| "the sweep journal's lock is poisoned".to_string())?;
-        file.write_all(&bytes)
-            .and_then(|()| file.flush())
-            .map_err(|e| format!("{}: {e}", self.path.display()))
+        file.write_all(bytes).and_then(|()| file.flush()).map_err(|e| format!("{}: {e}", self.path.display()))
     }
 
     /// Removes the journal (its rows are in `sweep.csv`).
@@ -66,48 +77,107 @@ impl Journal {
     }
 }
 
-/// Cuts the journal at `path` back to its last complete line (a killed run's half-written line).
-fn drop_cut_line(path: &Path) -> Result<(), String> {
-    let Ok(bytes) = std::fs::read(path) else { return Ok(()) };
-    let complete = bytes.iter().rposition(|b| *b == b'\n').map_or(0, |i| i + 1);
-    if complete == bytes.len() {
-        return Ok(());
+/// Whether the journal at `path` has its two first lines (plan and header) whole: after
+/// cutting a half-written last line, a journal without them is emptied (a run killed as it began).
+fn has_header(path: &Path) -> Result<bool, String> {
+    use std::io::BufRead;
+    drop_cut_line(path)?;
+    let Ok(file) = File::open(path) else { return Ok(false) };
+    let mut lines = std::io::BufReader::new(file).split(b'\n');
+    if lines.next().is_some() && lines.next().is_some() {
+        return Ok(true);
     }
     let file = OpenOptions::new().write(true).open(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    file.set_len(complete as u64).map_err(|e| format!("{}: {e}", path.display()))
+    file.set_len(0).map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(false)
 }
 
-/// The complete rows of the journal in `dir` whose header is `header`: none when there is no
-/// journal, an error when it belongs to another sweep.
-pub fn read_journal(dir: &Path, header: &[String]) -> Result<Journaled, String> {
+/// Cuts the journal at `path` back to its last complete line (a killed run's half-written line).
+fn drop_cut_line(path: &Path) -> Result<(), String> {
+    use std::io::{Read, Seek, SeekFrom};
+    let Ok(mut file) = OpenOptions::new().read(true).write(true).open(path) else { return Ok(()) };
+    let fail = |e: std::io::Error| format!("{}: {e}", path.display());
+    let len = file.metadata().map_err(fail)?.len();
+    let mut end = len;
+    let mut chunk = vec![0u8; 1 << 16];
+    // Back from the end, a chunk at a time, to the last newline.
+    let complete = loop {
+        if end == 0 {
+            break 0;
+        }
+        let start = end.saturating_sub(chunk.len() as u64);
+        let part = &mut chunk[..(end - start) as usize];
+        file.seek(SeekFrom::Start(start)).and_then(|_| file.read_exact(part)).map_err(fail)?;
+        if let Some(i) = part.iter().rposition(|b| *b == b'\n') {
+            break start + i as u64 + 1;
+        }
+        end = start;
+    };
+    if complete < len {
+        file.set_len(complete).map_err(fail)?;
+    }
+    Ok(())
+}
+
+/// The length of `file` up to its last byte when that is a newline, else one less (a cut line
+/// then ends past it).
+fn complete_length(mut file: &File) -> std::io::Result<u64> {
+    use std::io::{Read, Seek, SeekFrom};
+    let len = file.metadata()?.len();
+    if len == 0 {
+        return Ok(0);
+    }
+    let mut last = [0u8];
+    file.seek(SeekFrom::Start(len - 1))?;
+    file.read_exact(&mut last)?;
+    file.seek(SeekFrom::Start(0))?;
+    Ok(if last[0] == b'\n' { len } else { len - 1 })
+}
+
+/// The complete member lines of the journal in `dir` (none when there is none), checked to be
+/// of the sweep `fingerprint` with `header`.
+pub fn scan(dir: &Path, fingerprint: &str, header: &[String]) -> Result<Vec<Entry>, String> {
     let path = dir.join(JOURNAL_FILE);
-    let Ok(text) = std::fs::read_to_string(&path) else { return Ok(Vec::new()) };
-    let complete = &text[..text.rfind('\n').map_or(0, |i| i + 1)];
-    let mut r = csv::ReaderBuilder::new().has_headers(false).flexible(true).from_reader(complete.as_bytes());
-    let mut records = r.records();
-    match records.next() {
-        None => return Ok(Vec::new()),
-        Some(first) => {
-            let first = first.map_err(|e| format!("{}: {e}", path.display()))?;
-            if first.iter().skip(1).ne(header.iter().map(String::as_str)) {
-                return Err(format!(
-                    "{} belongs to another sweep (other columns): give another --out or remove it",
-                    path.display()
-                ));
+    let file = match File::open(&path) {
+        Ok(f) => f,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(e) => return Err(format!("{}: {e}", path.display())),
+    };
+    let complete = complete_length(&file).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut r = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .flexible(true)
+        .from_reader(std::io::BufReader::new(file));
+    let bad = |what: &str| format!("{}: {what}: give --new to start over, or another --out", path.display());
+    let mut rec = csv::ByteRecord::new();
+    let read = |r: &mut csv::Reader<std::io::BufReader<File>>, rec: &mut csv::ByteRecord| {
+        r.read_byte_record(rec).map_err(|e| bad(&e.to_string()))
+    };
+    let plan_line = [b"plan".as_slice(), fingerprint.as_bytes()];
+    if read(&mut r, &mut rec)? && !rec.iter().eq(plan_line) {
+        return Err(bad("it is another sweep's journal (its first line is not this sweep's plan)"));
+    }
+    let wanted = std::iter::once("wall_ms").chain(header.iter().map(String::as_str)).map(str::as_bytes);
+    if read(&mut r, &mut rec)? && !rec.iter().eq(wanted) {
+        return Err(bad("its columns are not this sweep's"));
+    }
+    let mut entries = Vec::new();
+    loop {
+        let start = r.position().byte();
+        if !read(&mut r, &mut rec)? {
+            break;
+        }
+        let end = r.position().byte();
+        let member = std::str::from_utf8(rec.get(1).unwrap_or_default()).ok().and_then(|m| m.parse().ok());
+        match member {
+            Some(member) if rec.len() == header.len() + 1 && end <= complete => {
+                entries.push(Entry { member, start, end })
             }
+            _ if end >= complete => break, // a line still being written
+            _ => return Err(bad(&format!("a damaged line ({} cells) at byte {start}", rec.len()))),
         }
     }
-    let mut rows = Vec::new();
-    for rec in records {
-        let rec = rec.map_err(|e| format!("{}: {e}", path.display()))?;
-        let cells: Vec<String> = rec.iter().map(String::from).collect();
-        let wall = cells.first().and_then(|w| w.parse::<f64>().ok());
-        match wall {
-            Some(ms) if cells.len() == header.len() + 1 => rows.push((cells[1..].to_vec(), ms)),
-            _ => return Err(format!("{}: a damaged line ({} cells)", path.display(), cells.len())),
-        }
-    }
-    Ok(rows)
+    Ok(entries)
 }
 
 #[cfg(test)]
@@ -123,24 +193,27 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("journal-test-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let _ = std::fs::remove_file(dir.join(JOURNAL_FILE));
-        let j = Journal::open(&dir, &header()).unwrap();
+        let (j, _) = Journal::open(&dir, "fp", &header()).unwrap();
         j.record(&["0".into(), "1.5".into(), "ok".into()], 2.0).unwrap();
         j.record(&["1".into(), "2.5".into(), "a, \"quoted\" failure".into()], 3.0).unwrap();
         drop(j);
         // A kill in the middle of a line: its bytes without the newline.
         let mut f = OpenOptions::new().append(true).open(dir.join(JOURNAL_FILE)).unwrap();
         f.write_all(b"4.0000,2,3.5,o").unwrap();
-        let rows = read_journal(&dir, &header()).unwrap();
-        assert_eq!(rows.len(), 2);
-        assert_eq!(rows[1].0[2], "a, \"quoted\" failure");
-        assert_eq!(rows[0].1, 2.0);
+        let text = std::fs::read_to_string(dir.join(JOURNAL_FILE)).unwrap();
+        let entries = scan(&dir, "fp", &header()).unwrap();
+        assert_eq!(entries.iter().map(|e| e.member).collect::<Vec<_>>(), [0, 1]);
+        let line = &text[entries[1].start as usize..entries[1].end as usize];
+        assert_eq!(line, "3.0000,1,2.5,\"a, \"\"quoted\"\" failure\"\n");
         let other = ["member", "Z", "status"].map(String::from);
-        assert!(read_journal(&dir, &other).unwrap_err().contains("another sweep"));
+        assert!(scan(&dir, "fp", &other).unwrap_err().contains("columns are not this sweep's"));
+        assert!(Journal::open(&dir, "other", &header()).is_err_and(|e| e.contains("another sweep's journal")));
         // Reopening drops the cut line, so the next record starts a line of its own.
-        let j = Journal::open(&dir, &header()).unwrap();
+        let (j, held) = Journal::open(&dir, "fp", &header()).unwrap();
+        assert_eq!(held.len(), 2);
         j.record(&["2".into(), "3.5".into(), "ok".into()], 4.0).unwrap();
-        let rows = read_journal(&dir, &header()).unwrap();
-        assert_eq!(rows.iter().map(|r| r.0[0].as_str()).collect::<Vec<_>>(), ["0", "1", "2"]);
+        let members: Vec<usize> = scan(&dir, "fp", &header()).unwrap().iter().map(|e| e.member).collect();
+        assert_eq!(members, [0, 1, 2]);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

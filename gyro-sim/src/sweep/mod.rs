@@ -1,27 +1,41 @@
 //! Parameter sweeps: in come a scene, the ranges to vary and the members to run (a grid or a
 //! Latin-hypercube sample, optionally one shard of them); out go one row per member (the varied
 //! values, a status that is `ok` or the named failure, the final state, the minimum and maximum
-//! of each written column, the first time of each event, the cost) and its wall time kept apart, so that the rows depend on
-//! the inputs alone. Members run in parallel; one member's failure is its row, never the end.
+//! of each written column, the first time of each event, the cost) and its wall time kept apart,
+//! so that the rows depend on the inputs alone. Members run in parallel; one member's failure is
+//! its row, never the end. A folder holds one sweep: bound to its plan ([`identity`]), locked
+//! while it runs ([`lock`]); members are made from their index, finished ones streamed to a
+//! journal and from it into `sweep.csv` ([`finish`]), so memory does not grow with the rows.
 
+mod finish;
+pub mod identity;
 mod journal;
+pub mod lock;
+mod member_set;
+mod merge;
 mod plan;
+mod shard;
 pub mod table;
 
 use std::time::Instant;
 
 use rayon::prelude::*;
 
-pub use journal::{read_journal, Journal, Journaled, JOURNAL_FILE};
-pub use plan::{grid, latin_hypercube, parse_range, Member, Range};
-pub use table::{merge, read_rows, write_rows, SweepRow};
+pub use finish::finish;
+pub use identity::{SweepPlan, PLAN_FILE};
+pub use journal::{scan as scan_journal, Entry, Journal, JOURNAL_FILE};
+pub use member_set::MemberSet;
+pub use merge::merge;
+pub use plan::{parse_range, Design, Member, Members, Range, MAX_MEMBERS};
+pub use shard::Shard;
+pub use table::{read_rows, SweepRow};
 
 use crate::registry::Registry;
 use crate::scene::{Scene, Value};
 
-/// The members of shard `k` of `n` (0-based): those whose index is `k` modulo `n`.
-pub fn shard(members: Vec<Member>, k: usize, n: usize) -> Vec<Member> {
-    members.into_iter().filter(|m| m.index % n.max(1) == k).collect()
+/// The indices below `count` of `shard`'s members not in `done`, in order.
+pub fn todo(count: usize, shard: Shard, done: &MemberSet) -> impl Iterator<Item = usize> + Send + '_ {
+    (shard.index..count).step_by(shard.count.max(1)).filter(move |m| !done.contains(*m))
 }
 
 /// The column names of a sweep's rows after the member index and the varied names: the
@@ -41,27 +55,28 @@ pub fn value_columns(scene: &Scene, registry: &Registry) -> Result<Vec<String>, 
     Ok(out)
 }
 
-/// Runs `members` of `scene` varied over `ranges`, in parallel, calling `done` with each
-/// member's row and wall time (ms) as it ends; the rows in member order, with their wall times.
+/// Runs the members of `scene` varied over `ranges` whose indices `todo` gives, in parallel,
+/// calling `done` with each finished member's row and wall time (ms) as it ends. Once a stop
+/// signal is requested no member starts, and one it cut short is not passed to `done`.
 pub fn run_members(
     scene: &Scene,
     ranges: &[Range],
-    members: &[Member],
+    members: &Members,
+    todo: impl Iterator<Item = usize> + Send,
     registry: &Registry,
     done: &(dyn Fn(&SweepRow, f64) + Sync),
-) -> Vec<(SweepRow, f64)> {
-    let mut rows: Vec<(SweepRow, f64)> = members
-        .par_iter()
-        .map(|m| {
-            let start = Instant::now();
-            let row = run_member(scene, ranges, m, registry);
-            let ms = start.elapsed().as_secs_f64() * 1e3;
-            done(&row, ms);
-            (row, ms)
-        })
-        .collect();
-    rows.sort_by_key(|(r, _)| r.member);
-    rows
+) {
+    todo.par_bridge().for_each(|index| {
+        if crate::interrupt::requested().is_some() {
+            return;
+        }
+        let start = Instant::now();
+        let row = run_member(scene, ranges, &members.get(index), registry);
+        if crate::interrupt::requested().is_some() && row.status.contains("interrupted by") {
+            return;
+        }
+        done(&row, start.elapsed().as_secs_f64() * 1e3);
+    });
 }
 
 /// One member: the scene with its values, resolved and solved.

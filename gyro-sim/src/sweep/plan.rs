@@ -1,6 +1,6 @@
 //! Which members a sweep has: in come the ranges to vary (`NAME=START:STOP[:N] [UNIT]`) and a
 //! grid or a Latin-hypercube sample; out go the members, each an index and one value per range,
-//! in a fixed order (so a member's index names it in every shard and every re-run).
+//! made from its index when asked, in a fixed order (so a member's index names it in every shard and every re-run).
 
 use rand::seq::SliceRandom;
 use rand::{Rng, SeedableRng};
@@ -31,6 +31,20 @@ pub struct Member {
     pub values: Vec<Value>,
 }
 
+impl std::fmt::Display for Range {
+    /// `NAME=START:STOP[:N] [UNIT]`, numbers in their shortest round-trip form.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}={}:{}", self.name, self.start, self.stop)?;
+        if let Some(n) = self.points {
+            write!(f, ":{n}")?;
+        }
+        match &self.unit {
+            Some(u) => write!(f, " {u}"),
+            None => Ok(()),
+        }
+    }
+}
+
 /// Reads `NAME=START:STOP[:N] [UNIT]` (`U3=10:100:10 rad/s`).
 pub fn parse_range(text: &str) -> Result<Range, String> {
     let bad =
@@ -56,45 +70,124 @@ pub fn parse_range(text: &str) -> Result<Range, String> {
     Ok(Range { name: name.trim().to_string(), start, stop, points, unit })
 }
 
-/// The grid over `ranges` (each needs N points), the first range varying slowest.
-pub fn grid(ranges: &[Range]) -> Result<Vec<Member>, String> {
-    let mut axes = Vec::with_capacity(ranges.len());
-    for r in ranges {
-        let n = r
-            .points
-            .ok_or_else(|| format!("--vary {}: a grid needs the number of points, START:STOP:N", r.name))?;
-        axes.push(
-            (0..n).map(|k| at(r, if n == 1 { 0.0 } else { k as f64 / (n - 1) as f64 })).collect::<Vec<_>>(),
-        );
-    }
-    let total: usize = axes.iter().map(Vec::len).product();
-    let mut members = Vec::with_capacity(total);
-    for index in 0..total {
-        let mut rest = index;
-        let mut values = vec![Value { number: 0.0, unit: None }; axes.len()];
-        for (d, axis) in axes.iter().enumerate().rev() {
-            values[d] = axis[rest % axis.len()].clone();
-            rest /= axis.len();
-        }
-        members.push(Member { index, values });
-    }
-    Ok(members)
+/// The most members one sweep may have (each finished member costs a few bytes of bookkeeping,
+/// a Latin-hypercube sample 8 bytes per member and range).
+pub const MAX_MEMBERS: usize = 10_000_000;
+
+/// How a sweep's members are chosen.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Design {
+    /// Every combination of the ranges' N points.
+    Grid,
+    /// A Latin-hypercube sample of `count` members drawn from `seed`.
+    Samples {
+        /// Members.
+        count: usize,
+        /// The random generator's seed.
+        seed: u64,
+    },
 }
 
-/// `samples` members by Latin-hypercube sampling from `seed`: each range cut into `samples`
-/// equal strata, each stratum used once, a uniform point inside it.
-pub fn latin_hypercube(ranges: &[Range], samples: usize, seed: u64) -> Vec<Member> {
+/// A sweep's members, each made from its index when asked (none are held).
+#[derive(Clone, Debug)]
+pub struct Members {
+    ranges: Vec<Range>,
+    how: Points,
+}
+
+/// Where the members' values come from.
+#[derive(Clone, Debug)]
+enum Points {
+    /// Points per range (a grid).
+    Grid(Vec<usize>),
+    /// Per range, each member's fraction of the way from start to stop (a sample).
+    Sample(Vec<Vec<f64>>),
+}
+
+impl Members {
+    /// The members of `design` over `ranges`; an error naming the limit when there would be
+    /// more than [`MAX_MEMBERS`] (or none).
+    pub fn new(ranges: &[Range], design: &Design) -> Result<Members, String> {
+        let how = match design {
+            Design::Grid => Points::Grid(grid_points(ranges)?),
+            Design::Samples { count, seed } => {
+                if *count == 0 || *count > MAX_MEMBERS {
+                    return Err(format!(
+                        "--samples {count}: give 1 to {MAX_MEMBERS} samples (the most members one sweep may have)"
+                    ));
+                }
+                Points::Sample(latin_fractions(ranges.len(), *count, *seed))
+            }
+        };
+        Ok(Members { ranges: ranges.to_vec(), how })
+    }
+
+    /// How many members there are.
+    pub fn len(&self) -> usize {
+        match &self.how {
+            Points::Grid(points) => points.iter().product(),
+            Points::Sample(fractions) => fractions.first().map_or(0, Vec::len),
+        }
+    }
+
+    /// Whether there are none (never, once made).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Member `index` (below [`Members::len`]).
+    pub fn get(&self, index: usize) -> Member {
+        let values = match &self.how {
+            Points::Grid(points) => {
+                let mut rest = index;
+                let mut values = vec![Value { number: 0.0, unit: None }; points.len()];
+                for (d, n) in points.iter().enumerate().rev() {
+                    let k = rest % n;
+                    rest /= n;
+                    values[d] = at(&self.ranges[d], if *n == 1 { 0.0 } else { k as f64 / (n - 1) as f64 });
+                }
+                values
+            }
+            Points::Sample(fractions) => {
+                self.ranges.iter().zip(fractions).map(|(r, f)| at(r, f[index])).collect()
+            }
+        };
+        Member { index, values }
+    }
+}
+
+/// The points of each range of a grid, checked: each range needs N and their product may not
+/// pass [`MAX_MEMBERS`].
+fn grid_points(ranges: &[Range]) -> Result<Vec<usize>, String> {
+    let mut points = Vec::with_capacity(ranges.len());
+    for r in ranges {
+        points.push(
+            r.points.ok_or_else(|| {
+                format!("--vary {}: a grid needs the number of points, START:STOP:N", r.name)
+            })?,
+        );
+    }
+    let total = points.iter().try_fold(1u128, |acc, n| acc.checked_mul(*n as u128));
+    if total.is_none_or(|t| t > MAX_MEMBERS as u128) {
+        let counts = points.iter().map(usize::to_string).collect::<Vec<_>>().join(" x ");
+        let total = total.map_or_else(|| "more than 2^128".to_string(), |t| t.to_string());
+        return Err(format!(
+            "the grid has {counts} = {total} members, more than the {MAX_MEMBERS} one sweep may have: use fewer points per range (or a --samples design)"
+        ));
+    }
+    Ok(points)
+}
+
+/// Latin-hypercube fractions for `dims` ranges and `samples` members from `seed`: each range
+/// cut into `samples` equal strata, each stratum used once, a uniform point inside it.
+fn latin_fractions(dims: usize, samples: usize, seed: u64) -> Vec<Vec<f64>> {
     let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
-    let columns: Vec<Vec<Value>> = ranges
-        .iter()
-        .map(|r| {
+    (0..dims)
+        .map(|_| {
             let mut strata: Vec<usize> = (0..samples).collect();
             strata.shuffle(&mut rng);
-            strata.into_iter().map(|s| at(r, (s as f64 + rng.random::<f64>()) / samples as f64)).collect()
+            strata.into_iter().map(|s| (s as f64 + rng.random::<f64>()) / samples as f64).collect()
         })
-        .collect();
-    (0..samples)
-        .map(|index| Member { index, values: columns.iter().map(|c| c[index].clone()).collect() })
         .collect()
 }
 
@@ -121,16 +214,34 @@ mod tests {
     #[test]
     fn a_grid_varies_the_last_range_fastest() {
         let ranges = [parse_range("A=0:1:2").unwrap(), parse_range("B=10:30:3").unwrap()];
-        let g = grid(&ranges).unwrap();
-        let pairs: Vec<(f64, f64)> = g.iter().map(|m| (m.values[0].number, m.values[1].number)).collect();
+        let g = Members::new(&ranges, &Design::Grid).unwrap();
+        let pairs: Vec<(f64, f64)> =
+            (0..g.len()).map(|i| g.get(i)).map(|m| (m.values[0].number, m.values[1].number)).collect();
         assert_eq!(pairs, [(0.0, 10.0), (0.0, 20.0), (0.0, 30.0), (1.0, 10.0), (1.0, 20.0), (1.0, 30.0)]);
-        assert!(grid(&[parse_range("A=0:1").unwrap()]).is_err());
+        assert!(Members::new(&[parse_range("A=0:1").unwrap()], &Design::Grid).is_err());
+    }
+
+    #[test]
+    fn sizes_past_the_limit_are_refused_naming_it() {
+        let huge: Vec<Range> = (0..6).map(|i| parse_range(&format!("A{i}=0:1:2048")).unwrap()).collect();
+        let e = Members::new(&huge, &Design::Grid).unwrap_err();
+        assert!(e.contains("= 73786976294838206464 members") && e.contains("10000000"), "{e}");
+        let one = [parse_range("A=0:1").unwrap()];
+        for count in [0, usize::MAX, MAX_MEMBERS + 1] {
+            let e = Members::new(&one, &Design::Samples { count, seed: 1 }).unwrap_err();
+            assert!(e.contains(&format!("--samples {count}: give 1 to 10000000")), "{e}");
+        }
+        assert_eq!(parse_range("U3=5:50:8 rad/s").unwrap().to_string(), "U3=5:50:8 rad/s");
     }
 
     #[test]
     fn latin_hypercube_uses_every_stratum_once_and_repeats_from_its_seed() {
         let ranges = [parse_range("A=0:1").unwrap(), parse_range("B=-5:5").unwrap()];
-        let s = latin_hypercube(&ranges, 8, 7);
+        let lhs = |count, seed| {
+            let m = Members::new(&ranges, &Design::Samples { count, seed }).unwrap();
+            (0..m.len()).map(|i| m.get(i)).collect::<Vec<_>>()
+        };
+        let s = lhs(8, 7);
         for (d, r) in ranges.iter().enumerate() {
             let mut strata: Vec<usize> = s
                 .iter()
@@ -139,7 +250,7 @@ mod tests {
             strata.sort();
             assert_eq!(strata, (0..8).collect::<Vec<_>>());
         }
-        assert_eq!(s, latin_hypercube(&ranges, 8, 7));
-        assert_ne!(s, latin_hypercube(&ranges, 8, 8));
+        assert_eq!(s, lhs(8, 7));
+        assert_ne!(s, lhs(8, 8));
     }
 }

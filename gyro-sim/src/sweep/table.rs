@@ -1,6 +1,5 @@
-//! A sweep's rows on disk: in come rows (or shard folders); out goes `sweep.csv`, one line per
-//! member in member order, written to a temporary file and renamed (so a killed run leaves the
-//! old file or the new one), and read back for resuming and merging. Numbers are written in
+//! A sweep's rows on disk: in come rows; out go their CSV cells, one line per member in member
+//! order, and the lines read back one at a time for resuming and merging. Numbers are written in
 //! Rust's shortest round-trip form, so the same inputs give the same bytes.
 
 use std::path::Path;
@@ -29,18 +28,6 @@ pub fn header(varied: &[String], value_columns: &[String]) -> Vec<String> {
     h.extend(["status", "steps", "rhs_evals"].map(String::from));
     h.extend(value_columns.iter().cloned());
     h
-}
-
-/// Writes `header` and `rows` (cells) to `path` through a temporary file and a rename.
-pub fn write_rows(path: &Path, header: &[String], rows: &[Vec<String>]) -> Result<(), String> {
-    crate::output::write_atomically(path, |tmp| {
-        let mut w = csv::Writer::from_path(tmp).map_err(|e| format!("{}: {e}", tmp.display()))?;
-        w.write_record(header).map_err(|e| e.to_string())?;
-        for r in rows {
-            w.write_record(r).map_err(|e| e.to_string())?;
-        }
-        w.flush().map_err(|e| e.to_string())
-    })
 }
 
 /// A row's cells for the CSV (values empty when it failed).
@@ -72,38 +59,74 @@ pub fn read_rows(path: &Path) -> Result<(Vec<String>, Vec<Vec<String>>), String>
     Ok((header, rows))
 }
 
-/// The member index of a row's cells.
-pub fn member_of(row: &[String]) -> Option<usize> {
-    row.first()?.parse().ok()
+/// A sorted rows file (`sweep.csv`, `timing.csv`) read one line at a time: its header, then each
+/// row's member and bytes (its newline included).
+pub struct RowLines {
+    path: std::path::PathBuf,
+    reader: std::io::BufReader<std::fs::File>,
+    /// The file's column names.
+    pub header: Vec<String>,
+    last: Option<usize>,
 }
 
-/// Joins the `sweep.csv` of each folder into `out/sweep.csv`, in member order; an error when
-/// their headers differ or a member is in two of them.
-pub fn merge(shards: &[&Path], out: &Path) -> Result<usize, String> {
-    let mut header: Option<Vec<String>> = None;
-    let mut rows: Vec<Vec<String>> = Vec::new();
-    for dir in shards {
-        let path = dir.join("sweep.csv");
-        if !path.exists() {
-            return Err(format!("{}: no sweep.csv (is it a shard's --out folder?)", dir.display()));
-        }
-        let (h, r) = read_rows(&path)?;
-        match &header {
-            Some(known) if *known != h => {
-                return Err(format!(
-                    "{}: its columns differ from the first shard's (another sweep?)",
-                    path.display()
-                ))
+impl RowLines {
+    /// Opens `path` and reads its header; `None` when there is no such file.
+    pub fn open(path: &Path) -> Result<Option<RowLines>, String> {
+        use std::io::BufRead;
+        let file = match std::fs::File::open(path) {
+            Ok(f) => f,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+            Err(e) => return Err(format!("{}: {e}", path.display())),
+        };
+        let mut reader = std::io::BufReader::new(file);
+        let mut first = Vec::new();
+        reader.read_until(b'\n', &mut first).map_err(|e| format!("{}: {e}", path.display()))?;
+        let mut r = csv::ReaderBuilder::new().has_headers(false).from_reader(first.as_slice());
+        let header = match r.records().next() {
+            Some(rec) => {
+                rec.map_err(|e| format!("{}: {e}", path.display()))?.iter().map(String::from).collect()
             }
-            _ => header = Some(h),
+            None => Vec::new(),
+        };
+        Ok(Some(RowLines { path: path.to_path_buf(), reader, header, last: None }))
+    }
+
+    /// The next row's member and line; an error when rows are out of member order.
+    pub fn next_row(&mut self) -> Result<Option<(usize, Vec<u8>)>, String> {
+        use std::io::BufRead;
+        let mut line = Vec::new();
+        let n =
+            self.reader.read_until(b'\n', &mut line).map_err(|e| format!("{}: {e}", self.path.display()))?;
+        if n == 0 {
+            return Ok(None);
         }
-        rows.extend(r);
+        if !line.ends_with(b"\n") {
+            line.push(b'\n');
+        }
+        let first = line.split(|b| *b == b',' || *b == b'\n').next().unwrap_or_default();
+        let member = std::str::from_utf8(first).ok().and_then(|m| m.trim().parse::<usize>().ok());
+        match member {
+            Some(m) if self.last.is_none_or(|last| m > last) => {
+                self.last = Some(m);
+                Ok(Some((m, line)))
+            }
+            Some(m) => Err(format!(
+                "{}: member {m} comes after member {}: rows must be in member order, each once",
+                self.path.display(),
+                self.last.unwrap_or_default()
+            )),
+            None => Err(format!(
+                "{}: a row without a member index: {}",
+                self.path.display(),
+                String::from_utf8_lossy(&line).trim_end()
+            )),
+        }
     }
-    rows.sort_by_key(|r| member_of(r));
-    if let Some(w) = rows.windows(2).find(|w| member_of(&w[0]) == member_of(&w[1])) {
-        return Err(format!("member {} is in two shards", w[0][0]));
-    }
-    std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
-    write_rows(&out.join("sweep.csv"), &header.unwrap_or_default(), &rows)?;
-    Ok(rows.len())
+}
+
+/// One CSV record's bytes (newline included), as the rows files write it.
+pub fn record_bytes(cells: &[String]) -> Result<Vec<u8>, String> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(cells).map_err(|e| e.to_string())?;
+    w.into_inner().map_err(|e| e.to_string())
 }

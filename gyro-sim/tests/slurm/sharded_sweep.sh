@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # A sharded sweep on a real Slurm: one node on this machine (Debian's slurm-wlm with munge,
-# installed when missing, daemons started here and stopped at the end), a job array of 4 tasks
-# running the README's job script, `sweep-merge`, and a byte-for-byte comparison with the same
-# sweep run unsharded. Skips (exit 0, saying why) where Slurm cannot be installed or started:
+# installed when missing, daemons started here and stopped at the end), a stepped job array of 4
+# tasks (--array=0-6:2: ids 0, 2, 4, 6, each shard (ID-MIN)/STEP+1 of 4) running the README's job
+# script, `sweep-merge` (which checks every member is there once), and a byte-for-byte comparison
+# with the same sweep run unsharded. Skips (exit 0, saying why) where Slurm cannot be installed or started:
 # not root, or no package registry. Needs target/release/gyro-sim (built when missing).
 # Usage: gyro-sim/tests/slurm/sharded_sweep.sh
 set -euo pipefail
@@ -67,10 +68,10 @@ done
 sweep=(gyro-sim/scenes/paper/trial3.toml --vary "U3=50:150 rad/s" --vary "Z=0:20" --samples 200 --seed 7)
 cd "$repo"
 target/release/gyro-sim sweep "${sweep[@]}" --out "$work/whole" >/dev/null
-# The README's job script, with 4 array tasks.
+# The README's job script, with 4 array tasks on stepped ids.
 cat >"$work/job.sh" <<JOB
 #!/bin/bash
-#SBATCH --array=0-3
+#SBATCH --array=0-6:2
 #SBATCH --cpus-per-task=1
 #SBATCH --output=$work/task-%a.log
 target/release/gyro-sim sweep ${sweep[*]@Q} --out $work/lhs/shard-\$SLURM_ARRAY_TASK_ID
@@ -79,5 +80,5 @@ sbatch --wait --chdir="$repo" "$work/job.sh" >/dev/null || { cat "$work"/task-*.
 target/release/gyro-sim sweep-merge --out "$work/lhs" "$work"/lhs/shard-* >/dev/null
 cmp "$work/whole/sweep.csv" "$work/lhs/sweep.csv"
 rows=$(($(wc -l <"$work/lhs/sweep.csv") - 1))
-echo "slurm: 4 array tasks, $rows members merged, equal byte for byte to the unsharded sweep"
+echo "slurm: 4 array tasks (ids 0-6:2), $rows members merged, equal byte for byte to the unsharded sweep"
 passed=1
