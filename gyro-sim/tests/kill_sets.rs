@@ -30,7 +30,7 @@ fn folder(name: &str) -> PathBuf {
 fn scene(dir: &Path, spin: u32, events: bool) -> PathBuf {
     let path = dir.join(format!("spin{spin}.toml"));
     let mut text = format!(
-        "model = \"gimbal_gyroscope\"\nt_final = 0.4\noutput_step = 0.01\nplot_points = 4\n[parameters]\nZ = 10.0\n[initial]\nU3 = \"{spin} rad/s\"\n"
+        "model = \"gimbal_gyroscope\"\nt_final = 2.0\noutput_step = 0.01\nplot_points = 10\n[parameters]\nZ = 10.0\n[initial]\nU3 = \"{spin} rad/s\"\n"
     );
     if events {
         text.push_str("[[events]]\nname = \"quarter\"\nwhen = \"t - 0.1\"\n");
@@ -98,10 +98,25 @@ fn whole_set(out: &Path, references: &[Set], trial: usize) -> usize {
     panic!("trial {trial}: the folder holds no whole set: {origin:?}");
 }
 
-/// A kill instant: over the whole run, or (half the time) near its end, where the commit is.
-fn instant(rng: &mut StdRng, run: Duration) -> Duration {
-    let fraction = if rng.random_bool(0.5) { rng.random_range(0.0..1.2) } else { rng.random_range(0.8..1.1) };
-    run.mul_f64(fraction)
+/// Kill instants: half over the whole run, half near the commit, whose instant is tracked from
+/// the outcomes (later after a kill that left the earlier set, earlier after one that did not).
+struct Instants {
+    rng: StdRng,
+    commit: Duration,
+}
+
+impl Instants {
+    /// The next instant; whether it was drawn near the commit.
+    fn next(&mut self) -> (Duration, bool) {
+        let near = self.rng.random_bool(0.5);
+        let fraction = if near { self.rng.random_range(0.9..1.1) } else { self.rng.random_range(0.0..1.3) };
+        (self.commit.mul_f64(fraction), near)
+    }
+
+    /// Learns from a kill near the commit whether the commit had happened.
+    fn learn(&mut self, committed: bool) {
+        self.commit = self.commit.mul_f64(if committed { 0.97 } else { 1.03 });
+    }
 }
 
 /// Starts `scenes` into `out`, each killed at its own instant (or finished before it); whether
@@ -127,7 +142,6 @@ fn run_and_kill(scenes: &[&Path], out: &Path, instants: &[Duration]) -> Vec<bool
 fn runs_killed_at_any_instant_leave_one_whole_set_and_the_other_files() {
     let trials: usize = std::env::var("KILL_TRIALS").ok().and_then(|n| n.parse().ok()).unwrap_or(100);
     let seed: u64 = std::env::var("KILL_SEED").ok().and_then(|n| n.parse().ok()).unwrap_or(25);
-    let mut rng = StdRng::seed_from_u64(seed);
     let dir = folder("kill_sets");
     let scenes = [scene(&dir, 50, true), scene(&dir, 80, false), scene(&dir, 120, false)];
     let (references, run) = references(&dir, &scenes);
@@ -139,21 +153,27 @@ fn runs_killed_at_any_instant_leave_one_whole_set_and_the_other_files() {
     }
     assert!(start(&scenes[0], &out).wait().unwrap().success());
     let mut current = whole_set(&out, &references, 0);
+    let mut instants = Instants { rng: StdRng::seed_from_u64(seed), commit: run };
     // [single writer: old, new killed after its commit, new finished; two: old, first, second]
     let (mut single, mut two) = ([0usize; 3], [0usize; 3]);
     let began = Instant::now();
     for trial in 0..trials {
         let others = [(current + 1) % 3, (current + 2) % 3];
         if trial % 4 == 3 {
-            let at = [instant(&mut rng, run), instant(&mut rng, run)];
+            // Two runs share the cores: each takes longer.
+            let at = [instants.next().0.mul_f64(1.6), instants.next().0.mul_f64(1.6)];
             run_and_kill(&[&scenes[others[0]], &scenes[others[1]]], &out, &at);
             let now = whole_set(&out, &references, trial);
             two[[current, others[0], others[1]].iter().position(|k| *k == now).unwrap()] += 1;
             current = now;
         } else {
-            let finished = run_and_kill(&[&scenes[others[0]]], &out, &[instant(&mut rng, run)])[0];
+            let (at, near) = instants.next();
+            let finished = run_and_kill(&[&scenes[others[0]]], &out, &[at])[0];
             let now = whole_set(&out, &references, trial);
             assert!(now == current || now == others[0], "trial {trial}: a set no run of it wrote");
+            if near {
+                instants.learn(now != current);
+            }
             single[if now == current {
                 0
             } else if finished {
@@ -165,8 +185,9 @@ fn runs_killed_at_any_instant_leave_one_whole_set_and_the_other_files() {
         }
     }
     println!(
-        "kill trials: {trials} (seed {seed}, run {:.0} ms, {:.1} s in all); one writer: {} old set kept, {} new set (killed after its commit {}, finished {}); two writers: {} old set kept, {} first's set, {} second's set; no mixture, no foreign file lost",
+        "kill trials: {trials} (seed {seed}, run {:.0} ms, commit at about {:.0} ms, {:.1} s in all); one writer: {} old set kept, {} new set (killed after its commit {}, finished {}); two writers: {} old set kept, {} first's set, {} second's set; no mixture, no foreign file lost",
         run.as_secs_f64() * 1e3,
+        instants.commit.as_secs_f64() * 1e3,
         began.elapsed().as_secs_f64(),
         single[0],
         single[1] + single[2],
