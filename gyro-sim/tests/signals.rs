@@ -24,9 +24,10 @@ fn scene(dir: &Path, t_final: f64) -> PathBuf {
     path
 }
 
-/// The rows of the run's CSV being staged in `out` (hidden staging folders included).
+/// The bytes of the run's CSV being staged for `out` (in the staging folders beside it).
 fn staged_bytes(out: &Path) -> u64 {
-    let Ok(entries) = std::fs::read_dir(out) else { return 0 };
+    let work = out.with_file_name(format!(".{}.gyro-sim", out.file_name().unwrap().to_string_lossy()));
+    let Ok(entries) = std::fs::read_dir(work) else { return 0 };
     entries
         .flatten()
         .filter(|e| e.path().is_dir())

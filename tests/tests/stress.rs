@@ -496,12 +496,12 @@ fn a_run_killed_between_its_csv_and_its_figures_leaves_the_earlier_set() {
         .stdout(std::process::Stdio::null())
         .spawn()
         .unwrap();
+    // Sets are staged beside the folder, in `.out.gyro-sim/`.
+    let work = dir.join(".out.gyro-sim");
     let staged_csv = || {
-        std::fs::read_dir(&out).unwrap().filter_map(|e| e.ok()).find_map(|e| {
+        std::fs::read_dir(&work).ok()?.filter_map(|e| e.ok()).find_map(|e| {
             let csv = e.path().join("trajectory.csv");
-            (e.file_name().to_string_lossy().starts_with(".partial")
-                && std::fs::metadata(&csv).is_ok_and(|m| m.len() > 100_000))
-            .then_some(csv)
+            std::fs::metadata(&csv).is_ok_and(|m| m.len() > 100_000).then_some(csv)
         })
     };
     while staged_csv().is_none() {
@@ -515,11 +515,11 @@ fn a_run_killed_between_its_csv_and_its_figures_leaves_the_earlier_set() {
     assert!(before == after, "the earlier set is intact");
     // The next run into the folder is complete and removes the killed run's staging folder.
     run(&good, &out).ok();
-    let left: Vec<String> = std::fs::read_dir(&out)
+    let left: Vec<String> = std::fs::read_dir(&work)
         .unwrap()
         .filter_map(|e| e.ok())
         .map(|e| e.file_name().to_string_lossy().to_string())
-        .filter(|n| n.starts_with(".partial"))
+        .filter(|n| n != "commit.lock")
         .collect();
     assert!(left.is_empty(), "staging left behind: {left:?}");
 }

@@ -1,13 +1,47 @@
-//! Output sets: a run's files (CSV, figures, view) are written into a staging folder of their
-//! own inside the output folder, named for the process and a counter, and then put in place
-//! together under the folder's lock, the files of an earlier set that this one lacks removed.
-//! Concurrent runs into one folder never share a temporary name and never interleave their
-//! renames; a run that fails while writing leaves the previous set as it was, and the staging
-//! left by a killed run is removed by the next run that puts a set in the folder.
+//! Output sets, committed whole: a run's files (CSV, figures, view) appear in its output folder
+//! `OUT` together or not at all, as SQLite's and Git's commits do, so that a run killed at any
+//! instant leaves the folder's earlier set or its new one, never a mix of the two.
+//!
+//! The design. A set is written into a staging folder in the work folder
+//! `PARENT/.OUT.gyro-sim/`, beside `OUT` on the same filesystem, and made visible by one atomic
+//! step: the staging folder and `OUT` exchange places (`renameat2(RENAME_EXCHANGE)` on Linux,
+//! `renameatx_np(RENAME_SWAP)` on macOS). The earlier set, now in the work folder, is removed after.
+//! Where the filesystem cannot exchange (NFS, other systems) `OUT` is renamed into the work folder
+//! and the staging folder renamed to `OUT`: a kill between the two renames leaves no `OUT` until
+//! the next run into it puts the earlier set back. Set files that are symbolic links into a folder
+//! per set (one link switched) would be atomic too, and were not chosen: the files users open,
+//! copy, archive, commit or share would be links, copied as links they dangle, and filesystems
+//! without links (FAT, SMB shares) could not hold the folder.
+//!
+//! Other files in `OUT` (notes, a sweep's files) are in it at every instant: each is hard-linked
+//! into the staging folder before the exchange. Folders in `OUT` cannot be linked and are refused,
+//! named, before the run. A file made in `OUT` during a commit goes with the earlier set and is
+//! moved back after the exchange; a kill at that instant leaves it in the work folder until the
+//! next commit moves it back. Nothing there is deleted unless it is a set file or also in `OUT`.
+//!
+//! Each staging folder has a lock file beside it that its run holds for its life: the kernel
+//! releases it when the process dies, and NFS clients emulate it with byte-range locks that hold
+//! across hosts. A commit removes the staging folders whose lock it can take (abandoned by a killed
+//! run) and no others; process ids are never trusted. Commits into one folder are serialised by
+//! the work folder's `commit.lock`, which the exchange does not move. A failed or interrupted run's
+//! rows are put in `OUT` as `trajectory.partial.csv` by one rename, the earlier set left as it was.
+//!
+//! What it costs: `OUT` is a new folder after each commit, so a shell whose working folder is `OUT`
+//! is left in the removed one (`cd .` again); `OUT`'s permission bits are carried over, its owner
+//! and extended attributes are not; `OUT` must be on its parent's filesystem (not a mount point).
 
-use std::fs::{self, File};
+mod foreign;
+mod owner;
+mod swap;
+#[cfg(test)]
+mod tests;
+
+use std::fs::{self, File, OpenOptions};
+use std::hash::{BuildHasher, Hasher};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
+
+use owner::Owner;
 
 /// The files a run may put in its folder.
 pub const SET_FILES: &[&str] = &[
@@ -23,146 +57,153 @@ pub const SET_FILES: &[&str] = &[
 /// Where a failed run's rows go, beside the earlier set (removed when a later set is complete).
 pub const PARTIAL_CSV: &str = "trajectory.partial.csv";
 
-/// The lock file that serialises putting sets in place.
-const LOCK_FILE: &str = ".gyro-sim.lock";
+/// The file in the work folder whose lock serialises commits.
+const COMMIT_LOCK: &str = "commit.lock";
 
 static COUNTER: AtomicU64 = AtomicU64::new(0);
 
-/// `.partial-{pid}-{n}-{name}`: a name no other process, and no other call here, uses.
-pub(crate) fn unique_temporary(name: &str) -> String {
-    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-    format!(".partial-{}-{n}-{name}", std::process::id())
+/// A number no other call, here or in another process on any host, is likely to draw (the
+/// standard library seeds its hash keys from the system's random source).
+fn random() -> u64 {
+    let mut hasher = std::collections::hash_map::RandomState::new().build_hasher();
+    hasher.write_u64(COUNTER.fetch_add(1, Ordering::Relaxed));
+    hasher.write_u32(std::process::id());
+    hasher.finish()
 }
 
-/// Removes the staging folders and files in `dir` of processes that no longer run (a killed
-/// run's), found by the process id in their names; where the system does not say which
-/// processes run (no `/proc`), nothing.
-fn remove_abandoned(dir: &Path) {
-    let proc = Path::new("/proc");
-    if !proc.join("self").exists() {
-        return;
+/// `.partial-{pid}-{random}-{name}`: a temporary name no other process, and no other call here, uses.
+pub(crate) fn unique_temporary(name: &str) -> String {
+    format!(".partial-{}-{:016x}-{name}", std::process::id(), random())
+}
+
+/// `path: what failed`.
+fn fail(path: &Path, e: std::io::Error) -> String {
+    format!("{}: {e}", path.display())
+}
+
+/// Where a set goes: the output folder as given and resolved, and the work folder beside it.
+struct Place {
+    shown: PathBuf,
+    out: PathBuf,
+    work: PathBuf,
+}
+
+impl Place {
+    /// The place of the output folder `dir` (which may not exist yet); the work folder is made.
+    fn of(dir: &Path) -> Result<Place, String> {
+        let out = match fs::canonicalize(dir) {
+            Ok(out) => out,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                let Some(name) = dir.file_name() else {
+                    return Err(format!("{}: give the output folder by its name", dir.display()));
+                };
+                let parent = dir.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+                let made = fs::create_dir_all(parent).and_then(|_| fs::canonicalize(parent));
+                made.map_err(|e| {
+                    format!("{}: cannot make the output folder's parent: {e}", parent.display())
+                })?
+                .join(name)
+            }
+            Err(e) => return Err(format!("{}: cannot open the output folder: {e}", dir.display())),
+        };
+        let (Some(parent), Some(name)) = (out.parent(), out.file_name()) else {
+            return Err(format!(
+                "{}: a run replaces its output folder whole; give a folder inside it",
+                dir.display()
+            ));
+        };
+        let work = parent.join(format!(".{}.gyro-sim", name.to_string_lossy()));
+        if let Err(e) = fs::create_dir(&work) {
+            if e.kind() != std::io::ErrorKind::AlreadyExists {
+                return Err(format!(
+                    "{}: cannot make the folder sets are staged in, beside the output folder: {e}; the output folder's parent must be writable",
+                    work.display()
+                ));
+            }
+        }
+        Ok(Place { shown: dir.to_path_buf(), out, work })
     }
-    let Ok(entries) = fs::read_dir(dir) else { return };
-    for entry in entries.flatten() {
-        let name = entry.file_name().to_string_lossy().to_string();
-        let pid = name.strip_prefix(".partial-").and_then(|rest| rest.split('-').next());
-        let Some(pid) = pid.and_then(|p| p.parse::<u32>().ok()) else { continue };
-        if pid != std::process::id() && !proc.join(pid.to_string()).exists() {
-            let path = entry.path();
-            let _ = fs::remove_dir_all(&path).or_else(|_| fs::remove_file(&path));
+
+    /// Takes the commit lock (held while the result lives) and settles abandoned staging (an
+    /// interrupted commit's earlier set put back); the output folder exists after.
+    fn enter(&self) -> Result<File, String> {
+        let path = self.work.join(COMMIT_LOCK);
+        let open = OpenOptions::new().read(true).write(true).create(true).truncate(false).open(&path);
+        let lock = open.map_err(|e| fail(&path, e))?;
+        lock.lock().map_err(|e| fail(&path, e))?;
+        owner::remove_abandoned(&self.work, &self.out);
+        let made = fs::create_dir_all(&self.out);
+        made.map_err(|e| format!("{}: cannot make the output folder: {e}", self.shown.display()))?;
+        Ok(lock)
+    }
+}
+
+/// An error unless `out` and `work` are on one filesystem (a set is swapped in by a rename).
+fn same_filesystem(out: &Path, work: &Path) -> Result<(), String> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        let dev = |p: &Path| fs::metadata(p).map(|m| m.dev()).map_err(|e| fail(p, e));
+        if dev(out)? != dev(work)? {
+            return Err(format!(
+                "{}: a mount point or on another filesystem than its parent; a run's set is staged in {} and swapped in whole, which needs one filesystem: give a folder inside it as the output",
+                out.display(),
+                work.display()
+            ));
         }
     }
+    let _ = (out, work);
+    Ok(())
 }
 
-/// Files staged for a folder; removed unless [`Staging::commit`] put them in place.
+/// A set staged for a folder; removed unless [`Staging::commit`] put it in place.
 pub(crate) struct Staging {
-    dir: PathBuf,
-    stage: PathBuf,
-    committed: bool,
+    place: Place,
+    owner: Owner,
 }
 
 impl Staging {
-    /// A new staging folder inside `dir` (both made as needed).
+    /// A new staging folder for the output folder `dir` (made if missing).
     pub(crate) fn new(dir: &Path) -> Result<Staging, String> {
-        let stage = dir.join(unique_temporary("set"));
-        fs::create_dir_all(&stage).map_err(|e| format!("{}: {e}", stage.display()))?;
-        Ok(Staging { dir: dir.to_path_buf(), stage, committed: false })
+        let place = Place::of(dir)?;
+        if fs::symlink_metadata(&place.out).is_err() {
+            drop(place.enter()?);
+        }
+        if !place.out.is_dir() {
+            return Err(format!("{}: not a folder; give a folder as the output", dir.display()));
+        }
+        same_filesystem(&place.out, &place.work)?;
+        foreign::refuse_folders(&place.out)?;
+        let owner = Owner::create(&place.work, &place.out)?;
+        Ok(Staging { place, owner })
     }
 
     /// Where to write the file that will be `dir/name`.
     pub(crate) fn path(&self, name: &str) -> PathBuf {
-        self.stage.join(name)
+        self.owner.dir().join(name)
     }
 
-    /// Puts the staged file `name` in place as `dir/as_name` under the folder's lock, leaving
-    /// the other files of the folder as they are; the rest of the staging is dropped.
-    pub(crate) fn commit_one(mut self, name: &str, as_name: &str) -> Result<PathBuf, String> {
-        let fail = |p: &Path, e: std::io::Error| format!("{}: {e}", p.display());
-        let lock_path = self.dir.join(LOCK_FILE);
-        let lock = File::create(&lock_path).map_err(|e| fail(&lock_path, e))?;
-        lock.lock().map_err(|e| fail(&lock_path, e))?;
-        remove_abandoned(&self.dir);
-        let target = self.dir.join(as_name);
-        fs::rename(self.stage.join(name), &target).map_err(|e| fail(&target, e))?;
-        self.committed = true;
-        let _ = fs::remove_dir_all(&self.stage);
-        Ok(target)
+    /// Puts the staged file `name` in place as `dir/as_name` by one rename, leaving the folder's
+    /// set as it is; the rest of the staging is dropped.
+    pub(crate) fn commit_one(self, name: &str, as_name: &str) -> Result<PathBuf, String> {
+        let _lock = self.place.enter()?;
+        let target = self.place.out.join(as_name);
+        fs::rename(self.path(name), &target).map_err(|e| fail(&target, e))?;
+        let shown = self.place.shown.join(as_name);
+        drop(self);
+        Ok(shown)
     }
 
-    /// Puts every staged file in place under the folder's lock and removes the set files it
-    /// lacks, so the folder holds one run's set.
-    pub(crate) fn commit(mut self) -> Result<(), String> {
-        let fail = |p: &Path, e: std::io::Error| format!("{}: {e}", p.display());
-        let lock_path = self.dir.join(LOCK_FILE);
-        let lock = File::create(&lock_path).map_err(|e| fail(&lock_path, e))?;
-        lock.lock().map_err(|e| fail(&lock_path, e))?;
-        remove_abandoned(&self.dir);
-        for name in SET_FILES {
-            let (staged, target) = (self.stage.join(name), self.dir.join(name));
-            if staged.exists() {
-                fs::rename(&staged, &target).map_err(|e| fail(&target, e))?;
-            } else if target.exists() {
-                fs::remove_file(&target).map_err(|e| fail(&target, e))?;
-            }
-        }
-        self.committed = true;
-        let _ = fs::remove_dir_all(&self.stage);
+    /// Makes the staged set the folder's set in one atomic step, the folder's other files kept.
+    pub(crate) fn commit(self) -> Result<(), String> {
+        let _lock = self.place.enter()?;
+        let (stage, out) = (self.owner.dir(), &self.place.out);
+        foreign::link_into(out, stage)?;
+        let permissions = fs::metadata(out).map_err(|e| fail(out, e))?.permissions();
+        fs::set_permissions(stage, permissions).map_err(|e| fail(stage, e))?;
+        swap::swap(stage, out, &self.owner.old())?;
+        // The owner, dropped under the lock, finds the earlier set in its place and removes it.
+        drop(self);
         Ok(())
-    }
-}
-
-impl Drop for Staging {
-    fn drop(&mut self) {
-        if !self.committed {
-            let _ = fs::remove_dir_all(&self.stage);
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn temporaries_are_unique_and_an_uncommitted_set_leaves_nothing() {
-        assert_ne!(unique_temporary("a.csv"), unique_temporary("a.csv"));
-        assert!(unique_temporary("a.csv").starts_with(&format!(".partial-{}-", std::process::id())));
-        let dir = std::env::temp_dir().join(format!("gyro-sim-set-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        std::fs::write(dir.join("trajectory.csv"), "old").unwrap();
-        let staging = Staging::new(&dir).unwrap();
-        std::fs::write(staging.path("trajectory.csv"), "new").unwrap();
-        drop(staging);
-        let names: Vec<_> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().file_name()).collect();
-        assert_eq!(names, ["trajectory.csv"]);
-        assert_eq!(std::fs::read_to_string(dir.join("trajectory.csv")).unwrap(), "old");
-        let staging = Staging::new(&dir).unwrap();
-        std::fs::write(staging.path("trajectory.csv"), "new").unwrap();
-        staging.commit().unwrap();
-        assert_eq!(std::fs::read_to_string(dir.join("trajectory.csv")).unwrap(), "new");
-        std::fs::remove_dir_all(&dir).unwrap();
-    }
-
-    #[cfg(unix)]
-    #[test]
-    fn a_killed_runs_staging_is_removed_by_the_next_set() {
-        let dir = std::env::temp_dir().join(format!("gyro-sim-abandoned-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        // A process id above Linux's largest (2^22): no such process runs.
-        let abandoned = dir.join(".partial-4194999-0-set");
-        std::fs::create_dir_all(&abandoned).unwrap();
-        std::fs::write(abandoned.join("trajectory.csv"), "half").unwrap();
-        // The staging of a process that runs (this one's parent) stays.
-        let parent = std::os::unix::process::parent_id();
-        let running = dir.join(format!(".partial-{parent}-0-set"));
-        std::fs::create_dir_all(&running).unwrap();
-        let staging = Staging::new(&dir).unwrap();
-        std::fs::write(staging.path("trajectory.csv"), "new").unwrap();
-        staging.commit().unwrap();
-        if Path::new("/proc/self").exists() {
-            assert!(!abandoned.exists(), "the killed run's staging is still there");
-        }
-        assert!(running.exists(), "a running process's staging was removed");
-        std::fs::remove_dir_all(&dir).unwrap();
     }
 }
