@@ -221,3 +221,15 @@ fn a_parameter_without_a_value_names_the_model_file() {
     );
     assert!(text.contains("help: set it under [parameters] (M1 = ...)"), "{text}");
 }
+
+#[test]
+fn a_quantity_given_twice_in_two_spellings_names_both() {
+    let e = error(
+        "model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[parameters]\nY = 1.0\ny = 2.0\n",
+    );
+    assert!(e.starts_with("bad.toml:6:1: error: `y` is given twice: `Y` sets the same quantity"), "{e}");
+    let e = error(
+        "model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[initial]\nu3 = 1.0\nU3 = 2.0\n",
+    );
+    assert!(e.contains("`U3` is given twice: `u3` sets the same quantity"), "{e}");
+}

@@ -108,6 +108,13 @@ impl Members {
     /// The members of `design` over `ranges`; an error naming the limit when there would be
     /// more than [`MAX_MEMBERS`] (or none).
     pub fn new(ranges: &[Range], design: &Design) -> Result<Members, String> {
+        for (k, r) in ranges.iter().enumerate() {
+            if let Some(first) = ranges[..k].iter().find(|o| o.name.eq_ignore_ascii_case(&r.name)) {
+                return Err(format!(
+                    "--vary {r} and --vary {first} vary the same quantity (names are case-insensitive): give one range for it"
+                ));
+            }
+        }
         let how = match design {
             Design::Grid => Points::Grid(grid_points(ranges)?),
             Design::Samples { count, seed } => {
@@ -232,6 +239,13 @@ mod tests {
             assert!(e.contains(&format!("--samples {count}: give 1 to 10000000")), "{e}");
         }
         assert_eq!(parse_range("U3=5:50:8 rad/s").unwrap().to_string(), "U3=5:50:8 rad/s");
+    }
+
+    #[test]
+    fn a_quantity_varied_twice_is_an_error_naming_both_ranges() {
+        let ranges = [parse_range("Y=0:1:2").unwrap(), parse_range("y=5:6:3").unwrap()];
+        let e = Members::new(&ranges, &Design::Grid).err().unwrap();
+        assert!(e.starts_with("--vary y=5:6:3 and --vary Y=0:1:2 vary the same quantity"), "{e}");
     }
 
     #[test]

@@ -174,7 +174,7 @@ fn classify(op: &Op, operands: &[f64]) -> FaultKind {
         Op::Sqrt(_) if a < 0.0 => FaultKind::SqrtOfNegative,
         Op::Func(Func::Ln, _) if a <= 0.0 => FaultKind::LogOfNonPositive,
         Op::Func(f @ (Func::Asin | Func::Acos), _) if a.abs() > 1.0 => FaultKind::OutsideArcDomain(f.name()),
-        Op::Powf(..) if a < 0.0 || a == 0.0 => FaultKind::PowerOutsideDomain,
+        Op::Powf(..) if a <= 0.0 => FaultKind::PowerOutsideDomain,
         _ => FaultKind::Overflow,
     }
 }

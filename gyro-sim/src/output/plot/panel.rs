@@ -71,3 +71,24 @@ pub(super) fn draw(area: &DrawingArea<BitMapBackend<'_>, Shift>, panel: &Panel<'
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_panel_of_values_near_the_largest_double_is_drawn() {
+        let rows: Vec<Vec<f64>> =
+            (0..50).map(|i| vec![i as f64, 1.7e308 * if i % 2 == 0 { 1.0 } else { -1.0 }]).collect();
+        let panel = Panel {
+            rows: &rows,
+            series: vec![("q1".to_string(), 1)],
+            x_title: "t".into(),
+            y_title: "deg".into(),
+        };
+        super::super::register_font();
+        let mut pixels = vec![0u8; 400 * 300 * 3];
+        let area = BitMapBackend::with_buffer(&mut pixels, (400, 300)).into_drawing_area();
+        draw(&area, &panel).unwrap();
+    }
+}
