@@ -379,3 +379,125 @@ fn a_sweep_writes_each_members_first_event_times() {
     let later: f64 = rows[2][below].parse().unwrap();
     assert!(later > at, "a longer arm (D = 1.2) falls later: {later} vs {at}");
 }
+
+/// A free body (I = 1, 2, 3) turning about its axis 1 at `rate` rad/s from the identity, so its
+/// Euler parameter E1 is `sin(rate t / 2)` exactly, to `t_final` with rows every `output_step`,
+/// at tolerances `tol`, and `events` appended.
+fn spinning(rate: f64, t_final: f64, output_step: f64, tol: f64, events: &str) -> String {
+    format!(
+        "title = \"a free body spinning about axis 1\"\nmodel = \"free_body\"\noutputs = [\"E4\", \"E1\", \"W1\"]\nt_final = {t_final:?}\noutput_step = {output_step:?}\n[integrator]\nmethod = \"dop853\"\nrtol = {tol:e}\natol = {tol:e}\n[parameters]\nI1 = 1.0\nI2 = 2.0\nI3 = 3.0\n[initial]\nE4 = 1.0\nE1 = 0.0\nE2 = 0.0\nE3 = 0.0\nW1 = \"{rate:?} rad/s\"\nW2 = \"0 rad/s\"\nW3 = \"0 rad/s\"\n{events}"
+    )
+}
+
+fn solve_text(text: &str) -> Trajectory {
+    solve(&Scene::parse("spinning.toml", text).unwrap_or_else(|e| panic!("{e}")))
+}
+
+#[test]
+fn a_stop_a_ten_millionth_of_a_second_into_a_million_second_run() {
+    let events = "[[events]]\nname = \"early\"\nwhen = \"t - 1e-7\"\naction = \"stop\"\n";
+    let t = solve_text(&spinning(1.0, 1e6, 1000.0, 1e-10, events));
+    let (name, at) = t.events.stopped.clone().expect("the run stops at the event");
+    assert_eq!(name, "early");
+    // The root finder's tolerance: a few units of round-off of the time.
+    assert!((at - 1e-7).abs() <= 8.0 * f64::EPSILON * 1e-7, "stopped at {at:e}");
+    assert_eq!(t.rows.iter().map(|r| r[0]).collect::<Vec<_>>(), [0.0, at]);
+    assert!(t.events.unsettled.is_empty() && t.events.crowded.is_empty(), "{:?}", t.events);
+}
+
+#[test]
+fn every_crossing_of_a_fast_function_of_time_inside_long_steps() {
+    // sin(10000 t) over 10 s of a body turning at 1 rad/s (steps far longer than its period):
+    // zero at k pi / 10000, k = 1 .. floor(1e5 / pi).
+    let (omega, t_final, output_step) = (10000.0, 10.0, 0.1);
+    let events = "[[events]]\nname = \"fast\"\nwhen = \"sin(10000*t)\"\n";
+    let t = solve_text(&spinning(1.0, t_final, output_step, 1e-10, events));
+    let pi = std::f64::consts::PI;
+    let found = times(&t, "fast");
+    let want = (omega * t_final / pi).floor() as usize;
+    assert_eq!(found.len(), want);
+    assert!(t.stats.steps < want / 100, "{} steps: many crossings per step", t.stats.steps);
+    let worst =
+        found.iter().enumerate().map(|(k, t)| (t - (k + 1) as f64 * pi / omega).abs()).fold(0.0, f64::max);
+    assert!(worst < 1e-12, "crossings off by {worst:e} s");
+    let rising: Vec<bool> = t.events.records.iter().map(|r| r.rising).collect();
+    assert!(rising.iter().enumerate().all(|(k, r)| *r == (k % 2 == 1)), "sin falls first");
+    // The most crossings between two rows, from the closed form, are reported as such.
+    let count_to = |s: f64| (omega * s / pi).floor() as usize;
+    let rows = (t_final / output_step).round() as usize;
+    let most = (0..rows)
+        .map(|j| count_to((j + 1) as f64 * output_step) - count_to(j as f64 * output_step))
+        .max()
+        .unwrap();
+    assert_eq!(t.events.crowded.len(), 1);
+    assert_eq!(t.events.crowded[0].most, most);
+    assert!((t.events.crowded[0].gap - pi / omega).abs() < 1e-9, "{:?}", t.events.crowded);
+    assert!(t.events.unsettled.is_empty(), "{:?}", t.events.unsettled);
+}
+
+#[test]
+fn every_zero_of_a_fast_spins_euler_parameter() {
+    // Spinning at 20000 rad/s, E1 = sin(10000 t): zero at k pi / 10000.
+    let (rate, t_final) = (20000.0, 1.0);
+    let events = "[[events]]\nname = \"half_turn\"\nwhen = \"E1\"\n";
+    let t = solve_text(&spinning(rate, t_final, 0.01, 1e-12, events));
+    let period = 2.0 * std::f64::consts::PI / rate;
+    let found = times(&t, "half_turn");
+    assert_eq!(found.len(), (t_final / period).floor() as usize);
+    let worst =
+        found.iter().enumerate().map(|(k, t)| (t - (k + 1) as f64 * period).abs()).fold(0.0, f64::max);
+    assert!(worst < 1e-9, "crossings off by {worst:e} s");
+}
+
+#[test]
+fn two_crossings_close_together_inside_one_step() {
+    // E1 = sin(t / 2) rises through 1 - 1e-8 and falls back 2.8e-4 s apart around t = pi,
+    // both inside one step of a body turning at 1 rad/s.
+    let level: f64 = 1.0 - 1e-8;
+    let events = format!("[[events]]\nname = \"near_top\"\nwhen = \"E1 - {level:?}\"\n");
+    let t = solve_text(&spinning(1.0, 5.0, 0.1, 1e-13, &events));
+    let found = times(&t, "near_top");
+    let up = 2.0 * level.asin();
+    let want = [up, 2.0 * std::f64::consts::PI - up];
+    assert_eq!(found.len(), 2, "{found:?}");
+    // E1's slope there is 0.5 cos(t / 2) = 7e-5: an error of 1e-13 in E1 moves a root 1.4e-9 s.
+    for (f, w) in found.iter().zip(want) {
+        assert!((f - w).abs() < 1e-8, "{found:?} vs {want:?}");
+    }
+    let mean_step = 5.0 / t.stats.steps as f64;
+    assert!(mean_step > 100.0 * (want[1] - want[0]), "steps of {mean_step} s on average");
+    assert!(t.events.unsettled.is_empty(), "{:?}", t.events.unsettled);
+}
+
+/// `gyro-sim run` of `text` (written to a folder of `name` of its own); its printed summary.
+fn summary_of(name: &str, text: &str) -> String {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("scene.toml");
+    std::fs::write(&scene, text).unwrap();
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_gyro-sim"))
+        .args(["run", scene.to_str().unwrap(), "--out", dir.join("out").to_str().unwrap()])
+        .output()
+        .unwrap();
+    let text = format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "{text}");
+    text
+}
+
+#[test]
+fn the_summary_warns_of_crossings_the_rows_or_the_steps_cannot_resolve() {
+    let fast = "[[events]]\nname = \"fast\"\nwhen = \"sin(10000*t)\"\n";
+    let text = summary_of("events_crowded", &spinning(1.0, 1.0, 0.1, 1e-10, fast));
+    let line =
+        text.lines().find(|l| l.starts_with("warning: event fast: ")).unwrap_or_else(|| panic!("{text}"));
+    assert!(line.contains("crossings between the rows at t = ") && line.contains("output_step of"), "{line}");
+    // Touching zero without crossing at t = 0.5: no split settles it, and the summary says so.
+    let touch = "[[events]]\nname = \"touch\"\nwhen = \"(t - 0.5)^2\"\n";
+    let text = summary_of("events_unsettled", &spinning(1.0, 1.0, 0.1, 1e-10, touch));
+    let line =
+        text.lines().find(|l| l.starts_with("warning: event touch: ")).unwrap_or_else(|| panic!("{text}"));
+    let near: f64 =
+        line.split("near t = ").nth(1).and_then(|r| r.split(' ').next()).unwrap().parse().unwrap();
+    assert!((near - 0.5).abs() < 1e-6 && line.contains("tighten rtol"), "{line}");
+}

@@ -67,6 +67,30 @@ fn event_lines(log: &crate::events::EventLog) -> Vec<String> {
             "stopped by event {name} at t = {t:.12}: rows at the output times before it, then a last row at it"
         ));
     }
+    lines.extend(event_warnings(log));
+    lines
+}
+
+/// A warning per event whose sign changes outran the steps (crossings may be missing) or the
+/// output rows (crossings the rows cannot show).
+fn event_warnings(log: &crate::events::EventLog) -> Vec<String> {
+    let name = |i: usize| log.names.get(i).map_or("?", String::as_str);
+    let mut lines: Vec<String> = log
+        .unsettled
+        .iter()
+        .map(|u| {
+            format!(
+                "warning: event {}: its sign changes may be incomplete near t = {:.9} ({} step(s)): its value came near zero faster than a split of the step to {:.1e} s could settle, so two crossings closer than that, or a touch of zero without a crossing, may be missed there; tighten rtol and atol under [integrator] for shorter steps",
+                name(u.event), u.t, u.steps, u.width
+            )
+        })
+        .collect();
+    lines.extend(log.crowded.iter().map(|c| {
+        format!(
+            "warning: event {}: {} crossings between the rows at t = {} and {} (the closest {:.3e} s apart): the rows cannot show them, events.csv lists each; an output_step of {:.3e} or less would put a row between them",
+            name(c.event), c.most, c.from, c.to, c.gap, c.gap
+        )
+    }));
     lines
 }
 

@@ -5,12 +5,16 @@
 //! built-in [`presets`]); [`resolve`] lowers each expression, with its time derivatives, into a
 //! kane-model IR section ([`kane_model::codegen::event`]) whose positional inputs it binds to
 //! the model's states, output columns (their rates by dual numbers) and parameters, in the units
-//! the CSV uses; [`eval`] runs those sections; [`detect`] finds the crossings with [`root`];
-//! [`watch`] does both after each step of an integration; [`csv`] writes `events.csv`.
+//! the CSV uses; [`eval`] runs those sections; [`detect`] finds the crossings, every sign change
+//! inside a step isolated by [`isolate`] and located by [`root`]; [`watch`] does both after each
+//! step of an integration, [`limits`] noting where crossings outran the steps or the rows;
+//! [`csv`] writes `events.csv`.
 
 pub mod csv;
 pub mod detect;
 pub mod eval;
+pub mod isolate;
+pub mod limits;
 pub mod presets;
 pub mod resolve;
 pub mod root;
@@ -155,4 +159,39 @@ pub struct EventLog {
     pub records: Vec<EventRecord>,
     /// The event that ended the run and when, if one did.
     pub stopped: Option<(String, f64)>,
+    /// Events whose sign changes came closer together than the steps could resolve.
+    pub unsettled: Vec<Unsettled>,
+    /// Events that crossed zero more than once between two output rows.
+    pub crowded: Vec<Crowded>,
+}
+
+/// Where an event's sign changes may have been missed: its isolation reached the finest split
+/// of a step without settling (two sign changes closer than `width`, or a zero touched without
+/// crossing).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Unsettled {
+    /// Which event.
+    pub event: usize,
+    /// Where, first.
+    pub t: f64,
+    /// The narrowest part left unsettled, seconds.
+    pub width: f64,
+    /// In how many steps.
+    pub steps: usize,
+}
+
+/// An event that crossed zero more than once between two output rows, which the rows cannot
+/// show (`events.csv` lists each crossing).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Crowded {
+    /// Which event.
+    pub event: usize,
+    /// The output interval with the most crossings: from this row's time...
+    pub from: f64,
+    /// ... to this one's.
+    pub to: f64,
+    /// How many crossings it held.
+    pub most: usize,
+    /// The closest two crossings between one pair of rows, seconds apart.
+    pub gap: f64,
 }

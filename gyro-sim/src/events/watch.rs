@@ -10,6 +10,7 @@ use crate::unit_norm::normalise;
 
 use super::detect::Detector;
 use super::eval::EventFns;
+use super::limits::Limits;
 use super::{EventLog, EventRecord};
 
 /// The row of a trajectory at a time and full state.
@@ -21,6 +22,7 @@ pub struct Watch<'a, B: BoundModel> {
     sys: &'a Reduced<'a, B>,
     fns: EventFns<'a, B>,
     detector: Option<Detector>,
+    limits: Limits,
     reduced: Vec<f64>,
     full: Vec<f64>,
     values: Vec<f64>,
@@ -43,6 +45,7 @@ impl<'a, B: BoundModel> Watch<'a, B> {
             sys,
             fns: EventFns::new(model, &problem.events, &problem.params),
             detector: None,
+            limits: Limits::new(problem.events.len()),
             reduced: vec![0.0; sys.dim()],
             full: vec![0.0; n],
             values: vec![0.0; problem.events.len()],
@@ -73,17 +76,21 @@ impl<'a, B: BoundModel> Watch<'a, B> {
             at(t_prev, full);
             fns.values(t_prev, full, values);
             let rules = problem.events.iter().map(|e| e.rule).collect();
-            let t_end = problem.times.last().copied().unwrap_or(t);
-            self.detector = Some(Detector::new(rules, t_prev, t_end, values));
+            self.detector = Some(Detector::new(rules, t_prev, values));
         }
-        at(t, full);
-        fns.values(t, full, values);
         let detector = self.detector.as_mut()?;
-        let found = detector.step(t_prev, t, values, |i, s| {
+        let found = detector.step(t_prev, t, |i, s| {
             at(s, full);
             fns.value(i, s, full)
         });
-        for c in found {
+        for &(i, at, width) in &found.unsettled {
+            self.limits.unsettled(i, at, width);
+        }
+        for c in &found.crossings {
+            self.limits.crossing(c.event, c.t, &problem.times);
+        }
+        self.limits.write_into(&mut self.log);
+        for c in found.crossings {
             at(c.t, full);
             let r = match row(c.t, full) {
                 Ok(r) => r,
