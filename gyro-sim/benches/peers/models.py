@@ -3,7 +3,8 @@ generated code): the paper's gimbal (tests/tests/gimbal_hand_derivation.rs) and 
 symmetric top in Euler parameters and body rates (the EJS convention of
 ../shared/references/README.md, copied in gyro-sim/tests/data/ejs/PROVENANCE.md): space z up,
 M = g = 1, rotor centred d = 1 along body z, I1 = I2 = 151/125, I3 = 2/5 about the support,
-quaternion (qw, qx, qy, qz) body -> space, qdot = q (0, omega) / 2.
+quaternion (qw, qx, qy, qz) body -> space, qdot = q (0, omega) / 2. The same top spin-aware
+(top_axle) is kane-model/models/heavy_top_axle.al written out by hand.
 """
 import heyoka as hy
 
@@ -42,6 +43,31 @@ def top(num=float):
         (qz, half * (qw * w3 + qx * w2 - qy * w1)),
         (w1, ((it - ia) * w2 * w3 + ny) / it),
         (w2, ((ia - it) * w3 * w1 - nx) / it),
+        (w3, 0 * w1),
+    ]
+
+
+def top_axle(num=float):
+    """(state variable, rate) pairs of the spin-aware heavy top, the equations of
+    kane-model/models/heavy_top_axle.al (model heavy_top_axle): qw, qx, qy, qz are the Euler
+    parameters of the axle frame A (E4, E1, E2, E3), which turns with the axle but not with the
+    spin, so its angular velocity is (w1, w2, 0) in A; w3 is the rotor's whole rate about the
+    axle. About the support H = (It w1, It w2, Ia w3) in A, dH/dt = H' + (w1, w2, 0) x H, and
+    gravity's moment is (ny, -nx, 0) with (nx, ny) = N3 along A1, A2:
+        It w1' = ny - Ia w2 w3,   It w2' = Ia w1 w3 - nx,   Ia w3' = 0.
+    The spin angle (PSI' = w3) is read by no equation and by none of the outputs compared, so it
+    is left out, as gyro-sim leaves it out of the integration when no output needs it."""
+    qw, qx, qy, qz, w1, w2, w3 = hy.make_vars("qw", "qx", "qy", "qz", "w1", "w2", "w3")
+    it, ia, half = num(151) / 125, num(2) / 5, num(1) / 2
+    nx = 2 * (qx * qz - qw * qy)
+    ny = 2 * (qy * qz + qw * qx)
+    return [
+        (qw, -half * (qx * w1 + qy * w2)),
+        (qx, half * (qw * w1 - qz * w2)),
+        (qy, half * (qw * w2 + qz * w1)),
+        (qz, half * (qx * w2 - qy * w1)),
+        (w1, (ny - ia * w2 * w3) / it),
+        (w2, (ia * w1 * w3 - nx) / it),
         (w3, 0 * w1),
     ]
 

@@ -9,24 +9,34 @@ Cases and references (all in the repository):
 - cusp, loops, nospin: the EJS top's presets against the closed forms (gyro-sim/tests/data/ejs/
   top_*.csv, 1 s grid to t = 50); fast: spin 1000 rad/s to t = 10 against
   gyro-sim/tests/data/ejs/top_fast_quad.csv (0.01 s grid); error = largest |axle - axle_ref|;
-  fast_spin_aware: the same, gyro-sim on its spin-aware model (ejs/fast_spin_aware.toml), the
-  peers on their own equations.
+  fast_spin_aware: the same, gyro-sim on its spin-aware model (ejs/fast_spin_aware.toml,
+  model heavy_top_axle) and heyoka on its own copy of the same spin-aware equations
+  (models.top_axle; column "heyoka"), plus heyoka on the plain quaternion model of `fast`
+  (models.top; column "heyoka quaternion model"), which is not the same equations. Before timing,
+  the spin-aware copy is checked against gyro-sim on a short run (check_spin_aware: to 1e-10).
 
-Time: gyro-sim's own wall time of the integration (the median of `run --repeat R`; outputs only
-the states, no figures, no view); heyoka's propagate_grid (compilation excluded) and SciPy's
-solve_ivp (Python right-hand side), medians of R runs. Each tool's time at errors 1e-6, 1e-9 and
+In every other case heyoka integrates the same equations as gyro-sim (its own copy, written from
+the hand derivations in models.py), and every tool outputs the states on the same grid.
+
+Time, warm for every tool: gyro-sim's own wall time of the integration (the median of
+`run --repeat R` within one process; outputs only the states, no figures, no view); heyoka's
+propagate_grid on one integrator built beforehand (LLVM compilation excluded) and SciPy's
+solve_ivp (DOP853, right-hand side a heyoka cfunc called from Python), medians of R runs. Each tool's time at errors 1e-6, 1e-9 and
 1e-12 is interpolated in log-log between the two tolerances where its error first falls below
 the level (blank where it never does).
 
-Not needed by the build or the tests. Needs heyoka, scipy, numpy (pip install heyoka scipy);
+Not needed by the build or the tests. Needs heyoka, numpy, and scipy unless --no-scipy
+(pip install heyoka scipy);
 matplotlib for the figures (optional). Run from the repository root, after
-`cargo build --release -p gyro-sim`:
+`cargo build --release -p gyro-sim` (the binary is read from $CARGO_TARGET_DIR/release, else
+target/release):
 
     python3 gyro-sim/benches/peers/work_precision.py [--cases trial3,cusp,loops,nospin,fast,...]
         [--methods dop853,vern9] [--repeats 7] [--out out/peers]
 """
 import argparse
 import csv
+import os
 import re
 import subprocess
 import sys
@@ -37,14 +47,13 @@ from pathlib import Path
 
 import heyoka as hy
 import numpy as np
-from scipy.integrate import solve_ivp
 
 sys.path.insert(0, str(Path(__file__).parent))
 import models  # noqa: E402
 from equal_error import at_error  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[3]
-GYRO_SIM = ROOT / "target" / "release" / "gyro-sim"
+GYRO_SIM = Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target")) / "release" / "gyro-sim"
 DATA = ROOT / "gyro-sim" / "tests" / "data"
 LEVELS = [1e-6, 1e-9, 1e-12]
 CASES = {
@@ -53,8 +62,8 @@ CASES = {
     "loops": ("ejs/loops.toml", DATA / "ejs/top_loops.csv", 50.0, 1.0),
     "nospin": ("ejs/nospin.toml", DATA / "ejs/top_nospin.csv", 50.0, 1.0),
     "fast": ("ejs/fast.toml", DATA / "ejs/top_fast_quad.csv", 10.0, 0.01),
-    # gyro-sim's spin-aware model of the same top (heavy_top_axle); the peers run their own
-    # equations of the fast top.
+    # gyro-sim's spin-aware model of the same top (heavy_top_axle); heyoka runs its own copy of
+    # the spin-aware equations (models.top_axle) and, as a second column, the quaternion model.
     "fast_spin_aware": ("ejs/fast_spin_aware.toml", DATA / "ejs/top_fast_quad.csv", 10.0, 0.01),
 }
 
@@ -67,9 +76,11 @@ def toml_value(v):
     return repr(v)
 
 
-def bench_scene(case, method, tol, work):
+def bench_scene(case, method, tol, work, t_final=None, step=None):
     """The case's scene with only the states written (no view), at `method` and `tol`."""
-    src, _, t_final, step = CASES[case]
+    src, _, case_t_final, case_step = CASES[case]
+    t_final = t_final or case_t_final
+    step = step or case_step
     scene = tomllib.loads((ROOT / "gyro-sim" / "scenes" / src).read_text())
     states = ["Q1", "Q2", "Q3", "U1", "U2", "U3"] if case == "trial3" else ["E4", "E1", "E2", "E3", "W1", "W2", "W3"]
     lines = [f'title = "{case}"', f'model = "{scene["model"]}"', f"t_final = {t_final}", f"output_step = {step}",
@@ -108,7 +119,29 @@ def initial(case):
 
 
 def system(case):
-    return models.gimbal() if case == "trial3" else models.top()
+    """heyoka's equations of the case: the same equations as gyro-sim's model."""
+    if case == "trial3":
+        return models.gimbal()
+    return models.top_axle() if case == "fast_spin_aware" else models.top()
+
+
+def check_spin_aware(work):
+    """heyoka's copy of the spin-aware top (models.top_axle) against gyro-sim's heavy_top_axle on a
+    short run (t = 0..0.2, every 0.01; both at tight tolerances): the largest difference over the
+    quaternion and w / max(1, |w|) must be below 1e-10."""
+    scene = bench_scene("fast_spin_aware", "vern9", 1e-14, work, t_final=0.2, step=0.01)
+    out = work / "check-spin-aware"
+    subprocess.run([str(GYRO_SIM), "run", str(scene), "--out", str(out)], check=True, capture_output=True)
+    ours = np.loadtxt(out / "trajectory.csv", delimiter=",", skiprows=1)
+    y0, _ = initial("fast_spin_aware")
+    ta = hy.taylor_adaptive(models.top_axle(), [float(v) for v in y0], tol=1e-16)
+    theirs = ta.propagate_grid(ours[:, 0])[-1]
+    diff = np.abs(ours[:, 1:] - theirs) / np.maximum(1.0, np.abs(theirs))
+    worst = float(np.max(diff))
+    moved = float(np.max(np.abs(theirs[:, 4:6])))
+    print(f"check: heyoka's spin-aware top against gyro-sim's heavy_top_axle, t = 0..0.2: largest "
+          f"difference {worst:.1e} (w1, w2 reach {moved:.2e})", file=sys.stderr)
+    assert worst < 1e-10, f"models.top_axle differs from heavy_top_axle by {worst:.1e}"
 
 
 def timed(run, repeats):
@@ -134,6 +167,8 @@ def heyoka_run(ta, case, grid, repeats):
 
 
 def scipy_run(case, grid, tol, repeats):
+    from scipy.integrate import solve_ivp
+
     y0, pars = initial(case)
     f = hy.cfunc([r for _, r in system(case)], [v for v, _ in system(case)])
 
@@ -158,6 +193,7 @@ def measure(case, methods, repeats, work, use_scipy):
     grid = ref[:, 0]
     points = {}
     tas = {}
+    quat = {}
     for tol in [10.0 ** -k for k in range(4, 16)]:
         for m in methods:
             if tol < 1e-14:
@@ -169,6 +205,12 @@ def measure(case, methods, repeats, work, use_scipy):
             tas[tol] = hy.taylor_adaptive(system(case), [float(v) for v in initial(case)[0]], tol=tol, pars=initial(case)[1])
         ms, got = heyoka_run(tas[tol], case, grid, repeats)
         points.setdefault("heyoka", []).append((error(case, got, ref), ms, tol))
+        if case == "fast_spin_aware":
+            # Not the same equations: heyoka on the quaternion model of `fast` (the spin sets its steps).
+            if tol not in quat:
+                quat[tol] = hy.taylor_adaptive(models.top(), [float(v) for v in initial(case)[0]], tol=tol)
+            ms, got = heyoka_run(quat[tol], case, grid, repeats)
+            points.setdefault("heyoka quaternion model", []).append((error(case, got, ref), ms, tol))
         if use_scipy and tol >= 1e-12:
             ms, got = scipy_run(case, grid, tol, max(1, repeats // 3))
             points.setdefault("scipy dop853", []).append((error(case, got, ref), ms, tol))
@@ -184,16 +226,22 @@ def report(all_points, out):
             for tool, pts in points.items():
                 for e, ms, tol in pts:
                     w.writerow([case, tool, f"{tol:.0e}", f"{e:.3e}", f"{ms:.4f}"])
-    print("| case | error | " + " | ".join(sorted({t for p in all_points.values() for t in p})) + " | best gyro-sim / heyoka |")
     tools = sorted({t for p in all_points.values() for t in p})
-    print("|" + "---|" * (len(tools) + 3))
+    quat = "heyoka quaternion model"
+    extra = " | best gyro-sim / heyoka quaternion model" if quat in tools else ""
+    print("| case | error | " + " | ".join(tools) + " | best gyro-sim / heyoka (same equations)" + extra + " |")
+    print("|" + "---|" * (len(tools) + 3 + bool(extra)))
     for case, points in all_points.items():
         for level in LEVELS:
             times = {t: at_error([(e, ms) for e, ms, _ in points.get(t, [])], level) for t in tools}
             ours = [v for t, v in times.items() if t.startswith("gyro-sim") and v == v]
             ratio = min(ours) / times["heyoka"] if ours and times["heyoka"] == times["heyoka"] else float("nan")
             cells = " | ".join("" if v != v else f"{v:.3g} ms" for v in (times[t] for t in tools))
-            print(f"| {case} | {level:.0e} | {cells} | {ratio:.2f} |")
+            last = ""
+            if extra:
+                q = times.get(quat, float("nan"))
+                last = f" {min(ours) / q:.2f} |" if ours and q == q else " |"
+            print(f"| {case} | {level:.0e} | {cells} | {ratio:.2f} |{last}")
     try:
         import matplotlib.pyplot as plt
     except ImportError:
@@ -222,6 +270,8 @@ def main():
     p.add_argument("--out", default="out/peers")
     args = p.parse_args()
     work = Path(tempfile.mkdtemp(prefix="peers-"))
+    if "fast_spin_aware" in args.cases.split(","):
+        check_spin_aware(work)
     results = {}
     for case in args.cases.split(","):
         results[case] = measure(case, args.methods.split(","), args.repeats, work, not args.no_scipy)
