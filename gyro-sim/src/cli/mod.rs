@@ -222,9 +222,6 @@ fn run_command(
                 scene.model
             ));
         }
-        if let Some(entry) = registry.find(&scene.model) {
-            plausible_builtin(entry, &scene, &registry)?;
-        }
         return finish(&scene, &registry, args);
     };
     let specified = scene.as_ref().map_or(&[][..], |s| &s.specified[..]);
@@ -405,15 +402,6 @@ fn print_timing(scene: &Scene, registry: &Registry, times: usize) -> Result<(), 
 /// breaking the triangle inequality, non-unit Euler parameters).
 fn plausible(file: &ModelFile, problem: &crate::problem::Problem) -> Result<(), String> {
     plausible_values(&file.model, &file.path.display().to_string(), problem)
-}
-
-/// As [`plausible`], for a built-in model compiled from a model file (its text is kept).
-fn plausible_builtin(entry: &ModelEntry, scene: &Scene, registry: &Registry) -> Result<(), String> {
-    let Some((path, text)) = entry.source else { return Ok(()) };
-    let Ok(checked) = kane_model::lang::check(path, text) else { return Ok(()) };
-    let problem = crate::resolve::resolve(scene, registry).map_err(|e| e.to_string())?;
-    plausible_values(&checked.model.model, &scene.path.display().to_string(), &problem)
-        .map_err(|e| format!("{e} (the model {})", entry.info.name))
 }
 
 /// The first implausible value (a negative mass, inertias that break the triangle
