@@ -58,7 +58,10 @@ impl Shard {
         let count = number("SLURM_ARRAY_TASK_COUNT")?.unwrap_or(1);
         let min = number("SLURM_ARRAY_TASK_MIN")?.unwrap_or(id);
         let max = number("SLURM_ARRAY_TASK_MAX")?.unwrap_or(id);
-        let step = number("SLURM_ARRAY_TASK_STEP")?.unwrap_or(1).max(1);
+        // Without STEP (older Slurm), an evenly spaced array's step follows from MIN, MAX, COUNT.
+        let even_step =
+            (count > 1 && max >= min && (max - min) % (count - 1) == 0).then(|| (max - min) / (count - 1));
+        let step = number("SLURM_ARRAY_TASK_STEP")?.or(even_step).unwrap_or(1).max(1);
         let spaced = count >= 1
             && (min..=max).contains(&id)
             && (id - min) % step == 0
