@@ -5,16 +5,20 @@
 pub struct MemberSet {
     words: Vec<u64>,
     len: usize,
+    count: usize,
 }
 
 impl MemberSet {
     /// An empty set of members below `count`.
     pub fn new(count: usize) -> MemberSet {
-        MemberSet { words: vec![0; count.div_ceil(64)], len: 0 }
+        MemberSet { words: vec![0; count.div_ceil(64)], len: 0, count }
     }
 
     /// Adds `member`; false when it was there already or is past the count.
     pub fn insert(&mut self, member: usize) -> bool {
+        if member >= self.count {
+            return false;
+        }
         let Some(word) = self.words.get_mut(member / 64) else { return false };
         let bit = 1u64 << (member % 64);
         let new = *word & bit == 0;
@@ -25,7 +29,7 @@ impl MemberSet {
 
     /// Whether `member` is in.
     pub fn contains(&self, member: usize) -> bool {
-        self.words.get(member / 64).is_some_and(|w| w & (1u64 << (member % 64)) != 0)
+        member < self.count && self.words.get(member / 64).is_some_and(|w| w & (1u64 << (member % 64)) != 0)
     }
 
     /// How many members are in.
