@@ -542,21 +542,34 @@ fn integrate<B: BoundModel>(
         }),
         (Err(other), _) => Err(SolveError::Ode(other)),
     };
-    let stats = outcome.map_err(|e| {
-        let probed = diagnose::explainable(&e).then(|| {
-            let from: Vec<f64> = keep.iter().map(|k| y_end[*k]).collect();
-            let t_end = all_times.last().copied().unwrap_or(t_good);
-            let (t, y_red) = diagnose::probe(&held, t_good, &from, t_end, method, problem.max_steps)?;
-            let mut full = vec![0.0; n];
-            sys.expand(&y_red, &mut full);
-            normalise(&problem.unit_norms, &mut full);
-            Some((t, full))
-        });
-        diagnose::explain(sys.inner, problem, e, t_good, &y_end, probed.flatten())
-    })?;
+    let stats = outcome.map_err(|e| explained(problem, sys, &held, keep, method, e, (t_good, &y_end)))?;
     let norm_drift = (!groups.is_empty()).then(|| held.drift());
     let (rows, plot_rows) = (rows.into_rows(), plot_rows.into_rows());
     Ok(Integration { stats, rows, plot_rows, y_end, norm_drift, events, largest_residual })
+}
+
+/// `error` explained where the run went wrong: the failed stretch integrated again (`held`, at
+/// `method`) from the last good output `good` (time, full state), see [`diagnose::probe`].
+fn explained<B: BoundModel, S: ode::System + ?Sized>(
+    problem: &Problem,
+    sys: &Reduced<'_, B>,
+    held: &S,
+    keep: &[usize],
+    method: Method,
+    error: SolveError,
+    good: (f64, &[f64]),
+) -> SolveError {
+    let (t_good, y_good) = good;
+    let probed = diagnose::explainable(&error).then(|| {
+        let from: Vec<f64> = keep.iter().map(|k| y_good[*k]).collect();
+        let t_end = problem.times.last().copied().unwrap_or(t_good);
+        let (t, y_red) = diagnose::probe(held, t_good, &from, t_end, method, problem.max_steps)?;
+        let mut full = vec![0.0; y_good.len()];
+        sys.expand(&y_red, &mut full);
+        normalise(&problem.unit_norms, &mut full);
+        Some((t, full))
+    });
+    diagnose::explain(sys.inner, problem, error, t_good, y_good, probed.flatten())
 }
 
 /// The row at `(t, full_y)`: `t`, then the picks' columns (`dy` the scratch for the speed rates
