@@ -353,6 +353,9 @@ fn start_compiled(file: &ModelFile, taylor: bool) -> Result<(PathBuf, String), S
     if built {
         eprintln!("compiled: {}", binary.display());
     }
+    if let Some(why) = crate::compiled::not_a_program(&binary) {
+        return Ok((binary, why));
+    }
     let mut command = std::process::Command::new(&binary);
     command.args(std::env::args_os().skip(1));
     #[cfg(unix)]

@@ -123,6 +123,21 @@ fn workspace() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
 }
 
+/// Why the file at `path` is not a native program, if it is not (checked before it is started:
+/// `execvp` would hand a file without a known header to `/bin/sh`).
+pub fn not_a_program(path: &Path) -> Option<String> {
+    use std::io::Read;
+    let mut head = [0u8; 4];
+    let read = std::fs::File::open(path).and_then(|mut f| f.read_exact(&mut head));
+    if let Err(e) = read {
+        return Some(format!("its header cannot be read: {e}"));
+    }
+    const HEADERS: [[u8; 4]; 4] =
+        [*b"\x7fELF", [0xcf, 0xfa, 0xed, 0xfe], [0xce, 0xfa, 0xed, 0xfe], [0xca, 0xfe, 0xba, 0xbe]];
+    let native = HEADERS.iter().any(|h| *h == head) || (cfg!(windows) && head[..2] == *b"MZ");
+    (!native).then(|| "it does not start with a program header (ELF, Mach-O or PE)".to_string())
+}
+
 /// The compiled binary for `file`, with Taylor coefficients when `taylor` (a scene integrates
 /// it by the Taylor method; built apart from the binary without them): the cached one, or one
 /// built now (cargo's progress shown on standard error). True in the second value when it was
