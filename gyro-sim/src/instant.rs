@@ -9,7 +9,7 @@ use kane_model::codegen::ProgramModel;
 use kane_model::runtime::ModelInfo;
 
 use crate::ode::{System, TaylorWork};
-use crate::registry::{Engine, ModelEntry, ProgramSource};
+use crate::registry::{Engine, MechanicsSource, ModelEntry, ProgramSource};
 use crate::solve::{solve_bound, BoundModel};
 
 /// A program model with its parameters bound.
@@ -52,6 +52,11 @@ impl BoundModel for InstantSystem<'_> {
     }
 }
 
+/// The registry entry running the model file `file` on the instant path, its mechanics known.
+pub fn file_entry(file: &crate::model_file::ModelFile) -> ModelEntry {
+    instant_entry(file.program.clone()).with_mechanics(MechanicsSource::ready(file.model.clone()))
+}
+
 /// The registry entry running `model` on the instant path.
 pub fn instant_entry(model: Arc<ProgramModel>) -> ModelEntry {
     let (a, b, c, d) = (model.clone(), model.clone(), model.clone(), model.clone());
@@ -63,5 +68,6 @@ pub fn instant_entry(model: Arc<ProgramModel>) -> ModelEntry {
         engine: Engine::Instant,
         program: Some(ProgramSource(Arc::new(move || Some(d.clone())))),
         source: None,
+        mechanics: None,
     }
 }

@@ -19,6 +19,7 @@ pub mod model_file;
 pub mod models;
 pub mod ode;
 pub mod output;
+mod plausible;
 pub mod problem;
 mod refine;
 pub mod registry;

@@ -57,7 +57,7 @@ pub struct ModelFile {
     /// The model's name: the file's stem.
     pub name: String,
     /// The mechanics (for plausibility checks of a run's values).
-    pub model: Model,
+    pub model: Arc<Model>,
     /// The lowered program (the instant path).
     pub program: Arc<ProgramModel>,
     /// What the file says about a run.
@@ -90,7 +90,7 @@ impl ModelFile {
             path: path.to_path_buf(),
             source,
             name,
-            model: spec.model,
+            model: Arc::new(spec.model),
             program: Arc::new(program),
             run,
             warnings,

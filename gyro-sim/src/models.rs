@@ -3,7 +3,9 @@
 //! asks for everything the simulator can run it with: Taylor coefficients (straight-line at the
 //! orders the Taylor stepper takes, `kane_model::runtime::TAYLOR_UNROLLED_ORDERS`) and lanes.
 
-use crate::registry::Registry;
+use kane_model::runtime::GeneratedModel;
+
+use crate::registry::{MechanicsSource, ModelEntry, Registry};
 
 /// The 3-DOF gimballed gyroscope of the paper.
 pub mod gimbal_gyroscope {
@@ -69,7 +71,12 @@ pub fn register(registry: Registry) -> Registry {
             "heavy_top_axle.al",
             include_str!("../../kane-model/models/heavy_top_axle.al"),
         )))
-        .with::<heavy_top_rust::Model>()
+        .with_entry(
+            heavy_top_rust::Model::INFO.name,
+            ModelEntry::of::<heavy_top_rust::Model>().with_mechanics(MechanicsSource::new(|| {
+                kane_model::models::HeavyTop::new().ok().map(|top| top.model)
+            })),
+        )
         .with_entry_of::<free_body::Model>(Some((
             "free_body.al",
             include_str!("../../kane-model/models/free_body.al"),

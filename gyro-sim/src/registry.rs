@@ -2,9 +2,10 @@
 //! [`GeneratedModel`]); out goes a [`Registry`] that finds each by name with its metadata and
 //! the solver instantiated for it. A user's crate builds its own with [`Registry::with`].
 
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 use kane_model::codegen::ProgramModel;
+use kane_model::mechanics::Model;
 use kane_model::runtime::{GeneratedModel, ModelInfo};
 
 use crate::problem::Problem;
@@ -51,6 +52,37 @@ impl std::fmt::Debug for ProgramSource {
     }
 }
 
+/// A model's mechanics (bodies, masses, inertias), made once when first asked (to check a
+/// run's values for plausibility).
+#[derive(Clone)]
+pub struct MechanicsSource {
+    made: Arc<OnceLock<Option<Arc<Model>>>>,
+    make: Arc<dyn Fn() -> Option<Model> + Send + Sync>,
+}
+
+impl MechanicsSource {
+    /// The mechanics `make` gives (None when it cannot), made on first use.
+    pub fn new(make: impl Fn() -> Option<Model> + Send + Sync + 'static) -> MechanicsSource {
+        MechanicsSource { made: Arc::new(OnceLock::new()), make: Arc::new(make) }
+    }
+
+    /// Mechanics already made.
+    pub fn ready(model: Arc<Model>) -> MechanicsSource {
+        MechanicsSource { made: Arc::new(OnceLock::from(Some(model))), make: Arc::new(|| None) }
+    }
+
+    /// The mechanics, when they can be made.
+    pub fn get(&self) -> Option<Arc<Model>> {
+        self.made.get_or_init(|| (self.make)().map(Arc::new)).clone()
+    }
+}
+
+impl std::fmt::Debug for MechanicsSource {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("MechanicsSource")
+    }
+}
+
 /// One model: its metadata and what runs it.
 #[derive(Clone)]
 pub struct ModelEntry {
@@ -68,6 +100,8 @@ pub struct ModelEntry {
     pub program: Option<ProgramSource>,
     /// The path and text of the model file it was compiled from, for a built-in model.
     pub source: Option<(&'static str, &'static str)>,
+    /// Its mechanics, when known: a run's masses and inertias are checked against them.
+    pub mechanics: Option<MechanicsSource>,
 }
 
 impl ModelEntry {
@@ -81,7 +115,13 @@ impl ModelEntry {
             engine: Engine::Compiled,
             program: None,
             source: None,
+            mechanics: None,
         }
+    }
+
+    /// This entry with its mechanics from `mechanics`.
+    pub fn with_mechanics(self, mechanics: MechanicsSource) -> ModelEntry {
+        ModelEntry { mechanics: Some(mechanics), ..self }
     }
 
     /// This entry with its lowered program made, when asked, from `source`, the text of the
@@ -92,7 +132,13 @@ impl ModelEntry {
                 crate::model_file::ModelFile::from_source(std::path::Path::new(path), source.to_string());
             file.ok().map(|f| f.program)
         };
-        ModelEntry { program: Some(ProgramSource(Arc::new(program))), source: Some((path, source)), ..self }
+        let mechanics = move || kane_model::lang::load_for_generation(path, source).ok().map(|l| l.model);
+        ModelEntry {
+            program: Some(ProgramSource(Arc::new(program))),
+            source: Some((path, source)),
+            mechanics: Some(MechanicsSource::new(mechanics)),
+            ..self
+        }
     }
 }
 

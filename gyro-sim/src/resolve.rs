@@ -1,7 +1,7 @@
 //! Resolving a scene: in come a [`Scene`] and a [`Registry`]; out goes a [`Problem`] in model
 //! units (the scene's units converted: degrees to radians, deg/s to rad/s; a top's `[axle]`
-//! motion converted to Euler parameters and body rates by [`crate::initial`]), or an error at the
-//! scene's line and column.
+//! motion converted to Euler parameters and body rates by [`crate::initial`]; values checked for
+//! plausibility by `plausible`), or an error at the scene's line and column.
 
 use kane_model::lang::units::normalised;
 use kane_model::runtime::ModelInfo;
@@ -54,6 +54,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
     if scene.axle.is_none() {
         euler_parameters_named_e(scene, info, &problem.initial)?;
     }
+    crate::plausible::check(scene, entry, &problem)?;
     Ok(problem)
 }
 

@@ -1,4 +1,5 @@
-//! Physical plausibility of parameter and initial values: positive masses, principal moments of
+//! Physical plausibility of parameter and initial values: masses that are not negative (zero is a
+//! massless idealisation, whose mass matrix is checked at run time), principal moments of
 //! inertia that are non-negative and satisfy the triangle inequality, unit Euler parameters.
 //!
 //! In: a [`Model`] and the values of its symbols by name. Out: the issues found, each naming the
@@ -78,14 +79,14 @@ fn mass_issue(
     values: &impl Fn(&str) -> Option<f64>,
 ) -> Option<PlausibilityIssue> {
     let v = value_of(model, m, values)?;
-    if v > 0.0 {
+    if v >= 0.0 {
         return None;
     }
     let involved = names(model, &[m]);
     let parameter = symbol_name(model, m).unwrap_or_else(|| owner.to_string());
     let given =
         if involved.is_empty() { String::new() } else { format!(" ({})", listing(&involved, values)) };
-    let message = format!("the mass of {owner} is {v}{given}: a mass must be positive");
+    let message = format!("the mass of {owner} is {v}{given}: a mass cannot be negative");
     Some(PlausibilityIssue { parameter, involved, message })
 }
 
@@ -185,14 +186,15 @@ mod tests {
     }
 
     #[test]
-    fn non_positive_mass_names_its_parameter() {
+    fn negative_mass_names_its_parameter_and_zero_mass_is_allowed() {
         let m = model(BODY);
-        for mass in [-1.0, 0.0] {
+        for mass in [-1.0, -1e-300] {
             let issues = plausibility(&m, at(&[("M", mass), ("I1", 1.0), ("I2", 1.0), ("I3", 1.0)]));
             assert_eq!(issues.len(), 1, "{issues:?}");
             assert_eq!(issues[0].parameter, "M");
-            assert!(issues[0].message.contains("must be positive"), "{}", issues[0].message);
+            assert!(issues[0].message.contains("cannot be negative"), "{}", issues[0].message);
         }
+        assert!(plausibility(&m, at(&[("M", 0.0), ("I1", 1.0), ("I2", 1.0), ("I3", 1.0)])).is_empty());
     }
 
     #[test]

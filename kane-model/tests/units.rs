@@ -77,3 +77,32 @@ fn a_unit_of_another_dimension_than_the_quantitys_use_is_an_error() {
     assert!(lang::check("units.al", &particle.replace("M = 2 M", "M = 2 KG")).is_ok());
     assert!(lang::check("units.al", GIMBAL).is_ok());
 }
+
+#[test]
+fn inertias_forces_torques_and_angles_are_checked_against_their_units() {
+    let base = "NEWTONIAN N\nBODIES B\nPOINTS O\nCONSTANTS M, IB, F, T, L\nVARIABLES Q'\nMOTIONVARIABLES' U'\n\
+                Q' = U\nSIMPROT(N, B, 3, Q)\nW_B_N> = U*N3>\nP_O_BO> = L*B1>\nV_O_N> = 0>\nMASS B = M\n\
+                INERTIA B, IB, IB, 2*IB\nFORCE_BO> = F*N1>\nTORQUE_B> = T*N3>\nUNITS M = KG, L = M, IB = KG*M^2, F = N, T = N*M, Q = RAD\n";
+    lang::check("units.al", base).unwrap_or_else(|r| panic!("{r}"));
+    let cases = [
+        (
+            "IB = KG*M^2",
+            "IB = KG*M",
+            "`IB` is a moment of inertia (of B), but its unit KG*M is not a moment of inertia",
+        ),
+        ("F = N", "F = N*M", "`F` is a force (on point BO), but its unit N*M is not a force"),
+        ("T = N*M", "T = N", "`T` is a torque (on B), but its unit N is not a torque"),
+        ("Q = RAD", "Q = M", "`Q` is an angle (it rotates B), but its unit M is not an angle"),
+    ];
+    for (good, bad, said) in cases {
+        let e = check_errors(&base.replace(good, bad));
+        assert!(e.contains(said), "{bad}: {e}");
+        let line = line_of(base, "UNITS");
+        assert!(e.contains(&format!("units.al:{line}:")), "{e}");
+    }
+    // Degrees and plain numbers are angles too.
+    for angle in ["Q = DEG", "Q = 1"] {
+        let src = base.replace("Q = RAD", angle);
+        assert!(lang::check("units.al", &src).is_ok(), "{angle}");
+    }
+}

@@ -231,13 +231,13 @@ fn run_command(
         Some(c) => {
             // The binary's equations; INPUT values (perhaps edited since it was built) from the file.
             let file = ModelFile::from_source(&file_path, source).map_err(|e| e.to_string())?;
-            let current = crate::instant::instant_entry(file.program.clone());
+            let current = crate::instant::file_entry(&file);
             (with_values_of(c.entry, &current), file.run.clone(), None)
         }
         None => {
             let file = ModelFile::from_source(&file_path, source).map_err(|e| e.to_string())?;
             eprint!("{}", file.warnings);
-            let entry = crate::instant::instant_entry(file.program.clone());
+            let entry = crate::instant::file_entry(&file);
             (entry, file.run.clone(), Some(file))
         }
     };
@@ -250,7 +250,8 @@ fn run_command(
     run_scene(&scene, registry, entry, file.as_ref(), args)
 }
 
-/// Runs `scene` with `entry` (a model file's, checked for plausibility when `file` is given).
+/// Runs `scene` with `entry` (a model file's, resolved before it is built or run when `file`
+/// is given, so implausible values stop it first).
 fn run_scene(
     scene: &Scene,
     registry: Registry,
@@ -264,8 +265,7 @@ fn run_scene(
     }
     let registry = registry.with_entry(&scene.model, entry);
     if let Some(file) = file {
-        let problem = crate::resolve::resolve(scene, &registry).map_err(|e| e.to_string())?;
-        plausible(file, &problem)?;
+        crate::resolve::resolve(scene, &registry).map_err(|e| e.to_string())?;
         if args.engine == EngineChoice::Compiled {
             return run_compiled(file, scene.integrator.method == crate::ode::TAYLOR);
         }
@@ -292,6 +292,7 @@ fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
         default_params: std::sync::Arc::new(move || param_values.clone()),
         initial_state: std::sync::Arc::new(move || state_values.clone()),
         program: current.program.clone(),
+        mechanics: current.mechanics.clone(),
         ..compiled
     }
 }
@@ -302,7 +303,7 @@ fn with_file_model(scene: &Scene, registry: Registry) -> Result<Registry, String
     let source = crate::model_file::source_with(&path, &scene.specified).map_err(|e| e.to_string())?;
     let file = ModelFile::from_source(&path, source).map_err(|e| e.to_string())?;
     eprint!("{}", file.warnings);
-    Ok(registry.with_entry(&scene.model, crate::instant::instant_entry(file.program.clone())))
+    Ok(registry.with_entry(&scene.model, crate::instant::file_entry(&file)))
 }
 
 /// The model file a scene names (`model = "file.al"`, relative to the scene), if it does.
@@ -399,33 +400,4 @@ fn print_timing(scene: &Scene, registry: &Registry, times: usize) -> Result<(), 
     walls.sort_by(f64::total_cmp);
     println!("wall time over {times} more runs: median {:.4} ms, least {:.4} ms", walls[times / 2], walls[0]);
     Ok(())
-}
-
-/// An error naming the parameter when a run's values are implausible (negative mass, inertia
-/// breaking the triangle inequality, non-unit Euler parameters).
-fn plausible(file: &ModelFile, problem: &crate::problem::Problem) -> Result<(), String> {
-    plausible_values(&file.model, &file.path.display().to_string(), problem)
-}
-
-/// The first implausible value (a negative mass, inertias that break the triangle
-/// inequality) of `problem` for `model`, as an error at `place`.
-fn plausible_values(
-    model: &kane_model::mechanics::Model,
-    place: &str,
-    problem: &crate::problem::Problem,
-) -> Result<(), String> {
-    let info = problem.model;
-    let value = |name: &str| {
-        let param =
-            info.param_names.iter().position(|p| p.eq_ignore_ascii_case(name)).map(|i| problem.params[i]);
-        param.or_else(|| info.state(name).map(|i| problem.initial[i]))
-    };
-    let issues = kane_model::plausibility::plausibility(model, value);
-    match issues.first() {
-        None => Ok(()),
-        Some(i) => Err(format!(
-            "{place}: error: implausible value of {}: {}\n  help: change {} (under [parameters] or [initial], or with --set)",
-            i.parameter, i.message, i.parameter
-        )),
-    }
 }
