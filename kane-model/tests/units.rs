@@ -82,7 +82,7 @@ fn a_unit_of_another_dimension_than_the_quantitys_use_is_an_error() {
 fn inertias_forces_torques_and_angles_are_checked_against_their_units() {
     let base = "NEWTONIAN N\nBODIES B\nPOINTS O\nCONSTANTS M, IB, F, T, L\nVARIABLES Q'\nMOTIONVARIABLES' U'\n\
                 Q' = U\nSIMPROT(N, B, 3, Q)\nW_B_N> = U*N3>\nP_O_BO> = L*B1>\nV_O_N> = 0>\nMASS B = M\n\
-                INERTIA B, IB, IB, 2*IB\nFORCE_BO> = F*N1>\nTORQUE_B> = T*N3>\nUNITS M = KG, L = M, IB = KG*M^2, F = N, T = N*M, Q = RAD\n";
+                INERTIA B, IB, IB, 2*IB\nFORCE_BO> = F*N1>\nTORQUE_B> = T*N3>\nUNITS M = KG, L = M, IB = KG*M^2, F = N, T = N*M, Q = RAD\nKANE()\n";
     lang::check("units.al", base).unwrap_or_else(|r| panic!("{r}"));
     let cases = [
         (
@@ -100,7 +100,7 @@ fn inertias_forces_torques_and_angles_are_checked_against_their_units() {
         let line = line_of(base, "UNITS");
         assert!(e.contains(&format!("units.al:{line}:")), "{e}");
     }
-    // Degrees and plain numbers are angles too.
+    // Loads are known to a file that forms its equations; degrees and plain numbers are angles too.
     for angle in ["Q = DEG", "Q = 1"] {
         let src = base.replace("Q = RAD", angle);
         assert!(lang::check("units.al", &src).is_ok(), "{angle}");

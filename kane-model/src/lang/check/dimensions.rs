@@ -1,7 +1,8 @@
 //! UNITS and INPUT unit tags against what a quantity is: a constant that is a body's or
 //! particle's mass is a mass, one that places a point along a frame's axis (`P_O_P> = L*B1>`)
 //! is a length, an entry of an inertia is a moment of inertia, a measure of a force or torque
-//! is a force or torque, and a symbol that rotates a frame (`SIMPROT(A, B, 3, Q)`) is an angle.
+//! is a force or torque (once KANE(), FR() or the like has applied the loads), and a symbol
+//! that rotates a frame (`SIMPROT(A, B, 3, Q)`) is an angle.
 //! In: a loaded model and its source. Out: an error where a unit of another dimension is given
 //! to it (`UNITS L = KG`), naming the use that makes it what it is.
 
