@@ -227,7 +227,7 @@ fn a_quantity_given_twice_in_two_spellings_names_both() {
     let e = error(
         "model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[parameters]\nY = 1.0\ny = 2.0\n",
     );
-    assert!(e.starts_with("bad.toml:6:1: error: `y` is given twice: `Y` sets the same quantity"), "{e}");
+    assert!(e.starts_with("bad.toml:6:5: error: `y` is given twice: `Y` sets the same quantity"), "{e}");
     let e = error(
         "model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[initial]\nu3 = 1.0\nU3 = 2.0\n",
     );

@@ -376,9 +376,13 @@ fn start_compiled(file: &ModelFile, taylor: bool) -> Result<(PathBuf, String), S
 
 /// Runs, writes and summarises.
 fn finish(scene: &Scene, registry: &Registry, args: &RunArgs) -> Result<ExitCode, String> {
-    let failed = |e: &dyn std::fmt::Display| format!("{}: {e}", scene.path.display());
+    let failed = |e: crate::run::RunError| match e {
+        // A scene error already names the file, line and column; the View error names the file.
+        crate::run::RunError::Scene(_) | crate::run::RunError::View { .. } => e.to_string(),
+        e => format!("{}: {e}", scene.path.display()),
+    };
     let out = args.out.as_deref();
-    let summary = crate::run::run_with(scene, registry, out).map_err(|e| failed(&e))?;
+    let summary = crate::run::run_with(scene, registry, out).map_err(failed)?;
     print_summary(&scene.title, &summary);
     if let Some(entry) = registry.find(&scene.model) {
         println!("model {} ran {}", entry.info.name, entry.engine.label());

@@ -58,6 +58,13 @@ pub(crate) fn probe<S: System + ?Sized>(
     max_steps: usize,
 ) -> Option<(f64, Vec<f64>)> {
     let watched = Watched { inner: sys, first_bad: RefCell::new(None) };
+    if method.tableau().is_some_and(|t| t.dense.is_none()) {
+        // Without a continuous extension steps cannot be watched; the rates still are.
+        let _ = ode::integrate_limited(&watched, t0, y0, &[t_end], method, max_steps, |_, _| {
+            ControlFlow::Continue(())
+        });
+        return watched.first_bad.into_inner();
+    }
     let mut last: Option<(f64, Vec<f64>)> = None;
     let watch = |s: &dyn Stepping| {
         if s.y().iter().all(|v| v.is_finite()) {

@@ -3,7 +3,8 @@
 # installed when missing, daemons started here and stopped at the end), a stepped job array of 4
 # tasks (--array=0-6:2: ids 0, 2, 4, 6, each shard (ID-MIN)/STEP+1 of 4) running the README's job
 # script, `sweep-merge` (which checks every member is there once), and a byte-for-byte comparison
-# with the same sweep run unsharded. Skips (exit 0, saying why) where Slurm cannot be installed or started:
+# with the same sweep run unsharded; then the same array with one task failing (as a lost node
+# would), whose merge must be refused naming the missing members. Skips (exit 0, saying why) where Slurm cannot be installed or started:
 # not root, or no package registry. Needs target/release/gyro-sim (built when missing).
 # Usage: gyro-sim/tests/slurm/sharded_sweep.sh
 set -euo pipefail
@@ -68,17 +69,28 @@ done
 sweep=(gyro-sim/scenes/paper/trial3.toml --vary "U3=50:150 rad/s" --vary "Z=0:20" --samples 200 --seed 7)
 cd "$repo"
 target/release/gyro-sim sweep "${sweep[@]}" --out "$work/whole" >/dev/null
-# The README's job script, with 4 array tasks on stepped ids.
-cat >"$work/job.sh" <<JOB
+# The README's job script, with 4 array tasks on stepped ids, as array NAME whose task LOST fails.
+job() {
+  cat >"$work/$1.sh" <<JOB
 #!/bin/bash
 #SBATCH --array=0-6:2
 #SBATCH --cpus-per-task=1
-#SBATCH --output=$work/task-%a.log
-target/release/gyro-sim sweep ${sweep[*]@Q} --out $work/lhs/shard-\$SLURM_ARRAY_TASK_ID
+#SBATCH --output=$work/$1-%a.log
+[ "\$SLURM_ARRAY_TASK_ID" = "$2" ] && exit 1
+target/release/gyro-sim sweep ${sweep[*]@Q} --out $work/$1/shard-\$SLURM_ARRAY_TASK_ID
 JOB
-sbatch --wait --chdir="$repo" "$work/job.sh" >/dev/null || { cat "$work"/task-*.log; exit 1; }
+  sbatch --wait --chdir="$repo" "$work/$1.sh" >/dev/null
+}
+job lhs "" || { cat "$work"/lhs-*.log; exit 1; }
 target/release/gyro-sim sweep-merge --out "$work/lhs" "$work"/lhs/shard-* >/dev/null
 cmp "$work/whole/sweep.csv" "$work/lhs/sweep.csv"
 rows=$(($(wc -l <"$work/lhs/sweep.csv") - 1))
 echo "slurm: 4 array tasks (ids 0-6:2), $rows members merged, equal byte for byte to the unsharded sweep"
+# The same array with task 4 lost (as on a failed node): its merge is refused, naming the members missing.
+job lost 4 && { echo "slurm: the lost task did not fail"; exit 1; }
+if target/release/gyro-sim sweep-merge --out "$work/lost" "$work"/lost/shard-* >"$work/lost.out" 2>&1; then
+  echo "slurm: a merge without task 4's shard was accepted:"; cat "$work/lost.out"; exit 1
+fi
+grep -q "missing" "$work/lost.out" || { echo "slurm: the refusal does not name the missing members:"; cat "$work/lost.out"; exit 1; }
+echo "slurm: the array with task 4 lost is refused: $(grep -m1 missing "$work/lost.out")"
 passed=1
