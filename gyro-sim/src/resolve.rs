@@ -134,9 +134,12 @@ fn given_once<T>(
     table: &[(String, T, std::ops::Range<usize>)],
     index: impl Fn(&str) -> Option<usize>,
 ) -> Result<(), SceneError> {
-    for (k, (name, _, span)) in table.iter().enumerate() {
+    // In the order the file gives them (a table's keys may come sorted).
+    let mut in_file: Vec<_> = table.iter().collect();
+    in_file.sort_by_key(|(_, _, span)| span.start);
+    for (k, (name, _, span)) in in_file.iter().enumerate() {
         let Some(i) = index(name) else { continue };
-        if let Some((first, _, _)) = table[..k].iter().find(|(n, _, _)| index(n) == Some(i)) {
+        if let Some((first, _, _)) = in_file[..k].iter().find(|(n, _, _)| index(n) == Some(i)) {
             return Err(scene.error_at(
                 span.clone(),
                 format!(
