@@ -52,23 +52,26 @@ pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCo
     let _lock = sweep::lock::FolderLock::take(args.out)?;
     sweep::identity::bind(args.out, &plan, args.new)?;
     let fingerprint = plan.fingerprint();
-    let (journal, journaled) = sweep::Journal::open(args.out, &fingerprint, &header)?;
-    let done = done_members(args.out, &header, &journaled, members.len())?;
+    let mut done = MemberSet::new(members.len());
+    let journal = sweep::Journal::open(args.out, &fingerprint, &header, &mut |e| {
+        done.insert(e.member);
+        Ok(())
+    })?;
+    add_rows(args.out, &header, &mut done)?;
     let shard_len = (shard.index..members.len()).step_by(shard.count).len();
     let todo = sweep::todo(members.len(), shard, &done);
     let run =
         Run { scene: &scene, vary: args.vary, members: &members, registry: &registry, journal: &journal };
     let (ran, failed) =
         run.journaled(todo, shard_len.saturating_sub(done.len()), header.len() - names.len() - 4)?;
-    let entries = sweep::scan_journal(args.out, &fingerprint, &header)?;
     if let Some(by) = crate::interrupt::requested() {
+        let kept = sweep::scan_journal(args.out, &fingerprint, &header, &mut |_| Ok(()))?;
         return Err(format!(
-            "{by}: {} members done are kept in {}; run the same command again to resume",
-            entries.len(),
+            "{by}: {kept} members done are kept in {}; run the same command again to resume",
             args.out.join(sweep::JOURNAL_FILE).display()
         ));
     }
-    sweep::finish(args.out, &header, entries)?;
+    sweep::finish(args.out, &fingerprint, &header)?;
     journal.remove()?;
     println!(
         "{}: {ran} members run ({failed} failed, named in their rows), {} already done; wrote {}",
@@ -96,7 +99,7 @@ fn plan_of(
     };
     let design = match design {
         Design::Grid => "grid".to_string(),
-        Design::Samples { count, seed } => format!("Latin-hypercube sample of {count} from seed {seed}"),
+        Design::Samples { count, seed } => format!("Latin-hypercube sample of {count} from seed {seed} (members drawn from their index)"),
     };
     Ok(SweepPlan {
         scene: scene.path.display().to_string(),
@@ -111,15 +114,8 @@ fn plan_of(
     })
 }
 
-/// The members already done in `out`: rows of its `sweep.csv` (whose columns must be `header`)
-/// and those `journaled`.
-fn done_members(
-    out: &Path,
-    header: &[String],
-    journaled: &[sweep::Entry],
-    count: usize,
-) -> Result<MemberSet, String> {
-    let mut done = MemberSet::new(count);
+/// Adds to `done` the members of the rows of `out/sweep.csv` (whose columns must be `header`).
+fn add_rows(out: &Path, header: &[String], done: &mut MemberSet) -> Result<(), String> {
     let csv_path = out.join("sweep.csv");
     if let Some(mut rows) = sweep::table::RowLines::open(&csv_path)? {
         if rows.header != header {
@@ -132,10 +128,7 @@ fn done_members(
             done.insert(m);
         }
     }
-    for e in journaled {
-        done.insert(e.member);
-    }
-    Ok(done)
+    Ok(())
 }
 
 /// What members run with.

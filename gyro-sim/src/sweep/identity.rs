@@ -25,7 +25,8 @@ pub struct SweepPlan {
     pub model_text: String,
     /// The varied ranges, `NAME=START:STOP[:N] [UNIT]`.
     pub vary: Vec<String>,
-    /// `grid`, or `Latin-hypercube sample of N from seed S`.
+    /// `grid`, or `Latin-hypercube sample of N from seed S (members drawn from their index)` (a
+    /// sample drawn otherwise, by an older version, has another text and is not resumed).
     pub design: String,
     /// How many members the whole sweep has.
     pub members: usize,

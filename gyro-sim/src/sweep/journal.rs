@@ -19,6 +19,9 @@ pub struct Journal {
     file: Mutex<File>,
 }
 
+/// Called with a member's index and its line's bytes (newline included).
+pub type VisitLine<'a> = &'a mut dyn FnMut(usize, &[u8]) -> Result<(), String>;
+
 /// One journaled member: its index and where its line is in the file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Entry {
@@ -32,11 +35,19 @@ pub struct Entry {
 
 impl Journal {
     /// Opens (creating) the journal in `dir` of the sweep `fingerprint` whose rows carry
-    /// `header`, with the members it holds; an error when it holds another sweep's rows.
-    pub fn open(dir: &Path, fingerprint: &str, header: &[String]) -> Result<(Journal, Vec<Entry>), String> {
+    /// `header`, passing each member line it holds to `visit`; an error when it holds another
+    /// sweep's rows.
+    pub fn open(
+        dir: &Path,
+        fingerprint: &str,
+        header: &[String],
+        visit: &mut dyn FnMut(Entry) -> Result<(), String>,
+    ) -> Result<Journal, String> {
         let path = dir.join(JOURNAL_FILE);
         let fresh = !has_header(&path)?;
-        let entries = if fresh { Vec::new() } else { scan(dir, fingerprint, header)? };
+        if !fresh {
+            scan(dir, fingerprint, header, visit)?;
+        }
         let file = OpenOptions::new()
             .create(true)
             .append(true)
@@ -50,7 +61,7 @@ impl Journal {
             head.extend(super::table::record_bytes(&line)?);
             journal.write(&head)?;
         }
-        Ok((journal, entries))
+        Ok(journal)
     }
 
     /// Appends one member's `cells` and wall time, flushed before returning.
@@ -134,13 +145,19 @@ fn complete_length(mut file: &File) -> std::io::Result<u64> {
     Ok(if last[0] == b'\n' { len } else { len - 1 })
 }
 
-/// The complete member lines of the journal in `dir` (none when there is none), checked to be
-/// of the sweep `fingerprint` with `header`.
-pub fn scan(dir: &Path, fingerprint: &str, header: &[String]) -> Result<Vec<Entry>, String> {
+/// Passes each complete member line of the journal in `dir` (none when there is none) to
+/// `visit`, in the file's order, once it is checked to be of the sweep `fingerprint` with
+/// `header`; how many there were.
+pub fn scan(
+    dir: &Path,
+    fingerprint: &str,
+    header: &[String],
+    visit: &mut dyn FnMut(Entry) -> Result<(), String>,
+) -> Result<usize, String> {
     let path = dir.join(JOURNAL_FILE);
     let file = match File::open(&path) {
         Ok(f) => f,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(0),
         Err(e) => return Err(format!("{}: {e}", path.display())),
     };
     let complete = complete_length(&file).map_err(|e| format!("{}: {e}", path.display()))?;
@@ -161,7 +178,7 @@ pub fn scan(dir: &Path, fingerprint: &str, header: &[String]) -> Result<Vec<Entr
     if read(&mut r, &mut rec)? && !rec.iter().eq(wanted) {
         return Err(bad("its columns are not this sweep's"));
     }
-    let mut entries = Vec::new();
+    let mut count = 0;
     loop {
         let start = r.position().byte();
         if !read(&mut r, &mut rec)? {
@@ -171,13 +188,43 @@ pub fn scan(dir: &Path, fingerprint: &str, header: &[String]) -> Result<Vec<Entr
         let member = std::str::from_utf8(rec.get(1).unwrap_or_default()).ok().and_then(|m| m.parse().ok());
         match member {
             Some(member) if rec.len() == header.len() + 1 && end <= complete => {
-                entries.push(Entry { member, start, end })
+                visit(Entry { member, start, end })?;
+                count += 1;
             }
             _ if end >= complete => break, // a line still being written
             _ => return Err(bad(&format!("a damaged line ({} cells) at byte {start}", rec.len()))),
         }
     }
-    Ok(entries)
+    Ok(count)
+}
+
+/// Passes each complete member line of the journal in `dir`, as [`scan`] finds them, to `visit`
+/// with its bytes (newline included), read in one forward pass; how many there were.
+pub fn scan_lines(
+    dir: &Path,
+    fingerprint: &str,
+    header: &[String],
+    visit: VisitLine<'_>,
+) -> Result<usize, String> {
+    use std::io::Read;
+    let path = dir.join(JOURNAL_FILE);
+    let fail = |e: std::io::Error| format!("{}: {e}", path.display());
+    // The journal read forward a second time, and the byte it is at.
+    let mut second: Option<(std::io::BufReader<File>, u64)> = None;
+    let mut line = Vec::new();
+    scan(dir, fingerprint, header, &mut |e| {
+        if second.is_none() {
+            second = Some((std::io::BufReader::new(File::open(&path).map_err(fail)?), 0));
+        }
+        let (reader, at) = second.as_mut().ok_or("the journal is not open")?;
+        let skip = e.start.checked_sub(*at).and_then(|n| i64::try_from(n).ok());
+        let skip = skip.ok_or_else(|| format!("{}: lines out of order", path.display()))?;
+        reader.seek_relative(skip).map_err(fail)?;
+        line.resize(usize::try_from(e.end - e.start).unwrap_or(0), 0);
+        reader.read_exact(&mut line).map_err(fail)?;
+        *at = e.end;
+        visit(e.member, &line)
+    })
 }
 
 #[cfg(test)]
@@ -188,12 +235,23 @@ mod tests {
         ["member", "Y", "status"].map(String::from).to_vec()
     }
 
+    /// The journal's member lines as `scan` finds them.
+    fn entries(dir: &Path, header: &[String]) -> Result<Vec<Entry>, String> {
+        let mut out = Vec::new();
+        let n = scan(dir, "fp", header, &mut |e| {
+            out.push(e);
+            Ok(())
+        })?;
+        assert_eq!(n, out.len());
+        Ok(out)
+    }
+
     #[test]
     fn complete_lines_survive_and_a_cut_last_line_is_dropped() {
         let dir = std::env::temp_dir().join(format!("journal-test-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let _ = std::fs::remove_file(dir.join(JOURNAL_FILE));
-        let (j, _) = Journal::open(&dir, "fp", &header()).unwrap();
+        let j = Journal::open(&dir, "fp", &header(), &mut |_| Ok(())).unwrap();
         j.record(&["0".into(), "1.5".into(), "ok".into()], 2.0).unwrap();
         j.record(&["1".into(), "2.5".into(), "a, \"quoted\" failure".into()], 3.0).unwrap();
         drop(j);
@@ -201,18 +259,35 @@ mod tests {
         let mut f = OpenOptions::new().append(true).open(dir.join(JOURNAL_FILE)).unwrap();
         f.write_all(b"4.0000,2,3.5,o").unwrap();
         let text = std::fs::read_to_string(dir.join(JOURNAL_FILE)).unwrap();
-        let entries = scan(&dir, "fp", &header()).unwrap();
-        assert_eq!(entries.iter().map(|e| e.member).collect::<Vec<_>>(), [0, 1]);
-        let line = &text[entries[1].start as usize..entries[1].end as usize];
+        let found = entries(&dir, &header()).unwrap();
+        assert_eq!(found.iter().map(|e| e.member).collect::<Vec<_>>(), [0, 1]);
+        let line = &text[found[1].start as usize..found[1].end as usize];
         assert_eq!(line, "3.0000,1,2.5,\"a, \"\"quoted\"\" failure\"\n");
+        let mut lines = Vec::new();
+        let n = scan_lines(&dir, "fp", &header(), &mut |m, l| {
+            lines.push((m, l.to_vec()));
+            Ok(())
+        });
+        assert_eq!(n, Ok(2));
+        let want: Vec<(usize, Vec<u8>)> = found
+            .iter()
+            .map(|e| (e.member, text.as_bytes()[e.start as usize..e.end as usize].to_vec()))
+            .collect();
+        assert_eq!(lines, want);
         let other = ["member", "Z", "status"].map(String::from);
-        assert!(scan(&dir, "fp", &other).unwrap_err().contains("columns are not this sweep's"));
-        assert!(Journal::open(&dir, "other", &header()).is_err_and(|e| e.contains("another sweep's journal")));
+        assert!(entries(&dir, &other).unwrap_err().contains("columns are not this sweep's"));
+        let refused = Journal::open(&dir, "other", &header(), &mut |_| Ok(()));
+        assert!(refused.is_err_and(|e| e.contains("another sweep's journal")));
         // Reopening drops the cut line, so the next record starts a line of its own.
-        let (j, held) = Journal::open(&dir, "fp", &header()).unwrap();
-        assert_eq!(held.len(), 2);
+        let mut held = 0;
+        let j = Journal::open(&dir, "fp", &header(), &mut |_| {
+            held += 1;
+            Ok(())
+        });
+        let j = j.unwrap();
+        assert_eq!(held, 2);
         j.record(&["2".into(), "3.5".into(), "ok".into()], 4.0).unwrap();
-        let members: Vec<usize> = scan(&dir, "fp", &header()).unwrap().iter().map(|e| e.member).collect();
+        let members: Vec<usize> = entries(&dir, &header()).unwrap().iter().map(|e| e.member).collect();
         assert_eq!(members, [0, 1, 2]);
         std::fs::remove_dir_all(&dir).unwrap();
     }

@@ -2,9 +2,6 @@
 //! grid or a Latin-hypercube sample; out go the members, each an index and one value per range,
 //! made from its index when asked, in a fixed order (so a member's index names it in every shard and every re-run).
 
-use rand::seq::SliceRandom;
-use rand::{Rng, SeedableRng};
-
 use crate::scene::Value;
 
 /// One quantity to vary.
@@ -70,8 +67,7 @@ pub fn parse_range(text: &str) -> Result<Range, String> {
     Ok(Range { name: name.trim().to_string(), start, stop, points, unit })
 }
 
-/// The most members one sweep may have (each finished member costs a few bytes of bookkeeping,
-/// a Latin-hypercube sample 8 bytes per member and range).
+/// The most members one sweep may have (each costs one bit of bookkeeping: which are done).
 pub const MAX_MEMBERS: usize = 10_000_000;
 
 /// How a sweep's members are chosen.
@@ -100,8 +96,13 @@ pub struct Members {
 enum Points {
     /// Points per range (a grid).
     Grid(Vec<usize>),
-    /// Per range, each member's fraction of the way from start to stop (a sample).
-    Sample(Vec<Vec<f64>>),
+    /// A Latin-hypercube sample: each member's fractions made from its index.
+    Sample {
+        /// Members.
+        count: usize,
+        /// The seed the strata's order and the points inside them come from.
+        seed: u64,
+    },
 }
 
 impl Members {
@@ -123,7 +124,7 @@ impl Members {
                         "--samples {count}: give 1 to {MAX_MEMBERS} samples (the most members one sweep may have)"
                     ));
                 }
-                Points::Sample(latin_fractions(ranges.len(), *count, *seed))
+                Points::Sample { count: *count, seed: *seed }
             }
         };
         Ok(Members { ranges: ranges.to_vec(), how })
@@ -133,7 +134,7 @@ impl Members {
     pub fn len(&self) -> usize {
         match &self.how {
             Points::Grid(points) => points.iter().product(),
-            Points::Sample(fractions) => fractions.first().map_or(0, Vec::len),
+            Points::Sample { count, .. } => *count,
         }
     }
 
@@ -155,9 +156,9 @@ impl Members {
                 }
                 values
             }
-            Points::Sample(fractions) => {
-                self.ranges.iter().zip(fractions).map(|(r, f)| at(r, f[index])).collect()
-            }
+            Points::Sample { count, seed } => (0..self.ranges.len())
+                .map(|d| at(&self.ranges[d], super::latin::fraction(*seed, d, *count, index)))
+                .collect(),
         };
         Member { index, values }
     }
@@ -183,19 +184,6 @@ fn grid_points(ranges: &[Range]) -> Result<Vec<usize>, String> {
         ));
     }
     Ok(points)
-}
-
-/// Latin-hypercube fractions for `dims` ranges and `samples` members from `seed`: each range
-/// cut into `samples` equal strata, each stratum used once, a uniform point inside it.
-fn latin_fractions(dims: usize, samples: usize, seed: u64) -> Vec<Vec<f64>> {
-    let mut rng = rand::rngs::StdRng::seed_from_u64(seed);
-    (0..dims)
-        .map(|_| {
-            let mut strata: Vec<usize> = (0..samples).collect();
-            strata.shuffle(&mut rng);
-            strata.into_iter().map(|s| (s as f64 + rng.random::<f64>()) / samples as f64).collect()
-        })
-        .collect()
 }
 
 /// The value a fraction `f` of the way from a range's start to its stop.
