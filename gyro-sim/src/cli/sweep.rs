@@ -99,7 +99,9 @@ fn plan_of(
     };
     let design = match design {
         Design::Grid => "grid".to_string(),
-        Design::Samples { count, seed } => format!("Latin-hypercube sample of {count} from seed {seed} (members drawn from their index)"),
+        Design::Samples { count, seed } => {
+            format!("Latin-hypercube sample of {count} from seed {seed} (members drawn from their index)")
+        }
     };
     Ok(SweepPlan {
         scene: scene.path.display().to_string(),
