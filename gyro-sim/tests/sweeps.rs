@@ -462,3 +462,50 @@ fn twenty_kills_at_random_instants_each_resumed_end_equal_to_an_uninterrupted_sw
     assert_eq!(timing.lines().count(), 151);
     assert!(!part.join("sweep.journal.csv").exists());
 }
+
+#[test]
+fn fresh_sweeps_killed_at_any_instant_resume_to_the_uninterrupted_bytes() {
+    // `SWEEP_KILL_TRIALS` sets the number of trials (default 10): each a new sweep killed once
+    // at a random instant of its run (its end included), then resumed to the end.
+    let trials: u64 = std::env::var("SWEEP_KILL_TRIALS").ok().and_then(|n| n.parse().ok()).unwrap_or(10);
+    let dir = folder("fresh_kills");
+    let scene = gimbal(&dir, "gimbal.toml", 1.0);
+    let vary = ["--vary", "Y=5:50:12", "--vary", "U3=50:150:5 rad/s"];
+    let whole = dir.join("whole");
+    let start = std::time::Instant::now();
+    ok(sweep_of(&scene, &whole, &vary).output().unwrap());
+    let full = start.elapsed().as_micros() as u64;
+    let (expected, expected_timing_rows) = (csv(&whole), 61);
+    let mut x: u64 = 0x2545_f491_4f6c_dd1d;
+    let mut cut_short = 0;
+    for trial in 0..trials {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        let part = dir.join(format!("part{trial}"));
+        let mut child = sweep_of(&scene, &part, &vary)
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(std::time::Duration::from_micros(x % (full + full / 10)));
+        cut_short += u64::from(child.try_wait().unwrap().is_none());
+        let _ = child.kill();
+        child.wait().unwrap();
+        let said = ok(sweep_of(&scene, &part, &vary).output().unwrap());
+        assert_eq!(csv(&part), expected, "trial {trial}: {said}");
+        let timing = std::fs::read_to_string(part.join("timing.csv")).unwrap();
+        assert_eq!(timing.lines().count(), expected_timing_rows, "trial {trial}");
+        let left: Vec<_> = std::fs::read_dir(&part).unwrap().flatten().map(|e| e.file_name()).collect();
+        let stray = left.iter().filter(|n| n.to_string_lossy().starts_with('.')).count();
+        assert_eq!(stray, 0, "trial {trial}: files left behind: {left:?}");
+        std::fs::remove_dir_all(&part).unwrap();
+    }
+    println!(
+        "sweep kill trials: {trials}, {cut_short} killed while running, each resumed equal to the whole"
+    );
+    assert!(
+        trials < 4 || cut_short * 2 >= trials,
+        "only {cut_short} of {trials} kills found the sweep running"
+    );
+}
