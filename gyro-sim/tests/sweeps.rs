@@ -298,7 +298,7 @@ fn a_merge_refuses_a_missing_shard_a_lost_member_and_another_plans_shard() {
         c.output().unwrap()
     };
     let e = refused(merge(&[&s1, &s2]));
-    assert!(e.contains("shard 3/3 of the sweep is missing (2 of 3 shards given)"), "{e}");
+    assert!(e.contains("shard 3/3 (members 2, 5) of the sweep is missing (2 of 3 shards given)"), "{e}");
     let e = refused(merge(&[&s1, &s2, &elsewhere]));
     assert!(
         e.contains("is another sweep's shard") && e.contains("varied Y=5:50:8; this one Y=5:60:8"),

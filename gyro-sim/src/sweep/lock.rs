@@ -1,6 +1,7 @@
 //! One sweep per folder at a time: in comes a sweep's folder; out goes a lock on its
 //! `sweep.lock`, held until dropped (the kernel drops it when the process dies), so a second
 //! sweep into the folder is refused at once instead of sharing (and deleting) the first's journal.
+//! Taking it removes the temporaries a killed sweep left there (none can be live: the lock is free).
 
 use std::fs::{File, OpenOptions, TryLockError};
 use std::path::Path;
@@ -25,7 +26,11 @@ impl FolderLock {
             .open(&path)
             .map_err(|e| format!("{}: {e}", path.display()))?;
         match file.try_lock() {
-            Ok(()) => Ok(FolderLock { _file: file }),
+            Ok(()) => {
+                let own = ["sweep.csv", "timing.csv", super::PLAN_FILE, super::sorted_runs::RUN_NAME];
+                remove_temporaries(dir, &own)?;
+                Ok(FolderLock { _file: file })
+            }
             Err(TryLockError::WouldBlock) => Err(format!(
                 "another sweep is running in {} (it holds {}): wait for it to end, or give another --out",
                 dir.display(),
@@ -51,4 +56,24 @@ mod tests {
         FolderLock::take(&dir).unwrap();
         std::fs::remove_dir_all(&dir).unwrap();
     }
+}
+
+/// Removes from `dir` the temporaries (`.partial-{pid}-{random}-NAME`) of the files `names`.
+pub(crate) fn remove_temporaries(dir: &Path, names: &[&str]) -> Result<(), String> {
+    let entries = match std::fs::read_dir(dir) {
+        Ok(entries) => entries,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),
+        Err(e) => return Err(format!("{}: {e}", dir.display())),
+    };
+    for entry in entries {
+        let entry = entry.map_err(|e| format!("{}: {e}", dir.display()))?;
+        let name = entry.file_name();
+        let name = name.to_string_lossy();
+        let of_one = names.iter().any(|n| name.ends_with(&format!("-{n}")));
+        if name.starts_with(".partial-") && of_one {
+            let path = entry.path();
+            std::fs::remove_file(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+        }
+    }
+    Ok(())
 }

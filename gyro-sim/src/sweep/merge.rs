@@ -81,7 +81,7 @@ fn shard_slots<'a>(shards: &[&'a Path]) -> Result<Vec<&'a Path>, String> {
     }
     let missing: Vec<String> = (0..slots.len())
         .filter(|k| slots[*k].is_none())
-        .map(|k| format!("{}/{}", k + 1, first.shards))
+        .map(|k| format!("{}/{} ({})", k + 1, first.shards, shard_members(k, first.shards, first.members)))
         .collect();
     if !missing.is_empty() {
         return Err(format!(
@@ -94,6 +94,19 @@ fn shard_slots<'a>(shards: &[&'a Path]) -> Result<Vec<&'a Path>, String> {
         ));
     }
     Ok(slots.into_iter().flatten().collect())
+}
+
+/// The members of shard `k` (from 0) of `count` in a sweep of `total`, in words:
+/// `members 2, 6, 10, ..., 198: 50 members`.
+fn shard_members(k: usize, count: usize, total: usize) -> String {
+    let members: Vec<usize> = (k..total).step_by(count.max(1)).collect();
+    let shown = |m: &[usize]| m.iter().map(usize::to_string).collect::<Vec<_>>().join(", ");
+    match members.len() {
+        0 => "no members".to_string(),
+        1 => format!("member {}", members[0]),
+        n if n <= 4 => format!("members {}", shown(&members)),
+        n => format!("members {}, ..., {}: {n} members", shown(&members[..3]), members[n - 1]),
+    }
 }
 
 /// The shards' plan and columns, once every member of the plan is in its shard's rows exactly
@@ -152,4 +165,17 @@ fn listed(items: &[String], total: usize) -> String {
 /// The error for a shard folder without rows.
 fn no_rows(dir: &Path) -> String {
     format!("{}: no sweep.csv (is it a finished shard's --out folder?)", dir.display())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::shard_members;
+
+    #[test]
+    fn a_missing_shard_is_named_by_its_members() {
+        assert_eq!(shard_members(2, 4, 200), "members 2, 6, 10, ..., 198: 50 members");
+        assert_eq!(shard_members(1, 4, 9), "members 1, 5");
+        assert_eq!(shard_members(3, 4, 5), "member 3");
+        assert_eq!(shard_members(4, 5, 3), "no members");
+    }
 }

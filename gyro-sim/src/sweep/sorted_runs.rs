@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 use super::journal::VisitLine;
 
 /// The name run files are temporaries of (`.partial-{pid}-{random}-sweep.run`).
-const RUN_NAME: &str = "sweep.run";
+pub(crate) const RUN_NAME: &str = "sweep.run";
 
 /// Bytes a buffer of lines may hold before it is written as a run.
 pub const RUN_BUDGET: usize = 64 << 20;
@@ -39,7 +39,7 @@ impl SortedRuns {
     /// Sorting into `dir` with a buffer of `budget` bytes, merging `fan_in` runs at once; run
     /// files left there by an earlier, killed sort are removed (the folder's lock is held).
     pub fn new(dir: &Path, budget: usize, fan_in: usize) -> Result<SortedRuns, String> {
-        remove_stale_runs(dir)?;
+        super::lock::remove_temporaries(dir, &[RUN_NAME])?;
         Ok(SortedRuns {
             dir: dir.to_path_buf(),
             budget,
@@ -121,25 +121,6 @@ impl Drop for SortedRuns {
             let _ = std::fs::remove_file(path);
         }
     }
-}
-
-/// Removes the run files an earlier sort in `dir` left when it was killed.
-fn remove_stale_runs(dir: &Path) -> Result<(), String> {
-    let entries = match std::fs::read_dir(dir) {
-        Ok(entries) => entries,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),
-        Err(e) => return Err(format!("{}: {e}", dir.display())),
-    };
-    for entry in entries {
-        let entry = entry.map_err(|e| format!("{}: {e}", dir.display()))?;
-        let name = entry.file_name();
-        let name = name.to_string_lossy();
-        if name.starts_with(".partial-") && name.ends_with(&format!("-{RUN_NAME}")) {
-            let path = entry.path();
-            std::fs::remove_file(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-        }
-    }
-    Ok(())
 }
 
 /// Passes the lines of the sorted `runs` to `visit` in member order, each member once: of equal
