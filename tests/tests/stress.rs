@@ -250,7 +250,7 @@ fn negative_mass_in_a_scene_is_implausible_at_its_line() {
     let scene = file(&dir, "g.toml", &gimbal("M1 = -2.0", ""));
     let line =
         std::fs::read_to_string(&scene).unwrap().lines().position(|l| l.starts_with("M1 =")).unwrap() + 1;
-    let place = format!("g.toml:{line}:1: error: implausible value of M1");
+    let place = format!("g.toml:{line}:6: error: implausible value of M1");
     run(&scene, &dir.join("out")).fails_naming(&[&place, "the mass of", "cannot be negative"]);
 }
 
