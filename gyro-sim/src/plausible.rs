@@ -25,7 +25,7 @@ pub(crate) fn check(scene: &Scene, entry: &ModelEntry, problem: &Problem) -> Res
             .iter()
             .map(|(n, _, s)| (n, s))
             .chain(scene.initial.iter().map(|(n, _, s)| (n, s)));
-        tables.filter(|(n, _)| n.eq_ignore_ascii_case(name)).map(|(_, s)| s.clone()).last()
+        tables.filter(|(n, _)| n.eq_ignore_ascii_case(name)).map(|(_, s)| s.clone()).next_back()
     };
     let span = std::iter::once(&issue.parameter)
         .chain(&issue.involved)

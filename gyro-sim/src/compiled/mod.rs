@@ -134,7 +134,7 @@ pub fn not_a_program(path: &Path) -> Option<String> {
     }
     const HEADERS: [[u8; 4]; 4] =
         [*b"\x7fELF", [0xcf, 0xfa, 0xed, 0xfe], [0xce, 0xfa, 0xed, 0xfe], [0xca, 0xfe, 0xba, 0xbe]];
-    let native = HEADERS.iter().any(|h| *h == head) || (cfg!(windows) && head[..2] == *b"MZ");
+    let native = HEADERS.contains(&head) || (cfg!(windows) && head[..2] == *b"MZ");
     (!native).then(|| "it does not start with a program header (ELF, Mach-O or PE)".to_string())
 }
 
