@@ -43,9 +43,8 @@ fn the_spin_slider_redraws_the_run_gyro_sim_run_gives() {
     let dir = folder("browser_cusp");
     let url = format!("http://{}/", server.address);
     let mut browser = Browser::open(&url, &dir.join("profile"));
-    browser.eval(&format!(
-        "(async () => {{ {UNTIL} await until(() => window.gyroState?.ready); gyroView.pause(); }})()"
-    ));
+    browser.wait_for("window.gyroState?.ready === true");
+    browser.eval("gyroView.pause()");
     let before = browser.eval(&format!("gyroView.valueAt('ELEVATION', {AT})")).as_f64().unwrap();
 
     let spins: Vec<f64> = (0..20).map(|k| 12.0 + 0.5 * k as f64).collect();
@@ -89,6 +88,7 @@ fn toggles_hide_arrows_and_bad_values_show_the_error() {
     let server = serve(&scene_path("ejs/cusp.toml"));
     let dir = folder("browser_errors");
     let mut browser = Browser::open(&format!("http://{}/", server.address), &dir.join("profile"));
+    browser.wait_for("window.gyroState?.ready === true");
     let result = browser.eval(&format!(
         "(async () => {{ {UNTIL}
            await until(() => window.gyroState?.ready);

@@ -54,6 +54,22 @@ impl Browser {
 
     /// The value of `expression` in the page (a promise is awaited), as JSON.
     pub fn eval(&mut self, expression: &str) -> serde_json::Value {
+        self.try_eval(expression).unwrap_or_else(|e| panic!("the page's script failed: {e}"))
+    }
+
+    /// Waits until `condition` is true in the page, the page loaded (120 s at most).
+    pub fn wait_for(&mut self, condition: &str) {
+        for _ in 0..1200 {
+            if self.try_eval(condition) == Ok(serde_json::Value::Bool(true)) {
+                return;
+            }
+            std::thread::sleep(Duration::from_millis(100));
+        }
+        panic!("the page never had {condition}");
+    }
+
+    /// The value of `expression`, or the exception or protocol error it met.
+    pub fn try_eval(&mut self, expression: &str) -> Result<serde_json::Value, String> {
         let id = self.next_id;
         self.next_id += 1;
         let message = serde_json::json!({
@@ -67,11 +83,14 @@ impl Browser {
             if answer["id"] != id {
                 continue;
             }
+            if let Some(e) = answer.get("error") {
+                return Err(e.to_string());
+            }
             let result = &answer["result"];
             if let Some(e) = result.get("exceptionDetails") {
-                panic!("the page's script failed: {e}");
+                return Err(e.to_string());
             }
-            return result["result"]["value"].clone();
+            return Ok(result["result"]["value"].clone());
         }
     }
 }
@@ -80,11 +99,18 @@ impl Browser {
 fn page_socket(port: &str, url: &str) -> String {
     for _ in 0..200 {
         let mut s = TcpStream::connect(format!("127.0.0.1:{port}")).unwrap();
-        write!(s, "GET /json/list HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nConnection: close\r\n\r\n").unwrap();
-        let mut text = String::new();
-        let _ = s.read_to_string(&mut text);
-        let body = text.split_once("\r\n\r\n").map_or("", |(_, b)| b);
-        let list: serde_json::Value = serde_json::from_str(body).unwrap_or_default();
+        write!(s, "GET /json/list HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\n\r\n").unwrap();
+        // The browser keeps the connection open: the body is read to its Content-Length.
+        let head = read_head(&mut s);
+        let length = head
+            .lines()
+            .find_map(|l| {
+                l.to_ascii_lowercase().strip_prefix("content-length:").map(|n| n.trim().parse().unwrap_or(0))
+            })
+            .unwrap_or(0);
+        let mut body = vec![0u8; length];
+        s.read_exact(&mut body).unwrap();
+        let list: serde_json::Value = serde_json::from_slice(&body).unwrap_or_default();
         let found = list.as_array().into_iter().flatten().find(|t| t["type"] == "page" && t["url"] == url);
         if let Some(ws) = found.and_then(|t| t["webSocketDebuggerUrl"].as_str()) {
             return ws
@@ -108,15 +134,20 @@ fn handshake(address: &str, path: &str) -> TcpStream {
          Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n"
     )
     .unwrap();
+    let head = read_head(&mut s);
+    assert!(head.starts_with("HTTP/1.1 101"), "no WebSocket: {head}");
+    s
+}
+
+/// An HTTP answer's head, read byte by byte up to the blank line.
+fn read_head(s: &mut TcpStream) -> String {
     let mut head = Vec::new();
     let mut byte = [0u8];
     while !head.ends_with(b"\r\n\r\n") {
         s.read_exact(&mut byte).unwrap();
         head.push(byte[0]);
     }
-    let head = String::from_utf8_lossy(&head);
-    assert!(head.starts_with("HTTP/1.1 101"), "no WebSocket: {head}");
-    s
+    String::from_utf8_lossy(&head).into_owned()
 }
 
 /// Sends one masked text frame.
