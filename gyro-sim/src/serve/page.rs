@@ -4,9 +4,9 @@
 use crate::scene::Scene;
 
 /// uPlot 1.6.32, `dist/uPlot.iife.min.js` (see `gyro-sim/assets/uplot/README.md`).
-pub(super) const UPLOT_JS: &str = include_str!("../../assets/uplot/uPlot.iife.min.js");
+const UPLOT_JS: &str = include_str!("../../assets/uplot/uPlot.iife.min.js");
 /// uPlot's style sheet, `dist/uPlot.min.css`.
-pub(super) const UPLOT_CSS: &str = include_str!("../../assets/uplot/uPlot.min.css");
+const UPLOT_CSS: &str = include_str!("../../assets/uplot/uPlot.min.css");
 /// The panels: controls, the plot window, the error line.
 const PANELS_HTML: &str = include_str!("panels.html");
 /// The panels' script.
