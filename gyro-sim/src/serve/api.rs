@@ -16,6 +16,8 @@ pub struct App {
     pub registry: Registry,
     /// The page (built once, with the scene's own run).
     pub page: String,
+    /// Runs at once: one per core, the others waiting.
+    pub runs: super::gate::Gate,
 }
 
 /// An answer: status, content type, body and, for a download, its file name.
@@ -82,6 +84,7 @@ pub fn answer(app: &App, method: &str, path: &str, body: &[u8]) -> Reply {
 
 /// The scene run with `values`: the data the page draws, or the run's error (422).
 fn run(app: &App, values: &[(usize, f64)]) -> Reply {
+    let _pass = app.runs.enter();
     match run_data(&app.scene.with_controls(values), &app.registry) {
         Ok(data) => Reply::json(200, &data),
         Err(message) => Reply::error(422, &message),

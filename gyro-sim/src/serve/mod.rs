@@ -4,6 +4,7 @@
 //! its own (a bounded number at once; more get a 503), a panic in one becoming a 500 for it alone.
 
 mod api;
+pub mod gate;
 mod page;
 pub mod request;
 
@@ -19,7 +20,7 @@ use crate::registry::Registry;
 use crate::scene::Scene;
 
 /// Requests answered at once, each on its own thread; more are answered 503 at once.
-const MAX_ACTIVE: usize = 16;
+const MAX_ACTIVE: usize = 64;
 
 /// How often the listener looks for a stop signal.
 const POLL: Duration = Duration::from_millis(200);
@@ -28,7 +29,8 @@ const POLL: Duration = Duration::from_millis(200);
 pub fn app(scene: Scene, registry: Registry) -> Result<App, String> {
     let data = run_data(&scene, &registry).map_err(|e| format!("{}: {e}", scene.path.display()))?;
     let page = page::page(&scene, &data);
-    Ok(App { scene, registry, page })
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    Ok(App { scene, registry, page, runs: gate::Gate::new(cores) })
 }
 
 /// Serves `app` on 127.0.0.1:`port` (0: a free port) until a stop signal; `started` is told the

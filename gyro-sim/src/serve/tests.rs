@@ -73,6 +73,7 @@ fn bad_requests_are_refused_and_failed_runs_explained() {
         scene: Scene::parse("top.toml", &few_steps).unwrap(),
         registry: Registry::builtin(),
         page: String::new(),
+        runs: gate::Gate::new(1),
     };
     let r = answer(&app, "POST", "/api/run", br#"{"values": {"spin": 12}}"#);
     let message = json(&r)["error"].as_str().unwrap().to_string();
