@@ -27,6 +27,7 @@ pub mod resolve;
 pub mod rows;
 pub mod run;
 pub mod scene;
+pub mod serve;
 pub mod solve;
 pub mod specified_table;
 pub mod sweep;

@@ -12,6 +12,10 @@ use toml::Spanned;
 
 use crate::specified_table::Table;
 
+mod controls;
+
+pub use controls::{AxleKey, Control, Target};
+
 /// A scene, validated.
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -50,6 +54,8 @@ pub struct Scene {
     pub integrator: Integrator,
     /// Events to find (`[[events]]`, see [`crate::events`]).
     pub events: Vec<crate::events::EventDecl>,
+    /// Values a user may move (`[[controls]]`, the sliders of `gyro-sim serve`).
+    pub controls: Vec<Control>,
 }
 
 /// A number, with the unit it was given in.
@@ -154,6 +160,7 @@ struct SceneFile {
     axle: Option<Spanned<AxleFile>>,
     view: Option<crate::output::ViewSpec>,
     events: Option<Vec<crate::events::scene::EventFile>>,
+    controls: Option<Vec<controls::ControlFile>>,
 }
 
 #[derive(Deserialize)]
@@ -540,7 +547,7 @@ impl Scene {
             text.err(
                 e.span().unwrap_or(0..0),
                 e.message().to_string(),
-                "keys are title, model, t_final, output_step, outputs, [integrator] (method, rtol, atol, step, accuracy, max_steps), [parameters], [initial], [specified], [axle] (tilt, spin, precession, nutation, quaternion, rates), [view], [[events]] (name, when, preset, direction, action, count, angle, margin, lock), plot_points",
+                "keys are title, model, t_final, output_step, outputs, [integrator] (method, rtol, atol, step, accuracy, max_steps), [parameters], [initial], [specified], [axle] (tilt, spin, precession, nutation, quaternion, rates), [view], [[events]] (name, when, preset, direction, action, count, angle, margin, lock), [[controls]] (name, min, max, step, unit), plot_points",
             )
         })?;
         let model = raw.model.ok_or_else(|| {
@@ -554,7 +561,7 @@ impl Scene {
         let integrator = text.integrator(raw.integrator, t_final, output_step)?;
         let outputs =
             raw.outputs.unwrap_or_default().into_iter().map(|o| (o.get_ref().clone(), o.span())).collect();
-        Ok(Scene {
+        let mut scene = Scene {
             path: PathBuf::from(file),
             source: source.to_string(),
             title: raw.title.unwrap_or_else(|| model.get_ref().clone()),
@@ -576,7 +583,10 @@ impl Scene {
                 source,
                 &|span, message, help| text.err(span, message, help),
             )?,
-        })
+            controls: Vec::new(),
+        };
+        scene.controls = text.controls(raw.controls.unwrap_or_default(), &scene)?;
+        Ok(scene)
     }
 
     /// An error at a span of this scene's text.

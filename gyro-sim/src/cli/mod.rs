@@ -6,6 +6,7 @@
 mod bench;
 mod model_scene;
 mod origins;
+mod serve;
 mod summary;
 mod sweep;
 mod sweep_plot;
@@ -54,6 +55,15 @@ enum Command {
         /// The shards' --out folders.
         #[arg(required = true)]
         shards: Vec<PathBuf>,
+    },
+    /// Serves the scene on 127.0.0.1: its 3-D view, a slider for each of its [[controls]]
+    /// re-running it as moved, and the elevation plot, at the address printed.
+    Serve {
+        /// The scene file (TOML).
+        scene: PathBuf,
+        /// The port (0: any free one).
+        #[arg(long, default_value_t = 8427)]
+        port: u16,
     },
     /// Draws a column of DIR/sweep.csv (e.g. max_q2_deg) over one or two varied values:
     /// writes DIR/METRIC.png (or --out), failed members as crosses.
@@ -182,6 +192,7 @@ pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCod
             };
             sweep::sweep_command(&args, &registry)
         }
+        Command::Serve { scene, port } => serve::serve_command(&scene, port, registry),
         Command::SweepMerge { out, shards } => sweep::merge_command(&out, &shards),
         Command::SweepPlot { dir, metric, over, out } => {
             let args =

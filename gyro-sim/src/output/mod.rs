@@ -16,6 +16,7 @@ pub use plot::{
 pub(crate) use set::unique_temporary;
 pub use set::{PARTIAL_CSV, SET_FILES};
 pub use streamed::StreamedSet;
+pub(crate) use view::{page_html, script_json, view_data};
 pub use view::{write_view, ArrowView, BodyView, Orientation, Shape, TraceView, ViewError, ViewSpec};
 pub use write::{column_name, display_table, write, write_set, WriteError, Written};
 

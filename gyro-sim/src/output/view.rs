@@ -20,7 +20,8 @@ use crate::trajectory::Trajectory;
 
 /// three.js 0.170.0, `build/three.module.min.js` (see `gyro-sim/assets/three/README.md`).
 const THREE_JS: &str = include_str!("../../assets/three/three.module.min.js");
-/// The page with `{{TITLE}}`, `{{THREE}}`, `{{DATA}}` and `{{SCRIPT}}` to fill.
+/// The page with `{{TITLE}}`, `{{THREE}}`, `{{DATA}}`, `{{SCRIPT}}` and `{{EXTRA}}` (more panels
+/// and scripts, `gyro-sim serve`'s; empty in a run's view) to fill.
 const PAGE_HTML: &str = include_str!("view/page.html");
 /// The page's script.
 const PAGE_JS: &str = include_str!("view/page.js");
@@ -38,21 +39,41 @@ pub fn write_view(trajectory: &Trajectory, view: &ViewSpec, path: &Path) -> Resu
 
 /// The page's text.
 fn view_html(trajectory: &Trajectory, view: &ViewSpec) -> Result<String, ViewError> {
-    let data = view_data(trajectory, view)?;
-    // Inside a script element only `</script` (and `<!--`) could end or confuse it; in JSON a
-    // `<` can only stand in a string, where `\u003c` means the same.
-    let data = data.to_string().replace('<', "\\u003c");
-    let title = escape_html(&trajectory.title);
-    Ok(fill(PAGE_HTML, &[("TITLE", &title), ("THREE", THREE_JS), ("DATA", &data), ("SCRIPT", PAGE_JS)]))
+    let data = view_data(trajectory, view, &[])?;
+    Ok(page_html(&trajectory.title, &data, ""))
 }
 
-/// `{"title", "fov", "t": [..], "columns": {name: [..]}, "view": ViewSpec}`, each column once.
-fn view_data(trajectory: &Trajectory, view: &ViewSpec) -> Result<serde_json::Value, ViewError> {
+/// The view page for `data` (from [`view_data`]) with `extra` HTML (more panels and scripts)
+/// at the end of its body.
+pub(crate) fn page_html(title: &str, data: &serde_json::Value, extra: &str) -> String {
+    let title = escape_html(title);
+    let data = script_json(data);
+    fill(
+        PAGE_HTML,
+        &[("TITLE", &title), ("THREE", THREE_JS), ("DATA", &data), ("SCRIPT", PAGE_JS), ("EXTRA", extra)],
+    )
+}
+
+/// JSON text safe inside a script element.
+pub(crate) fn script_json(value: &serde_json::Value) -> String {
+    // Inside a script element only `</script` (and `<!--`) could end or confuse it; in JSON a
+    // `<` can only stand in a string, where `\u003c` means the same.
+    value.to_string().replace('<', "\\u003c")
+}
+
+/// `{"title", "fov", "t": [..], "columns": {name: [..]}, "view": ViewSpec}`, each column once:
+/// those the view reads, then those of `extra` the trajectory has.
+pub(crate) fn view_data(
+    trajectory: &Trajectory,
+    view: &ViewSpec,
+    extra: &[String],
+) -> Result<serde_json::Value, ViewError> {
     view.check()?;
     if trajectory.rows.is_empty() {
         return Err(ViewError::Empty);
     }
     let mut columns: BTreeMap<&str, Vec<f64>> = BTreeMap::new();
+    let column = |index: usize| trajectory.rows.iter().map(|r| r[index + 1]).collect::<Vec<f64>>();
     for (user, name) in view.columns() {
         if columns.contains_key(name) {
             continue;
@@ -61,7 +82,12 @@ fn view_data(trajectory: &Trajectory, view: &ViewSpec) -> Result<serde_json::Val
             let known: Vec<&str> = trajectory.columns.iter().map(|c| c.name.as_str()).collect();
             return Err(ViewError::MissingColumn { user, column: name.to_string(), known: known.join(", ") });
         };
-        columns.insert(name, trajectory.rows.iter().map(|r| r[index + 1]).collect());
+        columns.insert(name, column(index));
+    }
+    for name in extra {
+        if let Some(index) = trajectory.columns.iter().position(|c| &c.name == name) {
+            columns.entry(name).or_insert_with(|| column(index));
+        }
     }
     let t: Vec<f64> = trajectory.rows.iter().map(|r| r[0]).collect();
     Ok(

@@ -1,9 +1,10 @@
 // The view page's script: in come three.js (inline, as text) and the run (inline JSON: t, the
-// columns the view reads, the view itself); out comes the scene, played in time.
+// columns the view reads, the view itself); out comes the scene, played in time. Once drawn,
+// `window.gyroView` lets other scripts on the page load another run of the same view.
 // Space axes N1, N2, N3 are three's x, y, z turned so that the view's `up` axis is z (a
 // cyclic permutation: the data are read through SPACE).
 
-const data = JSON.parse(document.getElementById('view-data').textContent);
+let data = JSON.parse(document.getElementById('view-data').textContent);
 const params = readParams();
 const FOV = numbers('fov', 1)?.[0] ?? data.fov; // vertical field of view, degrees
 const DEFAULT_AZIMUTH = 40; // degrees from N1 toward N2
@@ -431,11 +432,46 @@ function main() {
   requestAnimationFrame(tick);
 }
 
+/** Draws another run of the same view (new `t` and columns), keeping the time and the camera. */
+function load(next) {
+  data = next;
+  for (const line of traces) {
+    scene.remove(line);
+    line.geometry.dispose();
+  }
+  traces = addTraces(scene);
+  slider.min = String(data.t[0]);
+  slider.max = String(data.t[data.t.length - 1]);
+  state.t = Math.min(Math.max(state.t, data.t[0]), data.t[data.t.length - 1]);
+  update();
+}
+
+/** What other scripts may use: load a run, read values, the time and the arrows shown. */
+function expose() {
+  window.gyroView = {
+    load,
+    data: () => data,
+    valueAt: (name, t) => valueAt(name, rowAt(t)),
+    time: () => state.t,
+    seek(t) {
+      state.t = t;
+      update();
+    },
+    pause() {
+      state.playing = false;
+      update();
+    },
+    arrowsShown: () => Object.fromEntries(arrows.map((a) => [a.spec.label, a.helper.visible])),
+  };
+  dispatchEvent(new Event('gyroviewready'));
+}
+
 let THREE;
 try {
   const source = document.getElementById('three-js').textContent;
   THREE = await import(URL.createObjectURL(new Blob([source], { type: 'text/javascript' })));
   main();
+  expose();
 } catch (e) {
   const box = document.getElementById('error');
   box.textContent = 'The view could not start: ' + e;

@@ -65,6 +65,26 @@ fn sha256_matches_known_digests() {
     assert_eq!(sha256_hex(long), "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
 }
 
+/// The sha256s in `gyro-sim/assets/uplot/README.md`: the script and the style sheet.
+const UPLOT_SHA256: [&str; 2] = [
+    "19c8d4c6ad88929a79f4ae49d6f7161566dfd0ba3d15cc495e974f787eb78f1f",
+    "df630c6a8d6f8eeaff264b50f73ce5b114f646ffd9a0bb74f049b0a00135fa04",
+];
+
+#[test]
+fn vendored_uplot_is_the_pinned_file() {
+    let files = [
+        include_str!("../../../assets/uplot/uPlot.iife.min.js"),
+        include_str!("../../../assets/uplot/uPlot.min.css"),
+    ];
+    let readme = include_str!("../../../assets/uplot/README.md");
+    for (file, hash) in files.iter().zip(UPLOT_SHA256) {
+        assert_eq!(sha256_hex(file.as_bytes()), hash, "a vendored uPlot file was changed");
+        assert!(readme.contains(hash), "README names the pinned file");
+    }
+    assert!(files[0].starts_with("/*! https://github.com/leeoniya/uPlot (v1.6.32) */"));
+}
+
 #[test]
 fn vendored_three_is_the_pinned_file() {
     assert_eq!(sha256_hex(THREE_JS.as_bytes()), THREE_SHA256, "three.module.min.js was changed");
@@ -162,7 +182,7 @@ fn a_view_reads_from_toml_with_defaults() {
 
 #[test]
 fn data_hold_t_and_only_the_columns_read() {
-    let data = view_data(&trajectory(), &view()).unwrap();
+    let data = view_data(&trajectory(), &view(), &[]).unwrap();
     assert_eq!(data["t"], serde_json::json!([0.0, 0.5, 1.0]));
     let columns = data["columns"].as_object().unwrap();
     let mut names: Vec<&str> = columns.keys().map(|k| k.as_str()).collect();
@@ -176,7 +196,7 @@ fn data_hold_t_and_only_the_columns_read() {
 fn a_missing_column_is_named_with_the_known_ones() {
     let mut v = view();
     v.arrows[0].columns[1] = "H_N2".to_string();
-    let e = view_data(&trajectory(), &v).unwrap_err();
+    let e = view_data(&trajectory(), &v, &[]).unwrap_err();
     let text = e.to_string();
     assert!(text.contains("arrow L") && text.contains("`H_N2`"), "{text}");
     assert!(text.contains("Q_E0, Q_E1, Q_E2, Q_E3, L_N1, L_N2, L_N3, KE"), "{text}");
@@ -204,7 +224,7 @@ fn bad_colours_sizes_and_bodies_are_refused() {
     assert!(v.check().unwrap_err().to_string().contains("it has: rotor"));
     let mut t = trajectory();
     t.rows.clear();
-    assert_eq!(view_data(&t, &view()).unwrap_err(), ViewError::Empty);
+    assert_eq!(view_data(&t, &view(), &[]).unwrap_err(), ViewError::Empty);
 }
 
 #[test]

@@ -1,0 +1,163 @@
+// gyro-sim serve's panels: in come the scene's controls (inline JSON) and the view page's
+// `window.gyroView`; out go sliders and number boxes whose changes re-run the scene on the
+// server (POST /api/run, the latest change only while one is running), the run redrawn, the
+// elevation plot (uPlot), a save button (POST /api/scene) and errors shown as the server gives
+// them. `window.gyroState` exposes the values, the run drawn and the latency of each redraw.
+
+const serve = JSON.parse(document.getElementById('serve-data').textContent);
+const errorLine = document.getElementById('serve-error');
+const statusLine = document.getElementById('serve-status');
+const values = Object.fromEntries(serve.controls.map((c) => [c.name, c.value]));
+const inputs = {};
+let plot = null;
+let running = false;
+let queued = null; // the change waiting for the run in progress: { values, since }
+
+window.gyroState = {
+  values,
+  redraws: 0,
+  latencies: [],
+  error: '',
+  data: () => window.gyroView?.data(),
+  valueAt: (name, t) => window.gyroView?.valueAt(name, t),
+  set: (name, value) => change(name, value),
+};
+
+/** The degrees of an angle column (model radians), other columns as they are. */
+function shown(name, v, units) {
+  const u = (units[name] ?? '').toUpperCase();
+  return u === 'DEG' || u === 'RAD' ? (v * 180) / Math.PI : v;
+}
+
+/** The plot's series: t, then each plotted column (angles in degrees). */
+function plotData(data) {
+  return [data.t, ...data.plot.map((n) => data.columns[n].map((v) => shown(n, v, data.units)))];
+}
+
+/** Draws the second window for `data`, building it the first time. */
+function drawPlot(data) {
+  if (plot) {
+    plot.setData(plotData(data));
+    return;
+  }
+  const colours = ['#1f77b4', '#d62728', '#2ca02c'];
+  const series = data.plot.map((n, i) => {
+    const u = (data.units[n] ?? '').toUpperCase();
+    return { label: u === 'DEG' || u === 'RAD' ? n + ' (deg)' : n, stroke: colours[i % 3], width: 1.5 };
+  });
+  const opts = {
+    width: 420,
+    height: 220,
+    scales: { x: { time: false } },
+    axes: [{ label: 't (s)' }, {}],
+    series: [{ label: 't' }, ...series],
+  };
+  plot = new uPlot(opts, plotData(data), document.getElementById('plot-area'));
+}
+
+/** A slider, a number box and the unit for one control. */
+function addControl(c) {
+  const row = document.createElement('div');
+  row.className = 'control';
+  const name = document.createElement('label');
+  name.textContent = c.name;
+  const slider = document.createElement('input');
+  Object.assign(slider, { type: 'range', min: c.min, max: c.max, step: c.step, value: c.value });
+  slider.id = 'control-' + c.name;
+  const box = document.createElement('input');
+  Object.assign(box, { type: 'number', min: c.min, max: c.max, step: c.step, value: c.value });
+  const unit = document.createElement('span');
+  unit.className = 'unit';
+  unit.textContent = c.unit ?? '';
+  slider.addEventListener('input', () => change(c.name, Number(slider.value)));
+  box.addEventListener('change', () => change(c.name, box.value === '' ? NaN : Number(box.value)));
+  row.append(name, slider, box, unit);
+  document.getElementById('serve-controls').append(row);
+  inputs[c.name] = { slider, box };
+}
+
+/** A control moved: show it, and run with it (after the run in progress, if any). */
+function change(name, value) {
+  values[name] = value;
+  const input = inputs[name];
+  if (input) {
+    if (Number.isFinite(value)) input.slider.value = String(value);
+    input.box.value = Number.isFinite(value) ? String(value) : '';
+  }
+  queued = { values: { ...values }, since: performance.now() };
+  if (!running) runQueued();
+  return new Promise((resolve) => waiters.push(resolve));
+}
+
+const waiters = []; // resolved when no change is left to run
+
+/** Runs the latest change, then any change made meanwhile. */
+async function runQueued() {
+  running = true;
+  while (queued) {
+    const { values: asked, since } = queued;
+    queued = null;
+    await runOnce(asked, since);
+  }
+  running = false;
+  for (const resolve of waiters.splice(0)) resolve(window.gyroState);
+}
+
+/** One run on the server; its answer drawn, or its error shown. */
+async function runOnce(asked, since) {
+  let answer;
+  try {
+    const response = await fetch('/api/run', { method: 'POST', body: JSON.stringify({ values: finiteOrNull(asked) }) });
+    answer = await response.json();
+    if (!response.ok) throw new Error(answer.error ?? 'the server answered ' + response.status);
+  } catch (e) {
+    showError(String(e.message ?? e));
+    return;
+  }
+  window.gyroView.load(answer);
+  drawPlot(answer);
+  await new Promise((resolve) => requestAnimationFrame(resolve));
+  const ms = performance.now() - since;
+  const state = window.gyroState;
+  state.redraws += 1;
+  state.latencies.push(ms);
+  state.error = '';
+  errorLine.textContent = '';
+  statusLine.textContent = `run ${answer.wall_ms.toFixed(1)} ms, drawn ${ms.toFixed(0)} ms after the change`;
+}
+
+/** The values as JSON can carry them (NaN sent as null, for the server to refuse). */
+function finiteOrNull(asked) {
+  return Object.fromEntries(Object.entries(asked).map(([k, v]) => [k, Number.isFinite(v) ? v : null]));
+}
+
+/** Shows the server's (or the network's) error; the run drawn stays. */
+function showError(message) {
+  window.gyroState.error = message;
+  errorLine.textContent = message;
+}
+
+/** Downloads the scene with the current values. */
+async function save() {
+  try {
+    const response = await fetch('/api/scene', { method: 'POST', body: JSON.stringify({ values: finiteOrNull(values) }) });
+    if (!response.ok) throw new Error((await response.json()).error);
+    const url = URL.createObjectURL(await response.blob());
+    const a = Object.assign(document.createElement('a'), { href: url, download: serve.file });
+    a.click();
+    setTimeout(() => URL.revokeObjectURL(url), 1000);
+  } catch (e) {
+    showError(String(e.message ?? e));
+  }
+}
+
+/** Builds the panels once the view has drawn. */
+function start() {
+  serve.controls.forEach(addControl);
+  document.getElementById('save').addEventListener('click', save);
+  drawPlot(window.gyroView.data());
+  window.gyroState.ready = true;
+}
+
+if (window.gyroView) start();
+else addEventListener('gyroviewready', start, { once: true });

@@ -1,0 +1,92 @@
+//! `gyro-sim serve` over HTTP: in come Trial 3's scene and requests sent as a client would (good,
+//! bad and malformed); out go checks that a run with a value is the trajectory `gyro-sim run`
+//! writes for the scene saved with that value, and that bad requests get a 4xx and leave the
+//! server answering.
+
+mod serve_support;
+
+use serve_support::*;
+
+#[test]
+fn a_run_with_a_value_is_what_gyro_sim_run_gives() {
+    let server = serve(&scene_path("paper/trial3.toml"));
+    let values = r#"{"values": {"U3": 150, "Y": -5.5}}"#;
+    let (status, data) = post_json(&server.address, "/api/run", values);
+    assert_eq!(status, 200, "{data}");
+    assert_eq!(data["values"], serde_json::json!({ "U3": 150.0, "Y": -5.5, "Z": 10.0 }));
+    assert_eq!(data["plot"], serde_json::json!(["Q1", "Q2", "Q3"]));
+    let (header, rows) = run_saved(&server.address, values, &folder("trial3"));
+    let t: Vec<f64> = data["t"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap()).collect();
+    assert_eq!(t.len(), rows.len());
+    for (a, b) in t.iter().zip(&rows) {
+        assert!((a - b[0]).abs() <= 1e-12 * a.abs().max(1.0), "t {a} against {}", b[0]);
+    }
+    for (name, column) in [("Q1", "q1_deg"), ("Q2", "q2_deg"), ("Q3", "q3_deg")] {
+        let served = data["columns"][name].as_array().unwrap();
+        let written = csv_column(&header, &rows, column);
+        for (k, (s, w)) in served.iter().zip(&written).enumerate() {
+            let s = s.as_f64().unwrap().to_degrees();
+            assert!(
+                (s - w).abs() <= 1e-9 * w.abs().max(1.0),
+                "{name} row {k}: served {s} deg, run wrote {w}"
+            );
+        }
+    }
+    let (_, default) = post_json(&server.address, "/api/run", r#"{"values": {}}"#);
+    assert_ne!(default["columns"]["Q2"], data["columns"]["Q2"], "the values change the motion");
+}
+
+#[test]
+fn bad_requests_get_a_4xx_and_the_server_goes_on() {
+    let server = serve(&scene_path("paper/trial3.toml"));
+    let a = server.address.as_str();
+    let error = |body: &str| {
+        let (status, json) = post_json(a, "/api/run", body);
+        (status, json["error"].as_str().unwrap_or("").to_string())
+    };
+    assert_eq!(
+        error(r#"{"values": {"U3": 500}}"#),
+        (400, "U3 = 500 is outside its range, 0 to 200 rad/s".into())
+    );
+    assert_eq!(
+        error(r#"{"values": {"U3": "NaN"}}"#),
+        (400, "U3 must be a finite number, not \"NaN\"".into())
+    );
+    assert_eq!(
+        error(r#"{"values": {"M": 1}}"#),
+        (400, "`M` is not a control of this scene (its controls: U3, Y, Z)".into())
+    );
+    let (status, message) = error(r#"{"values": {"U3": NaN}}"#);
+    assert!(status == 400 && message.starts_with("the request is not JSON"), "{status} {message}");
+    let (status, message) = error(&format!("{{\"values\": {{\"U3\": 1{}}}}}", " ".repeat(100_000)));
+    assert_eq!((status, message.as_str()), (413, "the request body is over 65536 bytes"));
+    for path in ["/../../etc/passwd", "/%2e%2e/Cargo.toml", "/api/../Cargo.toml", "/favicon.ico"] {
+        assert_eq!(request(a, "GET", path, b"").0, 404, "{path}");
+    }
+    assert_eq!(request(a, "GET", "/api/run", b"").0, 405);
+    // Garbage on a socket, and a client that sends a head and goes away, do not stop the server.
+    let _ = std::net::TcpStream::connect(a)
+        .and_then(|mut s| std::io::Write::write_all(&mut s, b"\x00\xff garbage\r\n\r\n"));
+    let _ = std::net::TcpStream::connect(a).and_then(|mut s| {
+        std::io::Write::write_all(&mut s, b"POST /api/run HTTP/1.1\r\nContent-Length: 1000\r\n\r\n{\"va")
+    });
+    // 50 clients at once, each moving a slider twice: every request answered 200 (runs wait
+    // their turn, one per core).
+    let clients: Vec<_> = (0..50)
+        .map(|k| {
+            let a = a.to_string();
+            std::thread::spawn(move || {
+                (0..2)
+                    .map(|i| {
+                        post_json(&a, "/api/run", &format!("{{\"values\": {{\"Z\": {}}}}}", (k + i) % 20)).0
+                    })
+                    .collect::<Vec<_>>()
+            })
+        })
+        .collect();
+    for c in clients {
+        assert_eq!(c.join().unwrap(), [200, 200]);
+    }
+    let (status, page) = request(a, "GET", "/", b"");
+    assert!(status == 200 && String::from_utf8_lossy(&page).contains("gyroState"));
+}
