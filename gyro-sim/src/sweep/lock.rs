@@ -41,23 +41,6 @@ impl FolderLock {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_second_lock_on_a_folder_is_refused_until_the_first_is_dropped() {
-        let dir = std::env::temp_dir().join(format!("lock-test-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let first = FolderLock::take(&dir).unwrap();
-        let e = FolderLock::take(&dir).unwrap_err();
-        assert!(e.contains(&format!("another sweep is running in {}", dir.display())), "{e}");
-        drop(first);
-        FolderLock::take(&dir).unwrap();
-        std::fs::remove_dir_all(&dir).unwrap();
-    }
-}
-
 /// Removes from `dir` the temporaries (`.partial-{pid}-{random}-NAME`) of the files `names`.
 pub(crate) fn remove_temporaries(dir: &Path, names: &[&str]) -> Result<(), String> {
     let entries = match std::fs::read_dir(dir) {
@@ -76,4 +59,21 @@ pub(crate) fn remove_temporaries(dir: &Path, names: &[&str]) -> Result<(), Strin
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_second_lock_on_a_folder_is_refused_until_the_first_is_dropped() {
+        let dir = std::env::temp_dir().join(format!("lock-test-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let first = FolderLock::take(&dir).unwrap();
+        let e = FolderLock::take(&dir).unwrap_err();
+        assert!(e.contains(&format!("another sweep is running in {}", dir.display())), "{e}");
+        drop(first);
+        FolderLock::take(&dir).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 }
