@@ -13,7 +13,7 @@ pub use plot::{
     write_elevation, write_plot, write_sweep_metric, write_trace, write_work_precision, MemberPoint,
     MetricAxes,
 };
-pub(crate) use set::unique_temporary;
+pub(crate) use set::{is_temporary_of, unique_temporary};
 pub use set::{PARTIAL_CSV, SET_FILES};
 pub use streamed::StreamedSet;
 pub(crate) use view::{page_html, script_json, view_data};

@@ -76,6 +76,11 @@ pub(crate) fn unique_temporary(name: &str) -> String {
     format!(".partial-{}-{:016x}-{name}", std::process::id(), random())
 }
 
+/// Whether `file_name` is a temporary [`unique_temporary`] made for `name`.
+pub(crate) fn is_temporary_of(file_name: &str, name: &str) -> bool {
+    file_name.starts_with(".partial-") && file_name.ends_with(&format!("-{name}"))
+}
+
 /// `path: what failed`.
 fn fail(path: &Path, e: std::io::Error) -> String {
     format!("{}: {e}", path.display())

@@ -52,8 +52,7 @@ pub(crate) fn remove_temporaries(dir: &Path, names: &[&str]) -> Result<(), Strin
         let entry = entry.map_err(|e| format!("{}: {e}", dir.display()))?;
         let name = entry.file_name();
         let name = name.to_string_lossy();
-        let of_one = names.iter().any(|n| name.ends_with(&format!("-{n}")));
-        if name.starts_with(".partial-") && of_one {
+        if names.iter().any(|n| crate::output::is_temporary_of(&name, n)) {
             let path = entry.path();
             std::fs::remove_file(&path).map_err(|e| format!("{}: {e}", path.display()))?;
         }
