@@ -1,7 +1,7 @@
 //! The 3-D view in a real browser: in comes a synthetic run (a ball on an arm turning about z at
 //! half a turn per second, its quaternion as columns, a constant arrow); out go screenshots by
 //! headless Chromium, checked pixel by pixel against where the run puts the ball and whether
-//! the arrow is shown. Needs `chromium` (Debian: `apt-get install chromium`; `.ci/run` installs
+//! the arrow is shown. Needs `chromium` (Debian: `apt-get install chromium`; `tests/run` installs
 //! it); without it these tests fail.
 
 use std::f64::consts::PI;
@@ -116,7 +116,7 @@ fn chromium() -> &'static str {
         Command::new("chromium").arg("--version").stdout(Stdio::null()).stderr(Stdio::null()).status();
     assert!(
         found.is_ok_and(|s| s.success()),
-        "the view's browser tests need Chromium: apt-get install chromium (.ci/run installs it)"
+        "the view's browser tests need Chromium: apt-get install chromium (tests/run installs it)"
     );
     "chromium"
 }

@@ -34,7 +34,7 @@ impl Browser {
             .stdout(Stdio::null())
             .stderr(Stdio::piped())
             .spawn()
-            .expect("chromium starts (apt-get install chromium; .ci/run installs it)");
+            .expect("chromium starts (apt-get install chromium; tests/run installs it)");
         // Its DevTools port, from its error output (read to the end, so that it never blocks).
         let stderr = BufReader::new(child.stderr.take().unwrap());
         let (tx, rx) = std::sync::mpsc::channel();
