@@ -131,3 +131,29 @@ fn trial_three_redraws_the_run_for_its_rotor_speed() {
     let run = csv_column(&header, &rows, "q2_deg")[row];
     assert!((q2.to_degrees() - run).abs() < 1e-7, "Q2 at t = 2.5: page {} deg, run {run}", q2.to_degrees());
 }
+
+/// Every EJS preset of the heavy top is served with its controls: the spin slider moved 10 times
+/// redraws each time with no error shown, and the latency is printed for BENCHMARKS.md.
+#[test]
+fn every_top_preset_redraws_as_its_spin_slider_moves() {
+    for preset in ["cusp", "loops", "waves", "steady", "nospin", "sleeping", "slow", "fast"] {
+        let server = serve(&scene_path(&format!("ejs/{preset}.toml")));
+        let dir = folder(&format!("browser_preset_{preset}"));
+        let mut browser = Browser::open(&format!("http://{}/", server.address), &dir.join("profile"));
+        browser.wait_for("window.gyroState?.ready === true");
+        browser.eval("gyroView.pause()");
+        let names =
+            browser.eval("[...document.querySelectorAll('#serve input[type=range]')].map((s) => s.id)");
+        let expected = ["spin", "tilt", "precession", "nutation", "D", "RR"].map(|n| format!("control-{n}"));
+        assert_eq!(names, serde_json::json!(expected), "{preset}'s sliders");
+        let (spin, step) = {
+            let s = browser.eval("(() => { const s = document.getElementById('control-spin'); return [Number(s.value), Number(s.step)]; })()");
+            (s[0].as_f64().unwrap(), s[1].as_f64().unwrap())
+        };
+        let spins: Vec<f64> = (1..=10).map(|k| spin + step * k as f64).collect();
+        report(preset, "spin", move_slider(&mut browser, "spin", &spins));
+        let state = browser.eval("({ spin: gyroState.values.spin, error: gyroState.error })");
+        assert_eq!(state["spin"], spins[9], "{preset}");
+        assert_eq!(state["error"], "", "{preset}");
+    }
+}
