@@ -4,7 +4,7 @@
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::drawable::{clip, clipped, padded_range, DRAWABLE};
+use super::drawable::{clip, clipped, line_width, padded_range, tick_labels, DRAWABLE};
 use super::COLORS;
 
 /// What one panel shows.
@@ -47,15 +47,18 @@ pub(super) fn draw(area: &DrawingArea<BitMapBackend<'_>, Shift>, panel: &Panel<'
         .configure_mesh()
         .x_desc(panel.x_title.as_str())
         .y_desc(y_title.as_str())
+        .x_label_formatter(&tick_labels(x0, x1))
+        .y_label_formatter(&tick_labels(lo, hi))
         .axis_desc_style(("sans-serif", 16))
         .draw()
         .map_err(|e| e.to_string())?;
+    let width = line_width(panel.rows.len(), w);
     for (k, (_, c)) in panel.series.iter().enumerate() {
         let color = COLORS[k % COLORS.len()];
         chart
             .draw_series(LineSeries::new(
                 panel.rows.iter().map(|r| (r[0], clip(r[*c]))),
-                color.stroke_width(2),
+                color.stroke_width(width),
             ))
             .map_err(|e| e.to_string())?;
     }

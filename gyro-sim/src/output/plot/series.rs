@@ -9,7 +9,7 @@ use plotters::prelude::*;
 
 use super::super::{write_atomically, Table};
 use super::panel::{self, Panel};
-use super::{pretty_unit, register_font};
+use super::{pretty_unit, register_font, COLORS};
 
 /// An angle whose range exceeds this many degrees gets a panel of its own.
 const SPIN_RANGE_DEG: f64 = 1800.0;
@@ -68,7 +68,10 @@ fn panels(table: &Table) -> Vec<Panel<'_>> {
         let same: Vec<usize> = rest.iter().copied().filter(|c| cols[*c].unit == unit).collect();
         groups.extend(by_vector(table, same));
     }
-    groups.into_iter().map(|g| panel_of(table, g)).collect()
+    // More series than colours would repeat colours on one panel: split into readable panels.
+    let readable =
+        groups.into_iter().flat_map(|g| g.chunks(COLORS.len()).map(<[usize]>::to_vec).collect::<Vec<_>>());
+    readable.map(|g| panel_of(table, g)).collect()
 }
 
 /// Columns of one unit split into a group per vector (`L_N1`, `L_N2`, `L_N3`) and one for the
@@ -120,7 +123,28 @@ fn panel_of(table: &Table, g: Vec<usize>) -> Panel<'_> {
 
 #[cfg(test)]
 mod tests {
-    use super::vector_component;
+    use super::super::super::{Column, Table};
+    use super::{panels, vector_component};
+
+    #[test]
+    fn eighteen_rates_are_split_over_panels_of_at_most_six() {
+        let column = |k: usize| Column {
+            name: format!("u{k}_rad_per_s"),
+            label: format!("U{k}"),
+            unit: "RAD/S".into(),
+            degrees: false,
+            angle: false,
+            output: false,
+        };
+        let table = Table {
+            title: "chain".into(),
+            columns: (1..=18).map(column).collect(),
+            rows: vec![vec![0.0; 19], vec![1.0; 19]],
+            plot_rows: Vec::new(),
+        };
+        let sizes: Vec<usize> = panels(&table).iter().map(|p| p.series.len()).collect();
+        assert_eq!(sizes, [6, 6, 6]);
+    }
 
     #[test]
     fn vector_components_are_recognised_by_name() {

@@ -10,7 +10,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::super::write_atomically;
-use super::drawable::padded_range;
+use super::drawable::{padded_range, tick_labels};
 use super::register_font;
 
 /// One member: its varied values on the axes (`y` unused with one axis) and the metric (None
@@ -71,6 +71,8 @@ fn framed<'a, 'b>(
         .configure_mesh()
         .x_desc(titles.0)
         .y_desc(titles.1)
+        .x_label_formatter(&tick_labels(x.0, x.1))
+        .y_label_formatter(&tick_labels(y.0, y.1))
         .axis_desc_style(("sans-serif", 16))
         .draw()
         .map_err(|e| e.to_string())?;

@@ -7,6 +7,7 @@ use std::path::Path;
 use plotters::prelude::*;
 
 use super::super::{write_atomically, Table};
+use super::drawable::tick_labels;
 use super::{register_font, COLORS};
 
 /// Writes the tip trace when the table has the axle's direction; returns whether it did.
@@ -30,6 +31,8 @@ pub fn write_trace(table: &Table, path: &Path) -> Result<bool, String> {
             .configure_mesh()
             .x_desc("axle tip x (unit sphere, seen from above)")
             .y_desc("axle tip y")
+            .x_label_formatter(&tick_labels(-1.05, 1.05))
+            .y_label_formatter(&tick_labels(-1.05, 1.05))
             .axis_desc_style(("sans-serif", 15))
             .draw()
             .map_err(|e| e.to_string())?;
