@@ -11,8 +11,8 @@
 
 use std::path::Path;
 
-use gyro_sim::run::run;
-use gyro_sim::scene::Scene;
+use gyro_sim::run;
+use gyro_sim::Scene;
 
 const I1: f64 = 151.0 / 125.0;
 const I3: f64 = 0.4;

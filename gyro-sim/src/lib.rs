@@ -1,36 +1,30 @@
 //! gyro-sim: integrate models derived with kane-model, from scene files to CSV and plots.
-//!
-//! The stages, each a module with a narrow interface:
-//! [`scene`] (TOML text -> [`scene::Scene`]) -> [`resolve`] (scene + [`registry`] ->
-//! [`problem::Problem`] in model units) -> [`solve`] (problem -> [`trajectory::Trajectory`],
-//! stepping with [`ode`]) -> [`output`] (trajectory -> CSV and PNG in display units).
-//! [`run`] chains them; [`models`] holds the models compiled into the simulator.
 #![warn(missing_docs)]
 
-pub mod batch;
-pub mod cli;
-pub mod compiled;
-mod diagnose;
-pub mod events;
-pub mod initial;
-pub mod instant;
-pub mod interrupt;
-pub mod model_file;
-pub mod models;
-pub mod ode;
-pub mod output;
-mod plausible;
-pub mod problem;
-mod refine;
-pub mod registry;
-pub mod resolve;
-pub mod rows;
-pub mod run;
-pub mod scene;
-pub mod serve;
-pub mod solve;
-pub mod specified_table;
-pub mod sweep;
-pub mod trajectory;
-pub mod unit_norm;
-pub mod work_precision;
+mod cli;
+mod models;
+mod ode;
+mod output;
+mod problem;
+mod resolve;
+mod run;
+mod scene;
+mod serve;
+mod solve;
+mod study;
+
+pub use cli::{main_with, CompiledModel};
+pub use models::{
+    content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, ModelEntry, ModelFile, Registry,
+};
+pub use ode::{
+    by_name, integrate, integrate_limited, tableau, DenseOutput, ErkStepper, Method, OdeError, Stats,
+    StopReason, System, Tolerances, METHODS,
+};
+pub use output::{write, write_view};
+pub use problem::{Column, Pick, Problem, Trajectory, MAX_KEPT_ROWS};
+pub use resolve::{resolve, sleeping_threshold, steady_precession};
+pub use run::{run, run_with, RunSummary};
+pub use scene::{ArrowView, BodyView, Orientation, Scene, Shape, TraceView, ViewSpec};
+pub use solve::{solve_bound, BoundModel, ModelSystem, Reduced};
+pub use study::batch::final_states;

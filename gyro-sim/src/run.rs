@@ -5,12 +5,12 @@ use std::path::Path;
 
 use thiserror::Error;
 
+use crate::models::Registry;
 use crate::output::{self, WriteError, Written};
-use crate::registry::Registry;
+use crate::problem::Trajectory;
 use crate::resolve::resolve;
 use crate::scene::{Scene, SceneError};
 use crate::solve::{solve, SolveError};
-use crate::trajectory::Trajectory;
 
 /// Why a run failed.
 #[derive(Debug, Error)]
@@ -30,7 +30,7 @@ pub enum RunError {
         /// The scene file.
         scene: std::path::PathBuf,
         /// What is wrong.
-        error: crate::output::ViewError,
+        error: crate::scene::ViewError,
     },
     /// The integration stopped after some rows were written: they are kept, marked partial.
     #[error("{error}\n  rows computed before it: {rows}, in {} (partial; the folder's earlier results are unchanged)", path.display())]

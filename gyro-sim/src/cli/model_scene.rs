@@ -4,7 +4,7 @@
 
 use kane_model::runtime::ModelInfo;
 
-use crate::model_file::FileRun;
+use crate::models::FileRun;
 
 /// End time when neither the command line nor the file's TFINAL gives one.
 const DEFAULT_T_FINAL: f64 = 10.0;

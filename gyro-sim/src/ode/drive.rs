@@ -74,7 +74,7 @@ pub fn drive<St: Stepping>(
             stepper.set_stop_time(target);
         }
         stepper.step()?;
-        if let Some(by) = crate::interrupt::requested() {
+        if let Some(by) = super::interrupt::requested() {
             return Err(OdeError::Interrupted { time: stepper.t(), by });
         }
         if let Some(t_stop) = watch(stepper) {

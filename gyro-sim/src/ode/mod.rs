@@ -7,33 +7,33 @@
 //! one step's stages and error estimate (`stages/unrolled` the compile-time-unrolled steps);
 //! `control` step sizes; `dense` the continuous extensions' one evaluation routine; `stepper`
 //! the stepper; `drive` the one loop from a stepper to output times; `integrate` output times
-//! on top of it; `events` the same with a watcher of
-//! each step (events); `taylor` the Taylor method on a system's own Taylor coefficients
-//! ([`System::taylor`]).
+//! on top of it; `watched` the same with a watcher of each step (events); `taylor` the Taylor
+//! method on a system's own Taylor coefficients ([`System::taylor`]); `unit_norm` a system held
+//! on unit-norm groups (Euler parameters); `interrupt` the stop signals long loops read.
 
 mod control;
 mod dense;
 mod drive;
-mod events;
 mod integrate;
+pub(crate) mod interrupt;
 mod methods;
 mod stages;
 mod stepper;
 pub mod tableau;
 mod taylor;
+mod unit_norm;
+mod watched;
 
 pub(crate) use control::PiControl;
-pub use dense::{DenseOutput, DenseRounding};
-pub use drive::{Stepping, Watched};
-pub use events::integrate_watched;
+pub use dense::DenseOutput;
+pub use drive::Stepping;
 pub use integrate::{integrate, integrate_limited};
-pub use methods::{
-    by_name, for_tolerances, methods_help, Method, MethodInfo, Tolerances, AUTO, AUTO_TIGHT, METHODS, TAYLOR,
-};
+pub use methods::{by_name, for_tolerances, methods_help, Method, Tolerances, AUTO, METHODS, TAYLOR};
 pub(crate) use stages::blended_norm;
 pub use stepper::{ErkStepper, Stats, StopReason, DEFAULT_MAX_STEPS};
-pub use taylor::TaylorStepper;
 use thiserror::Error;
+pub use unit_norm::{normalise, NormDrift, UnitNorm};
+pub use watched::integrate_watched;
 
 pub use kane_model::runtime::TaylorWork;
 
@@ -123,13 +123,13 @@ pub enum OdeError {
     /// A Runge-Kutta stepper was given the Taylor method.
     #[error("the taylor method has no Butcher tableau: integrate it with ode::integrate or a TaylorStepper")]
     NotRungeKutta,
-    /// A stop signal arrived (see [`crate::interrupt`]).
+    /// A stop signal arrived (see [`crate::ode::interrupt`]).
     #[error("{by} at t = {time}")]
     Interrupted {
         /// The time reached.
         time: f64,
         /// The signal.
-        by: crate::interrupt::Interrupted,
+        by: crate::ode::interrupt::Interrupted,
     },
     /// A slice's length is not the system's dimension (or the stepper's compile-time one).
     #[error("expected {expected} values, got {found}")]

@@ -239,8 +239,8 @@ pub(crate) fn blended_norm(h: f64, n: usize, sum5: f64, sum3: Option<f64>) -> f6
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ode::dense::{DenseOutput, DenseRounding};
     use crate::ode::tableau::{DOP853, RK4};
-    use crate::ode::{DenseOutput, DenseRounding};
 
     struct Decay;
     impl System for Decay {

@@ -2,22 +2,22 @@
 //! half-written, and put in place as one set (see `set`).
 
 mod csv_file;
+mod events_csv;
 mod plot;
 mod set;
 mod streamed;
 mod view;
 mod write;
 
-pub use csv_file::{write_csv, CsvStream};
+pub use csv_file::write_csv;
 pub use plot::{
     write_elevation, write_plot, write_sweep_metric, write_trace, write_work_precision, MemberPoint,
     MetricAxes,
 };
 pub(crate) use set::{is_temporary_of, unique_temporary};
-pub use set::{PARTIAL_CSV, SET_FILES};
 pub use streamed::StreamedSet;
+pub use view::write_view;
 pub(crate) use view::{page_html, script_json, view_data};
-pub use view::{write_view, ArrowView, BodyView, Orientation, Shape, TraceView, ViewError, ViewSpec};
 pub use write::{column_name, display_table, write, write_set, WriteError, Written};
 
 /// One column of results.

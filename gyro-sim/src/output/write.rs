@@ -7,8 +7,9 @@ use std::path::{Path, PathBuf};
 use thiserror::Error;
 
 use super::set::Staging;
-use super::{write_csv, write_elevation, write_plot, write_trace, write_view, Column, Table, ViewSpec};
-use crate::trajectory::Trajectory;
+use super::{write_csv, write_elevation, write_plot, write_trace, write_view, Column, Table};
+use crate::problem::Trajectory;
+use crate::scene::ViewSpec;
 
 /// Why results could not be written.
 #[derive(Clone, Debug, PartialEq, Error)]
@@ -71,7 +72,7 @@ pub(crate) fn finish_set(
     rows: usize,
 ) -> Result<Written, WriteError> {
     if !trajectory.events.names.is_empty() {
-        crate::events::csv::write_events_csv(trajectory, &staging.path("events.csv"))
+        super::events_csv::write_events_csv(trajectory, &staging.path("events.csv"))
             .map_err(WriteError::File)?;
     }
     write_plot(table, &staging.path("trajectory.png")).map_err(WriteError::File)?;
@@ -107,7 +108,7 @@ pub(crate) struct DisplayRows {
 
 impl DisplayRows {
     /// The mapping for a run's `columns`, and the written columns.
-    pub(crate) fn new(columns: &[crate::trajectory::Column]) -> (DisplayRows, Vec<Column>) {
+    pub(crate) fn new(columns: &[crate::problem::Column]) -> (DisplayRows, Vec<Column>) {
         let shown: Vec<usize> = (0..columns.len()).filter(|k| !columns[*k].hidden).collect();
         let written: Vec<Column> = shown
             .iter()

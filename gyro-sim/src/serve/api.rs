@@ -2,9 +2,9 @@
 //! a run of the scene with the values asked for (the data the page draws), the scene's text
 //! with those values (to save), or a client error. Nothing but these is served.
 
-use crate::registry::Registry;
+use crate::models::Registry;
+use crate::problem::Trajectory;
 use crate::scene::Scene;
-use crate::trajectory::Trajectory;
 
 use super::request::{self, Refused};
 
