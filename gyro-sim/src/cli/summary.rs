@@ -46,7 +46,7 @@ pub fn print_summary(title: &str, summary: &run::RunSummary) {
 
 /// One line per event declared: how many times it happened and the first times; and the
 /// event that stopped the run.
-fn event_lines(log: &crate::solve::events::EventLog) -> Vec<String> {
+fn event_lines(log: &crate::problem::EventLog) -> Vec<String> {
     const SHOWN: usize = 3;
     let mut lines: Vec<String> = log
         .names
@@ -73,7 +73,7 @@ fn event_lines(log: &crate::solve::events::EventLog) -> Vec<String> {
 
 /// A warning per event whose sign changes outran the steps (crossings may be missing) or the
 /// output rows (crossings the rows cannot show).
-fn event_warnings(log: &crate::solve::events::EventLog) -> Vec<String> {
+fn event_warnings(log: &crate::problem::EventLog) -> Vec<String> {
     let name = |i: usize| log.names.get(i).map_or("?", String::as_str);
     let mut lines: Vec<String> = log
         .unsettled

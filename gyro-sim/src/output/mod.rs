@@ -12,7 +12,7 @@ mod write;
 pub use csv_file::write_csv;
 pub use plot::{
     write_elevation, write_plot, write_sweep_metric, write_trace, write_work_precision, MemberPoint,
-    MetricAxes,
+    MetricAxes, WorkPrecisionPoint,
 };
 pub(crate) use set::{is_temporary_of, unique_temporary};
 pub use streamed::StreamedSet;

@@ -67,7 +67,7 @@ pub struct Trajectory {
     /// How far the unit-norm states (Euler parameters) drifted, when the problem has any.
     pub norm_drift: Option<NormDrift>,
     /// The events declared and those that happened.
-    pub events: crate::solve::events::EventLog,
+    pub events: super::EventLog,
     /// How the start was assembled onto the configuration constraints and how well the run
     /// kept its constraints, when the model has any.
     pub constraints: Option<Constraints>,

@@ -7,9 +7,8 @@ use kane_model::codegen::event::{lower_event, EventName, EventSlot};
 use kane_model::runtime::ModelInfo;
 
 use super::presets;
-use crate::scene::{Scene, SceneError};
-use crate::solve::events::detect::Rule;
-use crate::solve::events::{EventDecl, EventSource, EventSpec, Source};
+use crate::problem::{EventSpec, Rule, Source};
+use crate::scene::{EventDecl, EventSource, Scene, SceneError};
 
 /// What a name of an event expression is.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -15,8 +15,8 @@ use kane_model::runtime::ModelInfo;
 
 use crate::models::{ModelEntry, Registry};
 use crate::ode::{Method, Tolerances};
-use crate::problem::{output_times, plot_times, too_many_rows, Pick, Problem};
-use crate::scene::{Axle, Scene, SceneError, Value};
+use crate::problem::{Pick, Problem};
+use crate::scene::{output_times, plot_times, too_many_rows, Axle, Scene, SceneError, Value};
 use initial::{norm_error, TopStart, UNIT_NORM_TOLERANCE};
 
 /// The problem a scene describes.

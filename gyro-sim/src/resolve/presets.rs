@@ -17,8 +17,7 @@
 
 use kane_model::runtime::ModelInfo;
 
-use crate::scene::{Scene, SceneError};
-use crate::solve::events::{EventDecl, Preset};
+use crate::scene::{EventDecl, Preset, Scene, SceneError};
 
 /// The expression of preset `p` of event `decl` in `scene` for the model `info`.
 pub fn when_text(

@@ -1,12 +1,93 @@
-//! `[[events]]` tables read: in come the TOML tables; out go [`EventDecl`]s, or a scene error at
-//! the key that is wrong (names, expressions and angles are checked against the model later, in
-//! [`super::resolve`]).
+//! `[[events]]` tables read: in come the TOML tables; out go [`EventDecl`]s (a name, an
+//! expression or a preset, the crossings that count and what one does), or a scene error at the
+//! key that is wrong (names, expressions and angles are checked against the model later, when
+//! the scene is resolved).
 
 use serde::Deserialize;
 use toml::Spanned;
 
 use super::SceneError;
-use crate::solve::events::{Action, Direction, EventDecl, EventSource, Preset};
+
+/// Which crossings count.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Direction {
+    /// From negative to positive.
+    Up,
+    /// From positive to negative.
+    Down,
+    /// Either.
+    Both,
+}
+
+/// What a crossing does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Action {
+    /// Record it and go on.
+    Record,
+    /// Record it and end the run there.
+    Stop,
+}
+
+/// A built-in event.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Preset {
+    /// The axle (the body z axis of the `[axle]` quaternion) goes below the horizontal.
+    AxleBelowHorizontal,
+    /// The axle's elevation has a turning point (nutation extrema).
+    NutationTurningPoints,
+    /// A gimbal angle comes within `margin` of a lock angle (`lock` + k 180 deg).
+    GimbalLock {
+        /// The angle's state name and where it is given.
+        angle: (String, std::ops::Range<usize>),
+        /// The margin, radians.
+        margin: f64,
+        /// The angle at lock, radians.
+        lock: f64,
+    },
+}
+
+/// Where an event's expression comes from.
+#[derive(Clone, Debug, PartialEq)]
+pub enum EventSource {
+    /// `when = "..."`: its text and where the text starts in the scene (inside the quotes).
+    When(String, usize),
+    /// `preset = "..."`.
+    Preset(Preset),
+}
+
+/// One `[[events]]` table, checked for what does not need the model.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EventDecl {
+    /// Its place in `[[events]]`, from 1.
+    pub number: usize,
+    /// Its name (default `event{number}`, or the preset's name).
+    pub name: String,
+    /// The expression or preset.
+    pub source: EventSource,
+    /// Where its `when` or `preset` key's value is.
+    pub span: std::ops::Range<usize>,
+    /// Which crossings count.
+    pub direction: Direction,
+    /// What a crossing does.
+    pub action: Action,
+    /// The run ends at this crossing (stop: default 1).
+    pub count: Option<usize>,
+}
+
+impl EventDecl {
+    /// `[[events]] 2 (`name`)`, for messages.
+    pub fn label(&self) -> String {
+        format!("[[events]] {} (`{}`)", self.number, self.name)
+    }
+
+    /// The crossing the run ends at, if any.
+    pub fn stop_after(&self) -> Option<usize> {
+        match self.action {
+            Action::Stop => Some(self.count.unwrap_or(1)),
+            Action::Record => self.count,
+        }
+    }
+}
 
 /// One `[[events]]` table as written.
 #[derive(Debug, Deserialize)]

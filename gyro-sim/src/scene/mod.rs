@@ -12,12 +12,15 @@ use toml::Spanned;
 
 mod controls;
 mod event_decls;
+mod grid;
 mod specified_table;
 mod view_spec;
 
 pub use controls::Control;
 #[cfg(test)]
 pub(crate) use controls::Target;
+pub use event_decls::{Direction, EventDecl, EventSource, Preset};
+pub use grid::{output_times, plot_times, too_many_rows};
 pub use view_spec::{ArrowView, BodyView, Orientation, Shape, TraceView, ViewError, ViewSpec};
 
 use specified_table::Table;
@@ -58,8 +61,8 @@ pub struct Scene {
     pub outputs: Vec<(String, std::ops::Range<usize>)>,
     /// Integrator.
     pub integrator: Integrator,
-    /// Events to find (`[[events]]`, see [`crate::events`]).
-    pub events: Vec<crate::solve::events::EventDecl>,
+    /// Events to find (`[[events]]`, see [`EventDecl`]).
+    pub events: Vec<EventDecl>,
     /// Values a user may move (`[[controls]]`, the sliders of `gyro-sim serve`).
     pub controls: Vec<Control>,
 }
@@ -510,7 +513,7 @@ impl Text<'_> {
                 "give a positive step no longer than t_final",
             ));
         }
-        if let Some((what, help)) = crate::problem::too_many_rows(*t_final.get_ref(), *step.get_ref()) {
+        if let Some((what, help)) = too_many_rows(*t_final.get_ref(), *step.get_ref()) {
             return Err(self.err(step.span(), what, &help));
         }
         Ok((t_final.into_inner(), step.into_inner()))

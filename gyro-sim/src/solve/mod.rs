@@ -17,11 +17,11 @@ use refine::refine;
 use crate::models::Registry;
 use crate::ode::{self, Method, OdeError, Stats, System, TaylorWork};
 use crate::ode::{normalise, NormDrift, UnitNorm};
+use crate::problem::EventLog;
 use crate::problem::Rows;
 use crate::problem::{Column, Conditioning, Constraints, Trajectory};
 use crate::problem::{Pick, Problem};
-use events::watch::Watch;
-use events::EventLog;
+use events::Watch;
 use kane_model::assembly::Assembly;
 
 /// Why an integration failed.

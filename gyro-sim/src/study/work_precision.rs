@@ -5,6 +5,7 @@
 
 use crate::models::Registry;
 use crate::ode::{Method, Tolerances, METHODS};
+use crate::output::WorkPrecisionPoint;
 use crate::problem::Trajectory;
 use crate::problem::{Pick, Problem};
 use crate::solve::{solve, SolveError};
@@ -33,29 +34,13 @@ impl Default for Options {
     }
 }
 
-/// One configuration measured.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Point {
-    /// The method's name.
-    pub method: &'static str,
-    /// Its tolerance (adaptive) or step (fixed).
-    pub setting: f64,
-    /// Largest difference from the reference over the output grid and the states, relative to
-    /// max(1, |reference|).
-    pub error: f64,
-    /// Median wall time of the integration, milliseconds.
-    pub median_ms: f64,
-    /// Accepted steps.
-    pub steps: usize,
-    /// Right-hand-side evaluations.
-    pub rhs_evals: usize,
-    /// Why the run failed (then error and times are NaN), e.g. a blow-up at a loose setting.
-    pub failure: Option<String>,
-}
-
 /// Measures every method on `problem` (its columns replaced by the states; no accuracy
 /// refinement): the points, method by method, in increasing accuracy asked.
-pub fn measure(problem: &Problem, registry: &Registry, options: &Options) -> Result<Vec<Point>, SolveError> {
+pub fn measure(
+    problem: &Problem,
+    registry: &Registry,
+    options: &Options,
+) -> Result<Vec<WorkPrecisionPoint>, SolveError> {
     let mut base = problem.clone();
     base.picks = (0..problem.model.state_names.len()).map(Pick::State).collect();
     base.written_picks = base.picks.len();
@@ -65,10 +50,10 @@ pub fn measure(problem: &Problem, registry: &Registry, options: &Options) -> Res
     let reference = run(&base, Method::Adaptive(&crate::ode::tableau::DOP853, reference_tol), registry)?;
     let configs = configurations(problem, options);
     let mut walls: Vec<Vec<f64>> = vec![Vec::new(); configs.len()];
-    let mut points: Vec<Option<Point>> = vec![None; configs.len()];
+    let mut points: Vec<Option<WorkPrecisionPoint>> = vec![None; configs.len()];
     for _ in 0..options.repeats.max(1) {
         for (k, (name, setting, method)) in configs.iter().enumerate() {
-            let failed = |e: SolveError| Point {
+            let failed = |e: SolveError| WorkPrecisionPoint {
                 method: name,
                 setting: *setting,
                 error: f64::NAN,
@@ -80,7 +65,7 @@ pub fn measure(problem: &Problem, registry: &Registry, options: &Options) -> Res
             let point = match run(&base, *method, registry) {
                 Ok(t) => {
                     walls[k].push(t.wall.as_secs_f64() * 1e3);
-                    Point {
+                    WorkPrecisionPoint {
                         method: name,
                         setting: *setting,
                         error: largest_error(&t, &reference),
@@ -99,7 +84,7 @@ pub fn measure(problem: &Problem, registry: &Registry, options: &Options) -> Res
     for (point, mut w) in points.into_iter().zip(walls) {
         w.sort_by(f64::total_cmp);
         let median = w.get(w.len() / 2).copied().unwrap_or(f64::NAN);
-        out.extend(point.map(|p| Point { median_ms: median, ..p }));
+        out.extend(point.map(|p| WorkPrecisionPoint { median_ms: median, ..p }));
     }
     Ok(out)
 }
@@ -139,7 +124,7 @@ pub fn largest_error(t: &Trajectory, reference: &Trajectory) -> f64 {
 
 /// The points as CSV text: `method,setting,error,median_ms,steps,rhs_evals,failure` (a failed
 /// run's numbers empty).
-pub fn to_csv(points: &[Point]) -> String {
+pub fn to_csv(points: &[WorkPrecisionPoint]) -> String {
     let mut s = String::from("method,setting,error,median_ms,steps,rhs_evals,failure\n");
     for p in points {
         match &p.failure {
@@ -173,7 +158,8 @@ mod tests {
             assert_eq!(pair[0].method, pair[1].method);
             assert!(pair[1].error < pair[0].error / 10.0, "{pair:?}");
             // The Taylor method raises its order (coefficient passes) rather than its steps.
-            let work = |p: &Point| if p.method == crate::ode::TAYLOR { p.rhs_evals } else { p.steps };
+            let work =
+                |p: &WorkPrecisionPoint| if p.method == crate::ode::TAYLOR { p.rhs_evals } else { p.steps };
             assert!(work(&pair[1]) > work(&pair[0]), "{pair:?}");
         }
         let csv = to_csv(&points);

@@ -19,7 +19,7 @@ pub use elevation::write_elevation;
 pub use series::write_plot;
 pub use sweep_metric::{write_sweep_metric, MemberPoint, MetricAxes};
 pub use trace::write_trace;
-pub use work_precision_figure::write_work_precision;
+pub use work_precision_figure::{write_work_precision, WorkPrecisionPoint};
 
 static FONT: Once = Once::new();
 

@@ -1,5 +1,6 @@
-//! The work-precision figure: in come measured points (method, error, median time); out goes a
-//! log-log PNG of time against error, one line per method, the legend beside the chart.
+//! The work-precision figure: in come measured points ([`WorkPrecisionPoint`]: method, error,
+//! median time); out goes a log-log PNG of time against error, one line per method, the legend
+//! beside the chart.
 
 use std::path::Path;
 
@@ -7,13 +8,33 @@ use plotters::prelude::*;
 
 use super::super::write_atomically;
 use super::{register_font, COLORS};
-use crate::study::work_precision::Point;
+
+/// One configuration measured (by `gyro-sim bench`): a method at one tolerance or step.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WorkPrecisionPoint {
+    /// The method's name.
+    pub method: &'static str,
+    /// Its tolerance (adaptive) or step (fixed).
+    pub setting: f64,
+    /// Largest difference from the reference over the output grid and the states, relative to
+    /// max(1, |reference|).
+    pub error: f64,
+    /// Median wall time of the integration, milliseconds.
+    pub median_ms: f64,
+    /// Accepted steps.
+    pub steps: usize,
+    /// Right-hand-side evaluations.
+    pub rhs_evals: usize,
+    /// Why the run failed (then error and times are NaN), e.g. a blow-up at a loose setting.
+    pub failure: Option<String>,
+}
 
 /// Writes the figure of `points` to `path` (atomically), titled `title`.
-pub fn write_work_precision(points: &[Point], title: &str, path: &Path) -> Result<(), String> {
+pub fn write_work_precision(points: &[WorkPrecisionPoint], title: &str, path: &Path) -> Result<(), String> {
     register_font();
-    let finite: Vec<&Point> = points.iter().filter(|p| p.error > 0.0 && p.median_ms > 0.0).collect();
-    let bounds = |f: fn(&Point) -> f64| {
+    let finite: Vec<&WorkPrecisionPoint> =
+        points.iter().filter(|p| p.error > 0.0 && p.median_ms > 0.0).collect();
+    let bounds = |f: fn(&WorkPrecisionPoint) -> f64| {
         let lo = finite.iter().map(|p| f(p)).fold(f64::INFINITY, f64::min);
         let hi = finite.iter().map(|p| f(p)).fold(0.0, f64::max);
         if lo < hi {

@@ -11,20 +11,12 @@
 
 use super::isolate::{isolate, Isolation, Sample};
 use super::root::illinois;
-use super::Direction;
+use crate::problem::Rule;
+use crate::scene::Direction;
 
 /// A start value this small relative to the largest value in the first step is the start's own
 /// zero (round-off of a value that is zero there).
 pub const START_ROUND_OFF: f64 = 64.0 * f64::EPSILON;
-
-/// What is watched of one event.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Rule {
-    /// The crossings that count.
-    pub direction: Direction,
-    /// The run ends at this crossing (counted from one), if any.
-    pub stop_after: Option<usize>,
-}
 
 /// One crossing.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -6,7 +6,7 @@ use std::cell::RefCell;
 
 use kane_model::codegen::ir::Input;
 
-use super::{EventSpec, Source};
+use crate::problem::{EventSpec, Source};
 use crate::solve::BoundModel;
 
 /// Buffers reused between evaluations.

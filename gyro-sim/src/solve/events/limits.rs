@@ -3,7 +3,7 @@
 //! together than the steps could resolve ([`Unsettled`]) and the most crossings that fell
 //! between two output rows ([`Crowded`]), for the summary's warnings.
 
-use super::{Crowded, EventLog, Unsettled};
+use crate::problem::{Crowded, EventLog, Unsettled};
 
 /// One event's crossings in the current output interval.
 #[derive(Clone, Copy, Debug, Default)]

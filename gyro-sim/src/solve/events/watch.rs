@@ -5,13 +5,12 @@
 
 use crate::ode::normalise;
 use crate::ode::{Stepping, System};
-use crate::problem::Problem;
+use crate::problem::{EventLog, EventRecord, Problem};
 use crate::solve::{BoundModel, Reduced, SolveError};
 
 use super::detect::Detector;
 use super::eval::EventFns;
 use super::limits::Limits;
-use super::{EventLog, EventRecord};
 
 /// The row of a trajectory at a time and full state.
 pub type RowFn<'r> = dyn Fn(f64, &[f64]) -> Result<Vec<f64>, SolveError> + 'r;

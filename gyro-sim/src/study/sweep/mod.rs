@@ -126,7 +126,7 @@ fn run_member(scene: &Scene, ranges: &[Range], m: &Member, registry: &Registry) 
 }
 
 /// The time each declared event first happened (NaN: never).
-fn first_event_times(log: &crate::solve::events::EventLog) -> Vec<f64> {
+fn first_event_times(log: &crate::problem::EventLog) -> Vec<f64> {
     (0..log.names.len())
         .map(|i| log.records.iter().find(|r| r.event == i).map_or(f64::NAN, |r| r.row[0]))
         .collect()
