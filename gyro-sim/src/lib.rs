@@ -14,15 +14,13 @@ mod solve;
 mod study;
 
 pub use cli::{main_with, CompiledModel};
-pub use models::{
-    content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, ModelEntry, ModelFile, Registry,
-};
+pub use models::{content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, ModelFile, Registry};
 pub use ode::{
     by_name, integrate, integrate_limited, tableau, DenseOutput, ErkStepper, Method, OdeError, Stats,
     StopReason, System, Tolerances, METHODS,
 };
 pub use output::{write, write_view};
-pub use problem::{Column, Pick, Problem, Trajectory, MAX_KEPT_ROWS};
+pub use problem::{Column, Engine, ModelEntry, Pick, Problem, Trajectory, MAX_KEPT_ROWS};
 pub use resolve::{resolve, sleeping_threshold, steady_precession};
 pub use run::{run, run_with, RunSummary};
 pub use scene::{ArrowView, BodyView, Orientation, Scene, Shape, TraceView, ViewSpec};

@@ -178,7 +178,7 @@ fn trial_three_by_taylor_equals_the_dop853_run() {
     let scene = Scene::load(std::path::Path::new(&path)).unwrap();
     let reference = run(&scene, None).unwrap();
     let mut taylor = scene.clone();
-    taylor.integrator.method = "taylor".into();
+    taylor.integrator.method = gyro_sim::by_name("taylor").unwrap();
     let summary = run(&taylor, None).unwrap();
     let asked = scene.integrator.accuracy.unwrap();
     let (a, b) = (&summary.trajectory.rows, &reference.trajectory.rows);

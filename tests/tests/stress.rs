@@ -575,10 +575,20 @@ impl gyro_sim::BoundModel for Blowup {
 #[test]
 fn a_rate_turning_nan_in_a_fixed_step_run_is_named_with_the_time_and_the_state_where_it_did() {
     use gyro_sim::{tableau::RK4, Method};
+    // The entry a registry would hold for it; `solve_bound` below is what its `solve` calls.
+    let model = gyro_sim::ModelEntry {
+        info: &BLOWUP,
+        initial_state: std::sync::Arc::new(|| vec![0.0, 0.0]),
+        default_params: std::sync::Arc::new(Vec::new),
+        solve: std::sync::Arc::new(|problem, rows_to| gyro_sim::solve_bound(problem, &Blowup, rows_to)),
+        engine: gyro_sim::Engine::Compiled,
+        program: None,
+        source: None,
+        mechanics: None,
+    };
     let problem = gyro_sim::Problem {
         title: "blowup".into(),
-        model: &BLOWUP,
-        model_key: "blowup".into(),
+        model,
         params: Vec::new(),
         initial: vec![0.0, 0.0],
         times: (0..=20).map(|i| 0.1 * i as f64).collect(),
@@ -589,11 +599,9 @@ fn a_rate_turning_nan_in_a_fixed_step_run_is_named_with_the_time_and_the_state_w
         picks: vec![gyro_sim::Pick::State(0), gyro_sim::Pick::State(1)],
         written_picks: 2,
         unit_norms: Vec::new(),
-        rows_to: None,
         events: Vec::new(),
-        program: None,
     };
-    let error = gyro_sim::solve_bound(&problem, &Blowup).unwrap_err().to_string();
+    let error = gyro_sim::solve_bound(&problem, &Blowup, None).unwrap_err().to_string();
     // Found again from the last good output (t = 1): the first stage past t = 1 of the step.
     assert!(error.contains("the rate of U is NaN at t = 1.005"), "{error}");
     assert!(error.contains("at the state Q = 0.40"), "{error}");

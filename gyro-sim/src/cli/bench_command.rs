@@ -18,8 +18,7 @@ pub fn bench_command(
     let scene = Scene::load(scene).map_err(|e| e.to_string())?;
     let problem = crate::resolve::resolve(&scene, registry).map_err(|e| e.to_string())?;
     let options = Options { repeats, ..Options::default() };
-    let points =
-        measure(&problem, registry, &options).map_err(|e| format!("{}: {e}", scene.path.display()))?;
+    let points = measure(&problem, &options).map_err(|e| format!("{}: {e}", scene.path.display()))?;
     std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
     let csv = to_csv(&points);
     let csv_path = out.join("work_precision.csv");

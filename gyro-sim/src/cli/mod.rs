@@ -19,7 +19,8 @@ use clap::{Parser, Subcommand, ValueEnum};
 pub use model_scene::{parse_set, scene_text, ModelRunArgs};
 pub use summary::print_summary;
 
-use crate::models::{FileRun, ModelEntry, ModelFile, Registry};
+use crate::models::{FileRun, ModelFile, Registry};
+use crate::problem::ModelEntry;
 use crate::scene::Scene;
 
 /// Simulate models derived with Kane's method.
@@ -277,7 +278,7 @@ fn run_scene(
     if let Some(file) = file {
         crate::resolve::resolve(scene, &registry).map_err(|e| e.to_string())?;
         if args.engine == EngineChoice::Compiled {
-            return run_compiled(file, scene.integrator.method == crate::ode::TAYLOR);
+            return run_compiled(file, scene.integrator.method.name() == crate::ode::TAYLOR);
         }
     }
     finish(scene, &registry, args)
@@ -408,7 +409,7 @@ fn print_timing(scene: &Scene, registry: &Registry, times: usize) -> Result<(), 
     let problem = crate::resolve::resolve(scene, registry).map_err(|e| e.to_string())?;
     let mut walls = Vec::with_capacity(times);
     for _ in 0..times {
-        let t = crate::solve::solve(&problem, registry).map_err(|e| e.to_string())?;
+        let t = crate::solve::solve(&problem, None).map_err(|e| e.to_string())?;
         walls.push(t.wall.as_secs_f64() * 1e3);
     }
     walls.sort_by(f64::total_cmp);

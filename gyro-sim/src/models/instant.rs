@@ -9,8 +9,8 @@ use kane_model::codegen::ProgramModel;
 use kane_model::runtime::ModelInfo;
 
 use super::model_file::ModelFile;
-use super::registry::{Engine, MechanicsSource, ModelEntry, ProgramSource};
 use crate::ode::{System, TaylorWork};
+use crate::problem::{Engine, MechanicsSource, ModelEntry, ProgramSource};
 use crate::solve::{solve_bound, BoundModel};
 
 /// A program model with its parameters bound.
@@ -65,7 +65,9 @@ pub fn instant_entry(model: Arc<ProgramModel>) -> ModelEntry {
         info: model.info(),
         initial_state: Arc::new(move || a.initial_state()),
         default_params: Arc::new(move || b.default_params()),
-        solve: Arc::new(move |problem| solve_bound(problem, &InstantSystem::new(&c, problem.params.clone()))),
+        solve: Arc::new(move |problem, rows_to| {
+            solve_bound(problem, &InstantSystem::new(&c, problem.params.clone()), rows_to)
+        }),
         engine: Engine::Instant,
         program: Some(ProgramSource(Arc::new(move || Some(d.clone())))),
         source: None,

@@ -28,7 +28,9 @@ pub(crate) use control::PiControl;
 pub use dense::DenseOutput;
 pub use drive::Stepping;
 pub use integrate::{integrate, integrate_limited};
-pub use methods::{by_name, for_tolerances, methods_help, Method, Tolerances, AUTO, METHODS, TAYLOR};
+pub use methods::{
+    by_name, for_tolerances, methods_help, Method, MethodInfo, Tolerances, AUTO, METHODS, TAYLOR,
+};
 pub(crate) use stages::blended_norm;
 pub use stepper::{ErkStepper, Stats, StopReason, DEFAULT_MAX_STEPS};
 use thiserror::Error;

@@ -19,7 +19,7 @@ pub struct Rule {
 /// model gives in degrees scaled to degrees).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Source {
-    /// Time.
+    /// The time `t`.
     Time,
     /// State `i` times `scale`.
     State(usize, f64),

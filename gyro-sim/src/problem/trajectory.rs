@@ -91,7 +91,7 @@ pub struct Constraints {
 pub struct Conditioning {
     /// Its smallest over largest singular value (NaN when an entry was not finite).
     pub rcond: f64,
-    /// When.
+    /// The output time it was worst at.
     pub time: f64,
     /// The coordinates then, `Q1 = 0 deg, ...`.
     pub configuration: String,

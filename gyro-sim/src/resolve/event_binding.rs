@@ -23,15 +23,14 @@ pub fn events(scene: &Scene, info: &ModelInfo) -> Result<Vec<EventSpec>, SceneEr
     if scene.events.is_empty() {
         return Ok(Vec::new());
     }
-    let dense = crate::ode::by_name(&scene.integrator.method).is_some_and(|m| m.dense_output());
-    if !dense {
+    if !scene.integrator.method.dense_output() {
         let d = &scene.events[0];
         return Err(scene.error_at(
             d.span.clone(),
             format!(
                 "{}: events are found on the integrator's dense output, and method = \"{}\" has none",
                 d.label(),
-                scene.integrator.method
+                scene.integrator.method.name()
             ),
             "set method under [integrator] to one with dense output (dopri5, dop853, vern7, vern9), or remove [[events]]",
         ));

@@ -13,8 +13,9 @@ pub use initial::{sleeping_threshold, steady_precession};
 use kane_model::lang::units::normalised;
 use kane_model::runtime::ModelInfo;
 
-use crate::models::{ModelEntry, Registry};
+use crate::models::Registry;
 use crate::ode::{Method, Tolerances};
+use crate::problem::ModelEntry;
 use crate::problem::{Pick, Problem};
 use crate::scene::{output_times, plot_times, too_many_rows, Axle, Scene, SceneError, Value};
 use initial::{norm_error, TopStart, UNIT_NORM_TOLERANCE};
@@ -38,8 +39,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
     let written = picks(scene, info)?;
     let problem = Problem {
         title: scene.title.clone(),
-        model: info,
-        model_key: scene.model.clone(),
+        model: entry.clone(),
         params: parameters(scene, entry)?,
         initial: initial_state(scene, entry)?,
         times: times.clone(),
@@ -55,13 +55,11 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
         picks: with_view_picks(scene, info, written)?,
         unit_norms: unit_norms(scene, info)?,
         events: event_binding::events(scene, info)?,
-        rows_to: None,
-        program: entry.program.clone(),
     };
     if scene.axle.is_none() {
         euler_parameters_named_e(scene, info, &problem.initial)?;
     }
-    plausible::check(scene, entry, &problem)?;
+    plausible::check(scene, &problem)?;
     Ok(problem)
 }
 
@@ -103,12 +101,10 @@ fn has_dense_output(method: Method) -> bool {
     matches!(method, Method::Adaptive(tab, _) if tab.dense.is_some()) || matches!(method, Method::Taylor(_))
 }
 
-/// The method a scene names (checked when the scene was parsed).
+/// The method the scene carries (found when it was read) with its tolerances or step.
 fn method(scene: &Scene) -> Method {
     let i = &scene.integrator;
-    let tol = Tolerances { rtol: i.rtol, atol: i.atol };
-    let info = crate::ode::by_name(&i.method).unwrap_or(crate::ode::for_tolerances(tol));
-    info.method(tol, i.step)
+    i.method.method(Tolerances { rtol: i.rtol, atol: i.atol }, i.step)
 }
 
 /// The model's defaults with the scene's values; an error for an unknown or missing one.
@@ -402,7 +398,7 @@ mod tests {
 
     fn initial(text: &str) -> Result<(Vec<f64>, &'static ModelInfo), SceneError> {
         let scene = Scene::parse("top.toml", &format!("{HEAD}{text}"))?;
-        resolve(&scene, &Registry::builtin()).map(|p| (p.initial, p.model))
+        resolve(&scene, &Registry::builtin()).map(|p| (p.initial, p.model.info))
     }
 
     fn state(y: &[f64], info: &ModelInfo, name: &str) -> f64 {

@@ -1,16 +1,15 @@
-//! Plausibility of a run's values: in come a scene, its model's entry and the problem resolved
-//! from them; out goes an error naming the first negative mass, inertia that no rigid body has,
+//! Plausibility of a run's values: in come a scene and the problem resolved from it (which
+//! carries the model's entry); out goes an error naming the first negative mass, inertia that no rigid body has,
 //! or Euler parameters off unit norm, at the scene's line that gives the value (at its `model`
 //! key when the value is the model's own). Models without known mechanics are not checked.
 
-use crate::models::{MechanicsSource, ModelEntry};
-use crate::problem::Problem;
+use crate::problem::{MechanicsSource, Problem};
 use crate::scene::{Scene, SceneError};
 
-/// An error at `scene` when `problem`'s values are implausible for `entry`'s mechanics.
-pub(crate) fn check(scene: &Scene, entry: &ModelEntry, problem: &Problem) -> Result<(), SceneError> {
-    let Some(model) = entry.mechanics.as_ref().and_then(MechanicsSource::get) else { return Ok(()) };
-    let info = problem.model;
+/// An error at `scene` when `problem`'s values are implausible for its model's mechanics.
+pub(crate) fn check(scene: &Scene, problem: &Problem) -> Result<(), SceneError> {
+    let Some(model) = problem.model.mechanics.as_ref().and_then(MechanicsSource::get) else { return Ok(()) };
+    let info = problem.model.info;
     let value = |name: &str| {
         let param =
             info.param_names.iter().position(|p| p.eq_ignore_ascii_case(name)).map(|i| problem.params[i]);

@@ -25,6 +25,8 @@ pub use view_spec::{ArrowView, BodyView, Orientation, Shape, TraceView, ViewErro
 
 use specified_table::Table;
 
+use crate::ode::MethodInfo;
+
 /// A scene, validated.
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -110,11 +112,11 @@ impl Axle {
 }
 
 /// Integrator settings.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct Integrator {
-    /// `dop853`, `dopri5`, `vern7`, `vern9`, `taylor` or `rk4` (`auto`, the default, is
-    /// resolved by the tolerances when the scene is read).
-    pub method: String,
+    /// The method the scene names, found when it is read: `dop853`, `dopri5`, `vern7`, `vern9`,
+    /// `taylor` or `rk4` (`auto`, the default, is picked by the tolerances).
+    pub method: &'static MethodInfo,
     /// Relative tolerance (adaptive methods).
     pub rtol: f64,
     /// Absolute tolerance (adaptive methods).
@@ -251,29 +253,26 @@ impl Text<'_> {
         let default_tol = asked.unwrap_or(1e-9);
         let rtol = self.positive(&integ.rtol, default_tol, "rtol")?;
         let atol = self.positive(&integ.atol, default_tol, "atol")?;
-        let method = if named == crate::ode::AUTO {
-            crate::ode::for_tolerances(crate::ode::Tolerances { rtol, atol }).name().to_string()
+        // The one place a method's name is looked up: the scene carries the method found.
+        let found = if named == crate::ode::AUTO {
+            Some(crate::ode::for_tolerances(crate::ode::Tolerances { rtol, atol }))
         } else {
-            named
+            crate::ode::by_name(&named)
         };
-        let Some(info) = crate::ode::by_name(&method) else {
+        let Some(method) = found else {
             let span = integ.method.as_ref().map_or(0..0, |m| m.span());
-            return Err(self.err(
-                span,
-                format!("unknown integrator `{method}`"),
-                &crate::ode::methods_help(),
-            ));
+            return Err(self.err(span, format!("unknown integrator `{named}`"), &crate::ode::methods_help()));
         };
-        if let (Some(a), false) = (&integ.accuracy, info.adaptive) {
+        if let (Some(a), false) = (&integ.accuracy, method.adaptive) {
             return Err(self.err(
                 a.span(),
-                format!("accuracy needs an adaptive method: {method} has a fixed step"),
+                format!("accuracy needs an adaptive method: {} has a fixed step", method.name()),
                 "use method = \"dop853\" or \"dopri5\", or remove accuracy",
             ));
         }
         let step = self.positive(&integ.step, output_step / 10.0, "step")?;
         let max_steps = self.max_steps(&integ.max_steps)?;
-        if !info.adaptive {
+        if !method.adaptive {
             self.fixed_steps_fit(&integ, step, t_final, max_steps)?;
         }
         Ok(Integrator { method, rtol, atol, step, accuracy: asked, max_steps })
@@ -654,8 +653,9 @@ mod tests {
     #[test]
     fn an_unnamed_or_auto_method_is_picked_by_the_tolerances() {
         let head = "model = \"heavy_top\"\nt_final = 1.0\noutput_step = 0.1\n";
-        let method =
-            |integ: &str| Scene::parse("top.toml", &format!("{head}{integ}")).unwrap().integrator.method;
+        let method = |integ: &str| {
+            Scene::parse("top.toml", &format!("{head}{integ}")).unwrap().integrator.method.name()
+        };
         assert_eq!(method(""), "vern9", "the default tolerances are 1e-9");
         assert_eq!(method("[integrator]\nrtol = 1e-6\natol = 1e-6\n"), "dop853");
         assert_eq!(method("[integrator]\nmethod = \"AUTO\"\nrtol = 1e-6\natol = 1e-10\n"), "dop853");

@@ -1,9 +1,10 @@
 //! An accuracy asked of a trajectory: in come a goal, a method and one integration as a
 //! function of the tolerances; out goes the run whose predecessor it agrees with to the goal.
 
+use super::integration::Integration;
 use crate::ode::{Method, Stats, Tolerances};
 use crate::problem::Accuracy;
-use crate::solve::{Integration, SolveError};
+use crate::problem::SolveError;
 
 /// Tolerances shrink by this factor from one run to the next when an accuracy is asked.
 const REFINEMENT: f64 = 100.0;

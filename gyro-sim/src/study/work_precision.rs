@@ -3,12 +3,10 @@
 //! a reference run and the median wall time. Runs are interleaved (each repeat goes over every
 //! configuration once), so a slow spell of the machine spreads over all of them.
 
-use crate::models::Registry;
 use crate::ode::{Method, Tolerances, METHODS};
 use crate::output::WorkPrecisionPoint;
-use crate::problem::Trajectory;
-use crate::problem::{Pick, Problem};
-use crate::solve::{solve, SolveError};
+use crate::problem::{Pick, Problem, SolveError, Trajectory};
+use crate::solve::solve;
 
 /// What to measure.
 #[derive(Clone, Debug, PartialEq)]
@@ -36,18 +34,14 @@ impl Default for Options {
 
 /// Measures every method on `problem` (its columns replaced by the states; no accuracy
 /// refinement): the points, method by method, in increasing accuracy asked.
-pub fn measure(
-    problem: &Problem,
-    registry: &Registry,
-    options: &Options,
-) -> Result<Vec<WorkPrecisionPoint>, SolveError> {
+pub fn measure(problem: &Problem, options: &Options) -> Result<Vec<WorkPrecisionPoint>, SolveError> {
     let mut base = problem.clone();
-    base.picks = (0..problem.model.state_names.len()).map(Pick::State).collect();
+    base.picks = (0..problem.model.info.state_names.len()).map(Pick::State).collect();
     base.written_picks = base.picks.len();
     base.accuracy = None;
     base.plot_times.clear();
     let reference_tol = Tolerances { rtol: options.reference_tolerance, atol: options.reference_tolerance };
-    let reference = run(&base, Method::Adaptive(&crate::ode::tableau::DOP853, reference_tol), registry)?;
+    let reference = run(&base, Method::Adaptive(&crate::ode::tableau::DOP853, reference_tol))?;
     let configs = configurations(problem, options);
     let mut walls: Vec<Vec<f64>> = vec![Vec::new(); configs.len()];
     let mut points: Vec<Option<WorkPrecisionPoint>> = vec![None; configs.len()];
@@ -62,7 +56,7 @@ pub fn measure(
                 rhs_evals: 0,
                 failure: Some(e.to_string()),
             };
-            let point = match run(&base, *method, registry) {
+            let point = match run(&base, *method) {
                 Ok(t) => {
                     walls[k].push(t.wall.as_secs_f64() * 1e3);
                     WorkPrecisionPoint {
@@ -109,17 +103,17 @@ fn configurations(problem: &Problem, options: &Options) -> Vec<(&'static str, f6
     out
 }
 
-fn run(base: &Problem, method: Method, registry: &Registry) -> Result<Trajectory, SolveError> {
+fn run(base: &Problem, method: Method) -> Result<Trajectory, SolveError> {
     let mut p = base.clone();
     p.method = method;
-    solve(&p, registry)
+    solve(&p, None)
 }
 
 /// The largest difference of `t` from `reference` over rows and columns, relative to
 /// max(1, |reference|).
 pub fn largest_error(t: &Trajectory, reference: &Trajectory) -> f64 {
     let width = reference.columns.len() + 1;
-    crate::solve::refine::largest_difference(&t.rows, &reference.rows, width)
+    crate::solve::largest_difference(&t.rows, &reference.rows, width)
 }
 
 /// The points as CSV text: `method,setting,error,median_ms,steps,rhs_evals,failure` (a failed
@@ -148,11 +142,10 @@ mod tests {
     fn tighter_tolerances_give_smaller_errors_on_trial_three() {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/paper/trial3.toml");
         let scene = crate::scene::Scene::load(std::path::Path::new(path)).unwrap();
-        let registry = Registry::builtin();
-        let problem = crate::resolve::resolve(&scene, &registry).unwrap();
+        let problem = crate::resolve::resolve(&scene, &crate::models::Registry::builtin()).unwrap();
         let options =
             Options { decades: vec![4, 8], halvings: vec![5, 7], repeats: 1, reference_tolerance: 1e-13 };
-        let points = measure(&problem, &registry, &options).unwrap();
+        let points = measure(&problem, &options).unwrap();
         assert_eq!(points.len(), 2 * METHODS.len());
         for pair in points.chunks(2) {
             assert_eq!(pair[0].method, pair[1].method);

@@ -15,8 +15,9 @@ use kane_model::codegen::ProgramModel;
 use kane_model::mechanics::{reciprocal_condition, CONSTRAINT_RCOND_LIMIT};
 use kane_model::runtime::ModelInfo;
 
+use super::bound::{kinetic_energy_output, output_of_kind, BoundModel};
 use crate::problem::Problem;
-use crate::solve::{kinetic_energy_output, BoundModel, SolveError};
+use crate::problem::SolveError;
 
 /// A pivot this small against the largest diagonal entry makes the mass matrix singular.
 const SINGULAR_PIVOT: f64 = 1e-10;
@@ -138,7 +139,7 @@ fn singular_mass_matrix<B: BoundModel>(
 /// The smallest over the largest singular value of the motion constraints' matrix of
 /// dependent speeds at `(t, y)`, when the model has that matrix as an output.
 pub(crate) fn constraint_rcond<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Option<f64> {
-    let k = sys.info().outputs.iter().position(|o| o.kind == "constraint_matrix")?;
+    let k = output_of_kind(sys.info(), "constraint_matrix")?;
     Some(matrix_rcond(sys, k, t, y, &mut Vec::new()))
 }
 
@@ -225,7 +226,7 @@ pub(crate) fn explain<B: BoundModel>(
     if !explainable(&error) {
         return error;
     }
-    let program = problem.program.as_ref().and_then(|p| p.program()).filter(|p| {
+    let program = problem.model.program.as_ref().and_then(|p| p.program()).filter(|p| {
         let (a, b) = (p.info(), sys.info());
         a.param_names == b.param_names && a.state_names == b.state_names
     });

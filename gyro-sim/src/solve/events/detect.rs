@@ -23,7 +23,7 @@ pub const START_ROUND_OFF: f64 = 64.0 * f64::EPSILON;
 pub struct Crossing {
     /// Which event.
     pub event: usize,
-    /// When.
+    /// When it happened.
     pub t: f64,
     /// Whether the value goes up through zero.
     pub rising: bool,

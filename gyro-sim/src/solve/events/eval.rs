@@ -7,7 +7,7 @@ use std::cell::RefCell;
 use kane_model::codegen::ir::Input;
 
 use crate::problem::{EventSpec, Source};
-use crate::solve::BoundModel;
+use crate::solve::bound::BoundModel;
 
 /// Buffers reused between evaluations.
 #[derive(Default)]

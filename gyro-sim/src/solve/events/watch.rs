@@ -5,8 +5,8 @@
 
 use crate::ode::normalise;
 use crate::ode::{Stepping, System};
-use crate::problem::{EventLog, EventRecord, Problem};
-use crate::solve::{BoundModel, Reduced, SolveError};
+use crate::problem::{EventLog, EventRecord, Problem, SolveError};
+use crate::solve::bound::{BoundModel, Reduced};
 
 use super::detect::Detector;
 use super::eval::EventFns;

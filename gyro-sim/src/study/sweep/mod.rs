@@ -98,7 +98,7 @@ fn run_member(scene: &Scene, ranges: &[Range], m: &Member, registry: &Registry) 
         Ok(p) => p,
         Err(e) => return failed(one_line(&e.to_string())),
     };
-    let trajectory = match crate::solve::solve(&problem, registry) {
+    let trajectory = match crate::solve::solve(&problem, None) {
         Ok(t) => t,
         Err(e) => return failed(one_line(&e.to_string())),
     };
