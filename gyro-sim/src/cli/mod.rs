@@ -4,6 +4,7 @@
 //! run in this one's place) or on the instant path (the lowered program evaluated directly).
 
 mod bench_command;
+mod file_model;
 mod model_scene;
 mod origins;
 mod serve_command;
@@ -18,6 +19,8 @@ use clap::{Parser, Subcommand, ValueEnum};
 
 pub use model_scene::{parse_set, scene_text, ModelRunArgs};
 pub use summary::print_summary;
+
+use file_model::model_file_of;
 
 use crate::models::{FileRun, ModelFile, Registry};
 use crate::problem::ModelEntry;
@@ -306,24 +309,6 @@ fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
         mechanics: current.mechanics.clone(),
         ..compiled
     }
-}
-
-/// `registry` with the model file `scene` names, if it names one, on the instant engine.
-fn with_file_model(scene: &Scene, registry: Registry) -> Result<Registry, String> {
-    let Some(path) = model_file_of(scene) else { return Ok(registry) };
-    let source = crate::models::source_with(&path, &scene.specified).map_err(|e| e.to_string())?;
-    let file = ModelFile::from_source(&path, source).map_err(|e| e.to_string())?;
-    eprint!("{}", file.warnings);
-    Ok(registry.with_entry(&scene.model, crate::models::file_entry(&file)))
-}
-
-/// The model file a scene names (`model = "file.al"`, relative to the scene), if it does.
-fn model_file_of(scene: &Scene) -> Option<PathBuf> {
-    if !scene.model.to_ascii_lowercase().ends_with(".al") {
-        return None;
-    }
-    let dir = scene.path.parent().unwrap_or(Path::new("."));
-    Some(dir.join(&scene.model))
 }
 
 /// The scene of a `--model` run.

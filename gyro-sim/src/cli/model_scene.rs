@@ -18,7 +18,7 @@ const DEFAULT_TOLERANCE: f64 = 1e-8;
 pub struct ModelRunArgs {
     /// `NAME=VALUE` pairs (a value may carry a unit: `Q2=30 deg`).
     pub sets: Vec<(String, String)>,
-    /// `--t-final`.
+    /// The end time given with `--t-final`.
     pub t_final: Option<f64>,
 }
 

@@ -10,7 +10,7 @@ use crate::scene::Scene;
 /// Loads the scene (a model file it names runs on the instant engine), runs it once and serves it.
 pub fn serve_command(scene: &Path, port: u16, registry: Registry) -> Result<ExitCode, String> {
     let scene = Scene::load(scene).map_err(|e| e.to_string())?;
-    let registry = super::with_file_model(&scene, registry)?;
+    let registry = super::file_model::with_file_model(&scene, registry)?;
     if scene.controls.is_empty() {
         eprintln!(
             "{}: the scene has no [[controls]]: the page plays its run, with nothing to move",

@@ -38,7 +38,7 @@ pub struct SweepArgs<'a> {
 /// folder must hold this sweep (or none) and no other sweep may be running in it.
 pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCode, String> {
     let scene = Scene::load(args.scene).map_err(|e| e.to_string())?;
-    let registry = super::with_file_model(&scene, registry.clone())?;
+    let registry = super::file_model::with_file_model(&scene, registry.clone())?;
     let design = match args.samples {
         Some(count) => Design::Samples { count, seed: args.seed },
         None => Design::Grid,
@@ -90,7 +90,7 @@ fn plan_of(
     members: usize,
     shard: Shard,
 ) -> Result<SweepPlan, String> {
-    let (model, model_text) = match super::model_file_of(scene) {
+    let (model, model_text) = match super::file_model::model_file_of(scene) {
         Some(path) => {
             let text = std::fs::read(&path).map_err(|e| format!("{}: {e}", path.display()))?;
             (path.display().to_string(), sweep::identity::fnv1a64(&text))

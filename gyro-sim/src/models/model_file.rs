@@ -17,7 +17,7 @@ pub enum ModelFileError {
     Read {
         /// The path given.
         path: String,
-        /// Why.
+        /// Why it failed.
         reason: String,
     },
     /// The file does not check (syntax, derivation or consistency errors, with their places).
@@ -28,7 +28,7 @@ pub enum ModelFileError {
     Lower {
         /// The file.
         path: String,
-        /// Why.
+        /// Why it failed.
         reason: String,
     },
 }
@@ -36,13 +36,13 @@ pub enum ModelFileError {
 /// What a model file says about a run (INPUT TFINAL, INTEGSTP, ABSERR, RELERR; OUTPUT).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct FileRun {
-    /// `TFINAL`.
+    /// The final time, `TFINAL`.
     pub t_final: Option<f64>,
     /// `INTEGSTP`: the output step.
     pub step: Option<f64>,
-    /// `ABSERR`.
+    /// The absolute tolerance, `ABSERR`.
     pub abserr: Option<f64>,
-    /// `RELERR`.
+    /// The relative tolerance, `RELERR`.
     pub relerr: Option<f64>,
     /// The OUTPUT names other than `T`, in order (without `>`).
     pub outputs: Vec<String>,

@@ -4,7 +4,8 @@
 
 use std::ops::ControlFlow;
 
-use super::stepper::{ErkStepper, Stats, StopReason};
+use super::stages::Stats;
+use super::stepper::{ErkStepper, StopReason};
 use super::taylor::TaylorStepper;
 use super::{OdeError, System};
 

@@ -7,7 +7,8 @@
 use std::ops::ControlFlow;
 
 use super::drive::drive;
-use super::stepper::{ErkStepper, Stats, DEFAULT_MAX_STEPS};
+use super::stages::Stats;
+use super::stepper::{ErkStepper, DEFAULT_MAX_STEPS};
 use super::{Method, OdeError, System};
 
 /// Integrates from `(t0, y0)` through the increasing output `times` (none before `t0`), calling

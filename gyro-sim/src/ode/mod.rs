@@ -32,12 +32,13 @@ pub use methods::{
     by_name, for_tolerances, methods_help, Method, MethodInfo, Tolerances, AUTO, METHODS, TAYLOR,
 };
 pub(crate) use stages::blended_norm;
-pub use stepper::{ErkStepper, Stats, StopReason, DEFAULT_MAX_STEPS};
-use thiserror::Error;
+pub use stages::Stats;
+pub use stepper::{ErkStepper, StopReason, DEFAULT_MAX_STEPS};
 pub use unit_norm::{normalise, NormDrift, UnitNorm};
 pub use watched::integrate_watched;
 
 pub use kane_model::runtime::TaylorWork;
+use thiserror::Error;
 
 /// A system `y' = f(t, y)` of fixed dimension; integrators only call `rhs`.
 pub trait System {
@@ -82,7 +83,7 @@ pub enum OdeError {
     /// The step size fell below what the time's precision allows.
     #[error("step size underflow at t = {time} (h = {step:e}): the problem is too stiff or singular for the tolerances")]
     StepSizeUnderflow {
-        /// Where.
+        /// Where it happened.
         time: f64,
         /// The step size.
         step: f64,

@@ -7,9 +7,19 @@
 
 mod unrolled;
 
-use super::stepper::Stats;
 use super::tableau::Tableau;
 use super::{System, Tolerances};
+
+/// What integration cost.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected steps.
+    pub rejected: usize,
+    /// Calls of the right-hand side.
+    pub rhs_evals: usize,
+}
 
 /// Stepping storage. `N` is the dimension when known at compile time (0: read `n_dyn`); then the
 /// component loops unroll, and the built-in tableaux take the fully unrolled step.

@@ -14,7 +14,8 @@
 //! error of small ones), and at their order it is their rule. Every step is accepted: the
 //! estimate is made before the step, from the series itself.
 
-use super::stepper::{Stats, StopReason, DEFAULT_MAX_STEPS};
+use super::stages::Stats;
+use super::stepper::{StopReason, DEFAULT_MAX_STEPS};
 use super::{OdeError, System, TaylorWork, Tolerances};
 /// The lowest order a step takes (the step-size rule reads orders `p - 1` and `p`).
 const MIN_ORDER: usize = 2;

@@ -4,7 +4,7 @@
 use std::fs::File;
 use std::path::{Path, PathBuf};
 
-use super::write::DisplayRows;
+use super::display::DisplayRows;
 use super::{write_atomically, Table};
 use crate::problem::RowSink;
 

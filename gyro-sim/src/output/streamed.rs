@@ -7,8 +7,9 @@ use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
 use super::csv_file::CsvStream;
+use super::display::display_table;
 use super::set::{Staging, PARTIAL_CSV};
-use super::write::{display_table, finish_set};
+use super::write::finish_set;
 use super::{WriteError, Written};
 use crate::problem::RowStream;
 use crate::problem::{Column, Trajectory};

@@ -15,7 +15,7 @@ pub enum Direction {
     Up,
     /// From positive to negative.
     Down,
-    /// Either.
+    /// Either way.
     Both,
 }
 
@@ -51,7 +51,7 @@ pub enum Preset {
 pub enum EventSource {
     /// `when = "..."`: its text and where the text starts in the scene (inside the quotes).
     When(String, usize),
-    /// `preset = "..."`.
+    /// A built-in one: `preset = "..."`.
     Preset(Preset),
 }
 

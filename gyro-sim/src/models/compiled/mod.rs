@@ -28,9 +28,9 @@ pub enum CompileError {
     /// Writing the crate failed.
     #[error("cannot write the compiled model's crate in {path}: {reason}")]
     Io {
-        /// Where.
+        /// The folder it was written in.
         path: String,
-        /// Why.
+        /// Why it failed.
         reason: String,
     },
     /// cargo failed.

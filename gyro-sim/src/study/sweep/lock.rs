@@ -28,7 +28,7 @@ impl FolderLock {
         match file.try_lock() {
             Ok(()) => {
                 let own = ["sweep.csv", "timing.csv", super::PLAN_FILE, super::sorted_runs::RUN_NAME];
-                remove_temporaries(dir, &own)?;
+                crate::output::remove_temporaries(dir, &own)?;
                 Ok(FolderLock { _file: file })
             }
             Err(TryLockError::WouldBlock) => Err(format!(
@@ -39,25 +39,6 @@ impl FolderLock {
             Err(TryLockError::Error(e)) => Err(format!("{}: cannot be locked: {e}", path.display())),
         }
     }
-}
-
-/// Removes from `dir` the temporaries (`.partial-{pid}-{random}-NAME`) of the files `names`.
-pub(crate) fn remove_temporaries(dir: &Path, names: &[&str]) -> Result<(), String> {
-    let entries = match std::fs::read_dir(dir) {
-        Ok(entries) => entries,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),
-        Err(e) => return Err(format!("{}: {e}", dir.display())),
-    };
-    for entry in entries {
-        let entry = entry.map_err(|e| format!("{}: {e}", dir.display()))?;
-        let name = entry.file_name();
-        let name = name.to_string_lossy();
-        if names.iter().any(|n| crate::output::is_temporary_of(&name, n)) {
-            let path = entry.path();
-            std::fs::remove_file(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-        }
-    }
-    Ok(())
 }
 
 #[cfg(test)]

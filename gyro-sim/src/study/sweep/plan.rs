@@ -77,7 +77,7 @@ pub enum Design {
     Grid,
     /// A Latin-hypercube sample of `count` members drawn from `seed`.
     Samples {
-        /// Members.
+        /// How many members.
         count: usize,
         /// The random generator's seed.
         seed: u64,

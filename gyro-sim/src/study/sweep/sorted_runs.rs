@@ -39,7 +39,7 @@ impl SortedRuns {
     /// Sorting into `dir` with a buffer of `budget` bytes, merging `fan_in` runs at once; run
     /// files left there by an earlier, killed sort are removed (the folder's lock is held).
     pub fn new(dir: &Path, budget: usize, fan_in: usize) -> Result<SortedRuns, String> {
-        super::lock::remove_temporaries(dir, &[RUN_NAME])?;
+        crate::output::remove_temporaries(dir, &[RUN_NAME])?;
         Ok(SortedRuns {
             dir: dir.to_path_buf(),
             budget,
