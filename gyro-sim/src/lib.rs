@@ -1,4 +1,43 @@
 //! gyro-sim: integrate models derived with kane-model, from scene files to CSV and plots.
+//!
+//! A run goes one way through the stages:
+//!
+//! ```text
+//! scene text --scene--> Scene --resolve (+ models::Registry)--> Problem (carries its ModelEntry)
+//!   --solve (ode steppers)--> Trajectory --output--> CSV, PNG, events.csv, view.html
+//! ```
+//!
+//! Each folder is a floor. Floors, lowest first; each floor imports only from itself and the
+//! floors below it, and no two files import each other, directly or around a circle:
+//!
+//! 1. `ode/`: in come a system `y' = f(t, y)`, a start and a method; out go the states at
+//!    output times (or step by step) and the cost, or an `OdeError`. Also the unit-norm
+//!    projection of Euler parameters and the stop signals long loops read.
+//! 2. `scene/`: in comes a scene file's TOML text; out goes a checked `Scene` (the model's name,
+//!    values with their units, times, the integrator with its method found by name, the
+//!    `[[events]]`, `[[controls]]` and `[view]` tables) or a `SceneError` at a line and column.
+//! 3. `problem/`: what the stages hand each other: the `Problem` (model units; it carries the
+//!    model's `ModelEntry`, found once in the registry), and what solving gives back: the
+//!    `Trajectory`, a `SolveError`, rows streamed to a `RowStream`.
+//! 4. `output/`: in comes a `Trajectory`; out go the CSV, the figures, `events.csv` and the
+//!    3-D view in display units, put in place as one set (or the CSV streamed as rows come).
+//! 5. `solve/`: in come a `Problem` and where its rows go; out goes a `Trajectory`, or a
+//!    `SolveError` explained where the run went wrong (`diagnose`), with an asked accuracy
+//!    reached by refinement (`refine`) and events watched on the dense output (`events`).
+//! 6. `models/`: in come generated models (built in, or a user's crate's) and model files; out
+//!    goes a `Registry` of `ModelEntry`s, each with the solver instantiated for it, on the
+//!    compiled engine (`compiled`: a cached binary for a model file) or the instant one.
+//! 7. `resolve/`: in come a `Scene` and a `Registry`; out goes a `Problem` (units converted, a
+//!    top's `[axle]` made Euler parameters and rates, events bound to the model, values checked
+//!    for plausibility) or a `SceneError`.
+//! 8. `run.rs`: in comes a scene; out go its trajectory and files (resolve, solve, output).
+//! 9. `study/`: many runs: parameter sweeps (`sweep`), members in lock step (`batch`), work
+//!    against precision (`work_precision`).
+//! 10. `serve/`: a scene run in a browser page, its controls as sliders.
+//! 11. `cli/`: the `gyro-sim` command.
+//!
+//! Every module is private; what the binary, the examples, the benches, the tests and a compiled
+//! model's generated driver use is re-exported here.
 #![warn(missing_docs)]
 
 mod cli;
@@ -13,6 +52,7 @@ mod serve;
 mod solve;
 mod study;
 
+// The front door: everything outside the crate names these, and nothing else.
 pub use cli::{main_with, CompiledModel};
 pub use models::{content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, ModelFile, Registry};
 pub use ode::{

@@ -60,7 +60,7 @@ pub fn run(scene: &Scene, out_dir: Option<&Path>) -> Result<RunSummary, RunError
 
 /// Runs a scene with the models of `registry`. With `out_dir` (and no accuracy asked) rows are
 /// written as they are produced and the trajectory keeps a bounded, thinned set of them (see
-/// [`crate::problem::RowStream`]); a run that fails after some rows keeps them as `trajectory.partial.csv`.
+/// `RowStream`); a run that fails after some rows keeps them as `trajectory.partial.csv`.
 pub fn run_with(scene: &Scene, registry: &Registry, out_dir: Option<&Path>) -> Result<RunSummary, RunError> {
     if let Some(view) = &scene.view {
         view.check().map_err(|error| RunError::View { scene: scene.path.clone(), error })?;

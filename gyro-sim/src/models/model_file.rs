@@ -72,7 +72,7 @@ impl ModelFile {
         ModelFile::from_source(path, source_with(path, &[])?)
     }
 
-    /// Checks and lowers `source`, the text of the model file at `path` (see [`source_with`]).
+    /// Checks and lowers `source`, the text of the model file at `path` (see `source_with`).
     pub fn from_source(path: &Path, source: String) -> Result<ModelFile, ModelFileError> {
         let shown = path.display().to_string();
         let checked =

@@ -1,6 +1,6 @@
 //! Ordinary differential equations. In: a [`System`] `y' = f(t, y)`, a start `(t0, y0)` and a
 //! [`Method`] (a Butcher tableau from [`tableau`], found by name with [`by_name`]). Out: states
-//! step by step from an [`ErkStepper`], or at output times from [`integrate`], with the cost in
+//! step by step from an [`ErkStepper`], or at output times from [`integrate`](fn@integrate), with the cost in
 //! [`Stats`] or the reason in [`OdeError`].
 //!
 //! Files: `tableau` the coefficients as data; `methods` the table of methods by name; `stages`
@@ -126,7 +126,7 @@ pub enum OdeError {
     /// A Runge-Kutta stepper was given the Taylor method.
     #[error("the taylor method has no Butcher tableau: integrate it with ode::integrate or a TaylorStepper")]
     NotRungeKutta,
-    /// A stop signal arrived (see [`crate::ode::interrupt`]).
+    /// A stop signal arrived (see the `interrupt` module).
     #[error("{by} at t = {time}")]
     Interrupted {
         /// The time reached.

@@ -1,4 +1,4 @@
-//! A problem ready to integrate: what [`crate::resolve`] makes of a scene and
+//! A problem ready to integrate: what [`crate::resolve`](mod@crate::resolve) makes of a scene and
 //! [`crate::solve`] integrates, with the model's [`ModelEntry`] (found once in the registry) and
 //! what solving gives back ([`Trajectory`], [`SolveError`], rows streamed to a [`RowStream`]).
 //! Every number is in model units (radians for angles); units return only when results are

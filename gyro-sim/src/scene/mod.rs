@@ -63,7 +63,7 @@ pub struct Scene {
     pub outputs: Vec<(String, std::ops::Range<usize>)>,
     /// The integrator and its settings (`[integrator]`).
     pub integrator: Integrator,
-    /// Events to find (`[[events]]`, see [`EventDecl`]).
+    /// Events to find (`[[events]]`, each an `EventDecl`).
     pub events: Vec<EventDecl>,
     /// Values a user may move (`[[controls]]`, the sliders of `gyro-sim serve`).
     pub controls: Vec<Control>,

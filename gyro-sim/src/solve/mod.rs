@@ -51,7 +51,7 @@ pub fn solve_model<M: GeneratedModel>(
 }
 
 /// Integrates `problem` with `full_sys` (a model with its parameters already bound; rows to
-/// `rows_to` as in [`solve`]).
+/// `rows_to` as in `solve`).
 pub fn solve_bound<B: BoundModel>(
     problem: &Problem,
     full_sys: &B,

@@ -46,7 +46,7 @@ pub fn content_hash(bytes: &[u8]) -> String {
 }
 
 /// The key under which a model file's compiled model is registered: the hash of its
-/// equations, [`equations_text`].
+/// equations, `equations_text`.
 pub fn registry_key(source: &str) -> String {
     format!("file:{}", content_hash(equations_text(source).as_bytes()))
 }

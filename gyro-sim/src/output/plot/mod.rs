@@ -1,4 +1,4 @@
-//! Plots of a run, PNG: in comes a [`Table`] in display units; out go the figures it has data
+//! Plots of a run, PNG: in comes a [`super::Table`] in display units; out go the figures it has data
 //! for: the time series like the paper's Figures 3-5 (`series`), the EJS elevation window
 //! (`elevation`) and the axle tip's trace seen from above (`trace`). Each is written atomically.
 

@@ -1,5 +1,5 @@
 //! Failures named: in comes a bound model at the state where an integration starts, where a
-//! failed one went wrong (found by [`probe`]) or last succeeded; out goes what is wrong there (motion constraints that lose rank, a singular or
+//! failed one went wrong (found by [`probe`](fn@probe)) or last succeeded; out goes what is wrong there (motion constraints that lose rank, a singular or
 //! indefinite mass matrix, rates that are not finite or overflow, a singularity approached),
 //! with the configuration and the operation that made it, or nothing.
 //!

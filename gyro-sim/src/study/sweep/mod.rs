@@ -5,7 +5,7 @@
 //! so that the rows depend on the inputs alone. Members run in parallel; one member's failure is
 //! its row, never the end. A folder holds one sweep: bound to its plan ([`identity`]), locked
 //! while it runs ([`lock`]); members are made from their index, finished ones streamed to a
-//! journal and from it, by an external sort, into `sweep.csv` ([`finish`]), so memory does not
+//! journal and from it, by an external sort, into `sweep.csv` ([`finish`](mod@finish)), so memory does not
 //! grow with the members beyond one bit each (which are done).
 
 mod finish;
