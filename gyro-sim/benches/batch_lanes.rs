@@ -12,10 +12,10 @@ use std::hint::black_box;
 use std::ops::ControlFlow;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use gyro_sim::batch::final_states;
-use gyro_sim::models::gimbal_gyroscope as gimbal;
-use gyro_sim::ode::{integrate, tableau, Method, Tolerances};
-use gyro_sim::solve::ModelSystem;
+use gyro_sim::final_states;
+use gyro_sim::gimbal_gyroscope as gimbal;
+use gyro_sim::ModelSystem;
+use gyro_sim::{integrate, tableau, Method, Tolerances};
 use kane_model::runtime::GeneratedModel;
 
 const MEMBERS: usize = 256;

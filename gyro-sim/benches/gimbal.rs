@@ -10,9 +10,9 @@ use std::hint::black_box;
 use std::ops::ControlFlow;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use gyro_sim::models::gimbal_gyroscope as gimbal;
-use gyro_sim::ode::{integrate, tableau, Method, Tolerances};
-use gyro_sim::solve::{ModelSystem, Reduced};
+use gyro_sim::gimbal_gyroscope as gimbal;
+use gyro_sim::{integrate, tableau, Method, Tolerances};
+use gyro_sim::{ModelSystem, Reduced};
 use kane_model::runtime::GeneratedModel;
 
 fn trial3() -> (ModelSystem<gimbal::Model>, Vec<f64>, Vec<f64>) {
@@ -109,7 +109,7 @@ impl HandGimbal {
 /// copying, to see whether a smaller state pays.
 struct HandGimbalReduced(HandGimbal);
 
-impl gyro_sim::ode::System for HandGimbalReduced {
+impl gyro_sim::System for HandGimbalReduced {
     fn dim(&self) -> usize {
         4
     }
@@ -122,7 +122,7 @@ impl gyro_sim::ode::System for HandGimbalReduced {
 }
 
 /// A Trial 3 run of a system integrating (q2, u1, u2, u3) (states `keep` of the full one).
-fn run_reduced<S: gyro_sim::ode::System>(sys: &S, tol: f64, reference: &[Vec<f64>]) -> (usize, f64) {
+fn run_reduced<S: gyro_sim::System>(sys: &S, tol: f64, reference: &[Vec<f64>]) -> (usize, f64) {
     let (_, y0, times) = trial3();
     let keep = [1, 3, 4, 5];
     let y_red: Vec<f64> = keep.iter().map(|k| y0[*k]).collect();

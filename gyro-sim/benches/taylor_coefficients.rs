@@ -6,7 +6,7 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use gyro_sim::models::{gimbal_gyroscope as gimbal, heavy_top as top};
+use gyro_sim::{gimbal_gyroscope as gimbal, heavy_top as top};
 use kane_model::runtime::TAYLOR_UNROLLED_ORDERS;
 
 /// Benches `$m::taylor_derived` at `$y`, every straight-line order, and the loop at 16.

@@ -11,8 +11,8 @@
 
 use std::path::Path;
 
-use gyro_sim::run::run;
-use gyro_sim::scene::Scene;
+use gyro_sim::run;
+use gyro_sim::Scene;
 
 const I1: f64 = 151.0 / 125.0;
 const I3: f64 = 0.4;
@@ -55,7 +55,7 @@ fn main() {
         let mut scene = Scene::load(Path::new(&path)).unwrap_or_else(|e| panic!("{e}"));
         scene.t_final = 1000.0;
         scene.output_step = 0.1;
-        scene.integrator.method = "dop853".into();
+        scene.integrator.method = gyro_sim::by_name("dop853").expect("a method scenes can name");
         scene.integrator.rtol = 1e-12;
         scene.integrator.atol = 1e-12;
         scene.integrator.accuracy = None;

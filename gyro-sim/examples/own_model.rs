@@ -5,9 +5,9 @@
 //!
 //! `cargo run --release -p gyro-sim --example own_model`
 
-use gyro_sim::registry::Registry;
-use gyro_sim::run::run_with;
-use gyro_sim::scene::Scene;
+use gyro_sim::run_with;
+use gyro_sim::Registry;
+use gyro_sim::Scene;
 
 /// The variant gimbal (rotor offset, gravity, flipped axis), compiled at build time.
 mod variant {

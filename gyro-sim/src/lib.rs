@@ -1,36 +1,68 @@
 //! gyro-sim: integrate models derived with kane-model, from scene files to CSV and plots.
 //!
-//! The stages, each a module with a narrow interface:
-//! [`scene`] (TOML text -> [`scene::Scene`]) -> [`resolve`] (scene + [`registry`] ->
-//! [`problem::Problem`] in model units) -> [`solve`] (problem -> [`trajectory::Trajectory`],
-//! stepping with [`ode`]) -> [`output`] (trajectory -> CSV and PNG in display units).
-//! [`run`] chains them; [`models`] holds the models compiled into the simulator.
+//! A run goes one way through the stages:
+//!
+//! ```text
+//! scene text --scene--> Scene --resolve (+ models::Registry)--> Problem (carries its ModelEntry)
+//!   --solve (ode steppers)--> Trajectory --output--> CSV, PNG, events.csv, view.html
+//! ```
+//!
+//! Each folder is a floor. Floors, lowest first; each floor imports only from itself and the
+//! floors below it, and no two files import each other, directly or around a circle:
+//!
+//! 1. `ode/`: in come a system `y' = f(t, y)`, a start and a method; out go the states at
+//!    output times (or step by step) and the cost, or an `OdeError`. Also the unit-norm
+//!    projection of Euler parameters and the stop signals long loops read.
+//! 2. `scene/`: in comes a scene file's TOML text; out goes a checked `Scene` (the model's name,
+//!    values with their units, times, the integrator with its method found by name, the
+//!    `[[events]]`, `[[controls]]` and `[view]` tables) or a `SceneError` at a line and column.
+//! 3. `problem/`: what the stages hand each other: the `Problem` (model units; it carries the
+//!    model's `ModelEntry`, found once in the registry), and what solving gives back: the
+//!    `Trajectory`, a `SolveError`, rows streamed to a `RowStream`.
+//! 4. `output/`: in comes a `Trajectory`; out go the CSV, the figures, `events.csv` and the
+//!    3-D view in display units, put in place as one set (or the CSV streamed as rows come).
+//! 5. `solve/`: in come a `Problem` and where its rows go; out goes a `Trajectory`, or a
+//!    `SolveError` explained where the run went wrong (`diagnose`), with an asked accuracy
+//!    reached by refinement (`refine`) and events watched on the dense output (`events`).
+//! 6. `models/`: in come generated models (built in, or a user's crate's) and model files; out
+//!    goes a `Registry` of `ModelEntry`s, each with the solver instantiated for it, on the
+//!    compiled engine (`compiled`: a cached binary for a model file) or the instant one.
+//! 7. `resolve/`: in come a `Scene` and a `Registry`; out goes a `Problem` (units converted, a
+//!    top's `[axle]` made Euler parameters and rates, events bound to the model, values checked
+//!    for plausibility) or a `SceneError`.
+//! 8. `run.rs`: in comes a scene; out go its trajectory and files (resolve, solve, output).
+//! 9. `study/`: many runs: parameter sweeps (`sweep`), members in lock step (`batch`), work
+//!    against precision (`work_precision`).
+//! 10. `serve/`: a scene run in a browser page, its controls as sliders.
+//! 11. `cli/`: the `gyro-sim` command.
+//!
+//! Every module is private; what the binary, the examples, the benches, the tests and a compiled
+//! model's generated driver use is re-exported here.
 #![warn(missing_docs)]
 
-pub mod batch;
-pub mod cli;
-pub mod compiled;
-mod diagnose;
-pub mod events;
-pub mod initial;
-pub mod instant;
-pub mod interrupt;
-pub mod model_file;
-pub mod models;
-pub mod ode;
-pub mod output;
-mod plausible;
-pub mod problem;
-mod refine;
-pub mod registry;
-pub mod resolve;
-pub mod rows;
-pub mod run;
-pub mod scene;
-pub mod serve;
-pub mod solve;
-pub mod specified_table;
-pub mod sweep;
-pub mod trajectory;
-pub mod unit_norm;
-pub mod work_precision;
+mod cli;
+mod models;
+mod ode;
+mod output;
+mod problem;
+mod resolve;
+mod run;
+mod scene;
+mod serve;
+mod solve;
+mod study;
+
+// The front door: everything outside the crate names these, and nothing else.
+pub use cli::{main_with, CompiledModel};
+pub use models::{content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, ModelFile, Registry};
+pub use ode::{
+    by_name, integrate, integrate_limited, tableau, DenseOutput, ErkStepper, Method, OdeError, Stats,
+    StopReason, System, Tolerances, METHODS,
+};
+pub use output::{write, write_view};
+pub use problem::{Column, Engine, ModelEntry, Pick, Problem, Trajectory, MAX_KEPT_ROWS};
+pub use resolve::{resolve, sleeping_threshold, steady_precession};
+pub use run::{run, run_with, RunSummary};
+pub use scene::{ArrowView, BodyView, Orientation, Scene, Shape, TraceView, ViewSpec};
+pub use solve::{solve_bound, BoundModel, ModelSystem, Reduced};
+pub use study::batch::final_states;

@@ -1,5 +1,5 @@
-//! The `gyro-sim` command (see [`gyro_sim::cli`]).
+//! The `gyro-sim` command (see [`gyro_sim::main_with`]).
 
 fn main() -> std::process::ExitCode {
-    gyro_sim::cli::main_with(gyro_sim::registry::Registry::builtin(), None)
+    gyro_sim::main_with(gyro_sim::Registry::builtin(), None)
 }

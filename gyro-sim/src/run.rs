@@ -5,12 +5,12 @@ use std::path::Path;
 
 use thiserror::Error;
 
+use crate::models::Registry;
 use crate::output::{self, WriteError, Written};
-use crate::registry::Registry;
+use crate::problem::{SolveError, Trajectory};
 use crate::resolve::resolve;
 use crate::scene::{Scene, SceneError};
-use crate::solve::{solve, SolveError};
-use crate::trajectory::Trajectory;
+use crate::solve::solve;
 
 /// Why a run failed.
 #[derive(Debug, Error)]
@@ -30,7 +30,7 @@ pub enum RunError {
         /// The scene file.
         scene: std::path::PathBuf,
         /// What is wrong.
-        error: crate::output::ViewError,
+        error: crate::scene::ViewError,
     },
     /// The integration stopped after some rows were written: they are kept, marked partial.
     #[error("{error}\n  rows computed before it: {rows}, in {} (partial; the folder's earlier results are unchanged)", path.display())]
@@ -60,24 +60,23 @@ pub fn run(scene: &Scene, out_dir: Option<&Path>) -> Result<RunSummary, RunError
 
 /// Runs a scene with the models of `registry`. With `out_dir` (and no accuracy asked) rows are
 /// written as they are produced and the trajectory keeps a bounded, thinned set of them (see
-/// [`crate::rows`]); a run that fails after some rows keeps them as `trajectory.partial.csv`.
+/// `RowStream`); a run that fails after some rows keeps them as `trajectory.partial.csv`.
 pub fn run_with(scene: &Scene, registry: &Registry, out_dir: Option<&Path>) -> Result<RunSummary, RunError> {
     if let Some(view) = &scene.view {
         view.check().map_err(|error| RunError::View { scene: scene.path.clone(), error })?;
     }
-    let mut problem = resolve(scene, registry)?;
+    let problem = resolve(scene, registry)?;
     let Some(dir) = out_dir else {
-        return Ok(RunSummary { trajectory: solve(&problem, registry)?, written: None });
+        return Ok(RunSummary { trajectory: solve(&problem, None)?, written: None });
     };
     if problem.accuracy.is_some() {
         // Refinement compares whole runs in memory; the run chosen is written at the end.
-        let trajectory = solve(&problem, registry)?;
+        let trajectory = solve(&problem, None)?;
         let written = output::write_set(&trajectory, scene.view.as_ref(), dir)?;
         return Ok(RunSummary { trajectory, written: Some(written) });
     }
     let set = output::StreamedSet::begin(dir, &crate::solve::columns(&problem))?;
-    problem.rows_to = Some(set.stream());
-    match solve(&problem, registry) {
+    match solve(&problem, Some(&set.stream())) {
         Ok(trajectory) => {
             let written = set.finish(&trajectory, scene.view.as_ref())?;
             Ok(RunSummary { trajectory, written: Some(written) })

@@ -3,10 +3,10 @@
 
 use std::ops::ControlFlow;
 
-use gyro_sim::batch::final_states;
-use gyro_sim::models::gimbal_gyroscope as gimbal;
-use gyro_sim::ode::{integrate, tableau, Method, OdeError, Tolerances};
-use gyro_sim::solve::ModelSystem;
+use gyro_sim::final_states;
+use gyro_sim::gimbal_gyroscope as gimbal;
+use gyro_sim::ModelSystem;
+use gyro_sim::{integrate, tableau, Method, OdeError, Tolerances};
 use kane_model::runtime::GeneratedModel;
 
 fn members() -> Vec<(gimbal::Params, Vec<f64>)> {

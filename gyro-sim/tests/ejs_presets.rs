@@ -1,13 +1,13 @@
-//! The EJS presets (`scenes/ejs/`) run through `gyro_sim::run::run`: the top's cusp, loops,
+//! The EJS presets (`scenes/ejs/`) run through `gyro_sim::run`: the top's cusp, loops,
 //! waves, steady and nospin and the free body's tumble and stable rotation match independent
 //! closed-form references (`tests/data/ejs/`, see PROVENANCE.md there) within the accuracy each
 //! scene asks; the nospin top falls through the bottom; the fast top conserves what it should;
 //! the sleeping top stays up and the slow one falls; Feynman's plate wobbles twice as fast as it
 //! spins. Energy and angular momentum are computed here from the states, not from model outputs.
 
-use gyro_sim::initial::{sleeping_threshold, steady_precession};
-use gyro_sim::run::run;
-use gyro_sim::scene::Scene;
+use gyro_sim::run;
+use gyro_sim::Scene;
+use gyro_sim::{sleeping_threshold, steady_precession};
 
 /// The top's moments about the support (M = g = R = d = 1): transverse 151/125, axial 2/5.
 const I1: f64 = 151.0 / 125.0;

@@ -12,9 +12,9 @@
 //! copies of the project's shared closed-form references (see PROVENANCE.md there), computed in
 //! 40-digit arithmetic.
 
-use gyro_sim::run::run;
-use gyro_sim::scene::Scene;
-use gyro_sim::trajectory::Trajectory;
+use gyro_sim::run;
+use gyro_sim::Scene;
+use gyro_sim::Trajectory;
 
 /// The closed form's numbers for `case` (`cusp`, `loops`).
 struct Closed {

@@ -1,7 +1,7 @@
 //! The generated `rhs` and `outputs` equal the interpreted equations of the same model file at
 //! 1000 random states, to 1e-13 relative.
 
-use gyro_sim::models::gimbal_gyroscope as gimbal;
+use gyro_sim::gimbal_gyroscope as gimbal;
 use kane_model::runtime::GeneratedModel;
 use kane_tests::{interpreted_rhs, value_of, worst_generated_difference, Sampling};
 use rand::{Rng, SeedableRng};

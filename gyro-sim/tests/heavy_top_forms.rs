@@ -3,8 +3,8 @@
 //! (scene -> resolve -> solve) and give the same trajectory; the API form's typed outputs
 //! (energies, angular momentum, quaternion) hold their physics.
 
-use gyro_sim::run::run;
-use gyro_sim::scene::Scene;
+use gyro_sim::run;
+use gyro_sim::Scene;
 
 const TIMES: &str =
     "t_final = 10.0\noutput_step = 0.1\n[integrator]\nmethod = \"dop853\"\nrtol = 1e-12\natol = 1e-12\n";

@@ -4,7 +4,7 @@
 
 use std::ops::ControlFlow;
 
-use gyro_sim::ode::{
+use gyro_sim::{
     by_name, integrate, integrate_limited, tableau, ErkStepper, Method, OdeError, StopReason, System,
     Tolerances,
 };
@@ -167,7 +167,7 @@ fn dop853_dense_output_converges_with_its_order() {
 }
 
 /// Output times through `integrate`: the values and the cost, stopping after `limit` outputs.
-fn through_integrate(method: Method, times: &[f64], limit: usize) -> (Vec<[f64; 2]>, gyro_sim::ode::Stats) {
+fn through_integrate(method: Method, times: &[f64], limit: usize) -> (Vec<[f64; 2]>, gyro_sim::Stats) {
     let mut rows = Vec::new();
     let stats = integrate(&Oscillator, 0.0, &[0.0, 1.0], times, method, |_, y| {
         rows.push([y[0], y[1]]);
@@ -183,7 +183,7 @@ fn through_integrate(method: Method, times: &[f64], limit: usize) -> (Vec<[f64; 
 
 /// The same by hand: step to the last time, interpolating the times inside each step, until
 /// `limit` outputs.
-fn through_stepper(method: Method, times: &[f64], limit: usize) -> (Vec<[f64; 2]>, gyro_sim::ode::Stats) {
+fn through_stepper(method: Method, times: &[f64], limit: usize) -> (Vec<[f64; 2]>, gyro_sim::Stats) {
     let mut stepper = ErkStepper::new(&Oscillator, 0.0, &[0.0, 1.0], method).unwrap();
     stepper.set_stop_time(*times.last().unwrap());
     let mut rows = Vec::new();

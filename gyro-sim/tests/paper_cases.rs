@@ -1,8 +1,8 @@
 //! The paper's cases: the script's INPUT case against an independent reference trajectory,
 //! Trial 1 against its closed form, and the exact final time.
 
-use gyro_sim::run::run;
-use gyro_sim::scene::Scene;
+use gyro_sim::run;
+use gyro_sim::Scene;
 
 fn scene(path: &str) -> Scene {
     Scene::load(std::path::Path::new(&format!("{}/{path}", env!("CARGO_MANIFEST_DIR")))).unwrap()
@@ -79,7 +79,7 @@ fn a_run_writes_csv_and_plot_and_no_partial_files() {
 }
 
 /// Largest error of a run against a reference CSV (radians), relative to max(1, |value|).
-fn error_of(summary: &gyro_sim::run::RunSummary, reference: &str) -> f64 {
+fn error_of(summary: &gyro_sim::RunSummary, reference: &str) -> f64 {
     kane_tests::reference_error(&summary.trajectory.rows, reference)
 }
 

@@ -5,7 +5,7 @@
 use std::path::Path;
 use std::process::Command;
 
-use gyro_sim::compiled::content_hash as fnv1a;
+use gyro_sim::content_hash as fnv1a;
 
 /// Runs a scene with the command; returns its statistics line and the CSV's hash.
 fn run_scene(scene: &str) -> String {
@@ -37,7 +37,7 @@ fn paper_cases_are_pinned() {
 }
 
 mod problems {
-    use gyro_sim::ode::System;
+    use gyro_sim::System;
 
     /// y1' = y2, y2' = -y1.
     pub struct Oscillator;
@@ -67,7 +67,7 @@ mod problems {
 
 #[test]
 fn integrator_statistics_are_pinned() {
-    use gyro_sim::ode::{integrate, tableau, Method, System, Tolerances};
+    use gyro_sim::{integrate, tableau, Method, System, Tolerances};
     let times: Vec<f64> = (0..=100).map(|i| f64::from(i) * 0.1).collect();
     let mut lines = Vec::new();
     let problems: [(&str, &dyn System, &[f64]); 2] =

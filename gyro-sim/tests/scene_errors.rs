@@ -1,7 +1,7 @@
 //! Malformed scenes are rejected with the file, the line and the fix.
 
-use gyro_sim::run::run;
-use gyro_sim::scene::Scene;
+use gyro_sim::run;
+use gyro_sim::Scene;
 
 fn error(text: &str) -> String {
     match Scene::parse("bad.toml", text) {
@@ -168,12 +168,12 @@ fn max_steps_is_a_scene_key_and_reaching_it_says_how_to_go_on() {
 /// gimbal says `UNITS Y = N*M`, so `"10 N*m"`, `"10 n * m"` and `"10 N m"` are all 10 N*M.
 #[test]
 fn units_compare_regardless_of_case_and_spacing() {
-    let registry = gyro_sim::registry::Registry::builtin();
+    let registry = gyro_sim::Registry::builtin();
     for unit in ["N*m", "n * m", "N m", "N*M"] {
         let text = format!("model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[parameters]\nY = \"10 {unit}\"\n");
         let scene = Scene::parse("units.toml", &text).unwrap();
-        let problem = gyro_sim::resolve::resolve(&scene, &registry).unwrap_or_else(|e| panic!("{unit}: {e}"));
-        let y = problem.model.param_names.iter().position(|p| *p == "Y").unwrap();
+        let problem = gyro_sim::resolve(&scene, &registry).unwrap_or_else(|e| panic!("{unit}: {e}"));
+        let y = problem.model.info.param_names.iter().position(|p| *p == "Y").unwrap();
         assert_eq!(problem.params[y], 10.0, "{unit}");
     }
     let e = error(

@@ -5,10 +5,10 @@
 
 use std::path::{Path, PathBuf};
 
-use gyro_sim::model_file::ModelFile;
-use gyro_sim::run::run;
-use gyro_sim::scene::Scene;
-use gyro_sim::trajectory::Trajectory;
+use gyro_sim::run;
+use gyro_sim::ModelFile;
+use gyro_sim::Scene;
+use gyro_sim::Trajectory;
 
 fn models_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../kane-model/models")

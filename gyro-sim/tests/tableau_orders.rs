@@ -4,8 +4,8 @@
 //! The trees are generated here; their counts (1, 1, 2, 4, 9, 20, 48, 115, 286, 719) are checked
 //! against the known sequence.
 
-use gyro_sim::ode::tableau::{self, Tableau};
-use gyro_sim::ode::{DenseOutput, METHODS};
+use gyro_sim::tableau::{self, Tableau};
+use gyro_sim::{DenseOutput, METHODS};
 
 /// A rooted tree: its subtrees, sorted, so that equal trees compare equal.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]

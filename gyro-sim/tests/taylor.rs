@@ -6,11 +6,11 @@
 
 use std::ops::ControlFlow;
 
-use gyro_sim::models::{gimbal_gyroscope as gimbal, heavy_top as top};
-use gyro_sim::ode::{integrate, tableau::DOP853, Method, Tolerances};
-use gyro_sim::run::run;
-use gyro_sim::scene::Scene;
-use gyro_sim::solve::ModelSystem;
+use gyro_sim::run;
+use gyro_sim::ModelSystem;
+use gyro_sim::Scene;
+use gyro_sim::{gimbal_gyroscope as gimbal, heavy_top as top};
+use gyro_sim::{integrate, tableau::DOP853, Method, Tolerances};
 use kane_model::dual::Dual;
 use kane_model::runtime::GeneratedModel;
 
@@ -178,7 +178,7 @@ fn trial_three_by_taylor_equals_the_dop853_run() {
     let scene = Scene::load(std::path::Path::new(&path)).unwrap();
     let reference = run(&scene, None).unwrap();
     let mut taylor = scene.clone();
-    taylor.integrator.method = "taylor".into();
+    taylor.integrator.method = gyro_sim::by_name("taylor").unwrap();
     let summary = run(&taylor, None).unwrap();
     let asked = scene.integrator.accuracy.unwrap();
     let (a, b) = (&summary.trajectory.rows, &reference.trajectory.rows);

@@ -2,8 +2,8 @@
 //! integrated norm drifts past the tolerance and is projected back (counted in the summary),
 //! every written set has unit norm, and the energy stays within the loose tolerance's reach.
 
-use gyro_sim::run::run;
-use gyro_sim::scene::Scene;
+use gyro_sim::run;
+use gyro_sim::Scene;
 
 fn cusp(rtol: f64, t_final: f64) -> Scene {
     let path = format!("{}/scenes/ejs/cusp.toml", env!("CARGO_MANIFEST_DIR"));

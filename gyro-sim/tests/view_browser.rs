@@ -9,9 +9,9 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use gyro_sim::ode::Stats;
-use gyro_sim::output::{write_view, ArrowView, BodyView, Orientation, Shape, TraceView, ViewSpec};
-use gyro_sim::trajectory::{Column, Trajectory};
+use gyro_sim::Stats;
+use gyro_sim::{write_view, ArrowView, BodyView, Orientation, Shape, TraceView, ViewSpec};
+use gyro_sim::{Column, Trajectory};
 
 /// Turn rate of the arm about z, rad/s: half a turn per second.
 const RATE: f64 = PI;

@@ -191,12 +191,12 @@ fn zero_angular_momentum_falls_like_a_pendulum() {
 fn million_second_run_with_coarse_output_is_streamed() {
     let dir = folder("million_seconds");
     let scene = "model = \"free_body\"\nt_final = 1e6\noutput_step = 10.0\n[integrator]\nmethod = \"dopri5\"\nrtol = 1e-6\natol = 1e-9\n[parameters]\nI1 = 1.0\nI2 = 2.0\nI3 = 3.0\n[initial]\nE4 = 1.0\nE1 = 0.0\nE2 = 0.0\nE3 = 0.0\nW1 = \"0.001 rad/s\"\nW2 = \"0.0001 rad/s\"\nW3 = \"0.0001 rad/s\"\n";
-    let scene = gyro_sim::scene::Scene::parse(&dir.join("free.toml").display().to_string(), scene).unwrap();
-    let summary = gyro_sim::run::run(&scene, Some(&dir.join("out"))).unwrap();
+    let scene = gyro_sim::Scene::parse(&dir.join("free.toml").display().to_string(), scene).unwrap();
+    let summary = gyro_sim::run(&scene, Some(&dir.join("out"))).unwrap();
     let written = summary.written.unwrap();
     assert_eq!(written.rows, 100_001);
     // Memory holds a bounded, thinned set; every row went to the file.
-    assert!(summary.trajectory.rows.len() <= gyro_sim::rows::MAX_KEPT_ROWS + 1);
+    assert!(summary.trajectory.rows.len() <= gyro_sim::MAX_KEPT_ROWS + 1);
     assert_eq!(finite_csv(&written.csv).len(), 100_001);
 }
 
@@ -554,7 +554,7 @@ static BLOWUP: kane_model::runtime::ModelInfo = kane_model::runtime::ModelInfo {
     taylor_straight_line: &[],
 };
 
-impl gyro_sim::ode::System for Blowup {
+impl gyro_sim::System for Blowup {
     fn dim(&self) -> usize {
         2
     }
@@ -564,7 +564,7 @@ impl gyro_sim::ode::System for Blowup {
     }
 }
 
-impl gyro_sim::solve::BoundModel for Blowup {
+impl gyro_sim::BoundModel for Blowup {
     fn info(&self) -> &'static kane_model::runtime::ModelInfo {
         &BLOWUP
     }
@@ -574,11 +574,21 @@ impl gyro_sim::solve::BoundModel for Blowup {
 
 #[test]
 fn a_rate_turning_nan_in_a_fixed_step_run_is_named_with_the_time_and_the_state_where_it_did() {
-    use gyro_sim::ode::{tableau::RK4, Method};
-    let problem = gyro_sim::problem::Problem {
+    use gyro_sim::{tableau::RK4, Method};
+    // The entry a registry would hold for it; `solve_bound` below is what its `solve` calls.
+    let model = gyro_sim::ModelEntry {
+        info: &BLOWUP,
+        initial_state: std::sync::Arc::new(|| vec![0.0, 0.0]),
+        default_params: std::sync::Arc::new(Vec::new),
+        solve: std::sync::Arc::new(|problem, rows_to| gyro_sim::solve_bound(problem, &Blowup, rows_to)),
+        engine: gyro_sim::Engine::Compiled,
+        program: None,
+        source: None,
+        mechanics: None,
+    };
+    let problem = gyro_sim::Problem {
         title: "blowup".into(),
-        model: &BLOWUP,
-        model_key: "blowup".into(),
+        model,
         params: Vec::new(),
         initial: vec![0.0, 0.0],
         times: (0..=20).map(|i| 0.1 * i as f64).collect(),
@@ -586,14 +596,12 @@ fn a_rate_turning_nan_in_a_fixed_step_run_is_named_with_the_time_and_the_state_w
         method: Method::Fixed(&RK4, 0.01),
         max_steps: 1_000_000,
         accuracy: None,
-        picks: vec![gyro_sim::problem::Pick::State(0), gyro_sim::problem::Pick::State(1)],
+        picks: vec![gyro_sim::Pick::State(0), gyro_sim::Pick::State(1)],
         written_picks: 2,
         unit_norms: Vec::new(),
-        rows_to: None,
         events: Vec::new(),
-        program: None,
     };
-    let error = gyro_sim::solve::solve_bound(&problem, &Blowup).unwrap_err().to_string();
+    let error = gyro_sim::solve_bound(&problem, &Blowup, None).unwrap_err().to_string();
     // Found again from the last good output (t = 1): the first stage past t = 1 of the step.
     assert!(error.contains("the rate of U is NaN at t = 1.005"), "{error}");
     assert!(error.contains("at the state Q = 0.40"), "{error}");
@@ -606,11 +614,11 @@ fn rows_streamed_to_disk_are_the_bytes_written_at_once() {
         let text = std::fs::read_to_string(root.join(preset)).unwrap();
         // Without `accuracy` a run with a folder streams its rows (refinement keeps them).
         let text: String = text.lines().filter(|l| !l.starts_with("accuracy")).collect::<Vec<_>>().join("\n");
-        let scene = gyro_sim::scene::Scene::parse(preset, &text).unwrap();
+        let scene = gyro_sim::Scene::parse(preset, &text).unwrap();
         let dir = folder(&format!("streamed_{}", preset.replace('/', "_")));
-        let streamed = gyro_sim::run::run(&scene, Some(&dir.join("streamed"))).unwrap();
-        let at_once = gyro_sim::run::run(&scene, None).unwrap();
-        gyro_sim::output::write(&at_once.trajectory, &dir.join("at_once")).unwrap();
+        let streamed = gyro_sim::run(&scene, Some(&dir.join("streamed"))).unwrap();
+        let at_once = gyro_sim::run(&scene, None).unwrap();
+        gyro_sim::write(&at_once.trajectory, &dir.join("at_once")).unwrap();
         let read = |d: &str| std::fs::read(dir.join(d).join("trajectory.csv")).unwrap();
         assert!(read("streamed") == read("at_once"), "{preset}: the streamed CSV differs");
         assert_eq!(streamed.written.unwrap().rows, at_once.trajectory.rows.len());

@@ -7,7 +7,7 @@
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
 
-use gyro_sim::scene::Scene;
+use gyro_sim::Scene;
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
 
@@ -118,7 +118,7 @@ enum Outcome {
 fn try_scene(name: &str, text: &str, out: &Path) -> Outcome {
     let result = catch_unwind(AssertUnwindSafe(|| {
         let scene = Scene::parse(name, text).map_err(|e| e.to_string())?;
-        gyro_sim::run::run(&scene, Some(out)).map_err(|e| e.to_string())
+        gyro_sim::run(&scene, Some(out)).map_err(|e| e.to_string())
     }));
     match result {
         Err(p) => Outcome::Panicked(

@@ -3,12 +3,13 @@
 //! `model = "file.al"`) runs on the compiled path (a cached binary with the model compiled in,
 //! run in this one's place) or on the instant path (the lowered program evaluated directly).
 
-mod bench;
+mod bench_command;
+mod file_model;
 mod model_scene;
 mod origins;
-mod serve;
+mod serve_command;
 mod summary;
-mod sweep;
+mod sweep_command;
 mod sweep_plot;
 
 use std::path::{Path, PathBuf};
@@ -19,8 +20,10 @@ use clap::{Parser, Subcommand, ValueEnum};
 pub use model_scene::{parse_set, scene_text, ModelRunArgs};
 pub use summary::print_summary;
 
-use crate::model_file::{FileRun, ModelFile};
-use crate::registry::{ModelEntry, Registry};
+use file_model::model_file_of;
+
+use crate::models::{FileRun, ModelFile, Registry};
+use crate::problem::ModelEntry;
 use crate::scene::Scene;
 
 /// Simulate models derived with Kane's method.
@@ -88,8 +91,8 @@ struct SweepCli {
     /// The scene file (TOML).
     scene: PathBuf,
     /// NAME=START:STOP[:N] [UNIT], repeated: a parameter or initial state and its range.
-    #[arg(long, required = true, value_parser = crate::sweep::parse_range)]
-    vary: Vec<crate::sweep::Range>,
+    #[arg(long, required = true, value_parser = crate::study::sweep::parse_range)]
+    vary: Vec<crate::study::sweep::Range>,
     /// Latin-hypercube samples over the ranges (without it, a grid of N points per range).
     #[arg(long)]
     samples: Option<usize>,
@@ -163,7 +166,7 @@ enum EngineChoice {
 /// A model file compiled into this binary (the compiled path's cached binaries).
 #[derive(Clone)]
 pub struct CompiledModel {
-    /// Its registry key ([`crate::compiled::registry_key`] of the file's equations).
+    /// Its registry key ([`crate::models::registry_key`] of the file's equations).
     pub key: String,
     /// The compiled model.
     pub entry: ModelEntry,
@@ -174,14 +177,14 @@ pub struct CompiledModel {
 /// Runs the command line with `registry`'s models (and `compiled`, when this binary is a
 /// model file's compiled path).
 pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCode {
-    if let Err(e) = crate::interrupt::listen() {
+    if let Err(e) = crate::ode::interrupt::listen() {
         eprintln!("warning: stop signals cannot be caught ({e}): Ctrl-C ends a run without keeping its rows");
     }
     let result = match Cli::parse().command {
         Command::Run(args) => run_command(&args, registry, compiled),
-        Command::Bench(args) => bench::bench_command(&args.scene, args.repeats, &args.out, &registry),
+        Command::Bench(args) => bench_command::bench_command(&args.scene, args.repeats, &args.out, &registry),
         Command::Sweep(a) => {
-            let args = sweep::SweepArgs {
+            let args = sweep_command::SweepArgs {
                 scene: &a.scene,
                 vary: &a.vary,
                 samples: a.samples,
@@ -190,10 +193,10 @@ pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCod
                 new: a.new,
                 out: &a.out,
             };
-            sweep::sweep_command(&args, &registry)
+            sweep_command::sweep_command(&args, &registry)
         }
-        Command::Serve { scene, port } => serve::serve_command(&scene, port, registry),
-        Command::SweepMerge { out, shards } => sweep::merge_command(&out, &shards),
+        Command::Serve { scene, port } => serve_command::serve_command(&scene, port, registry),
+        Command::SweepMerge { out, shards } => sweep_command::merge_command(&out, &shards),
         Command::SweepPlot { dir, metric, over, out } => {
             let args =
                 sweep_plot::SweepPlotArgs { dir: &dir, metric: &metric, over: &over, out: out.as_deref() };
@@ -204,7 +207,7 @@ pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCod
         Ok(code) => code,
         Err(message) => {
             eprintln!("{}", message.trim_end());
-            crate::interrupt::requested().map_or(ExitCode::FAILURE, |by| ExitCode::from(by.exit_code()))
+            crate::ode::interrupt::requested().map_or(ExitCode::FAILURE, |by| ExitCode::from(by.exit_code()))
         }
     }
 }
@@ -236,19 +239,19 @@ fn run_command(
         return finish(&scene, &registry, args);
     };
     let specified = scene.as_ref().map_or(&[][..], |s| &s.specified[..]);
-    let source = crate::model_file::source_with(&file_path, specified).map_err(|e| e.to_string())?;
-    let key = crate::compiled::registry_key(&source);
+    let source = crate::models::source_with(&file_path, specified).map_err(|e| e.to_string())?;
+    let key = crate::models::registry_key(&source);
     let (entry, run, file) = match compiled.filter(|c| c.key == key) {
         Some(c) => {
             // The binary's equations; INPUT values (perhaps edited since it was built) from the file.
             let file = ModelFile::from_source(&file_path, source).map_err(|e| e.to_string())?;
-            let current = crate::instant::file_entry(&file);
+            let current = crate::models::file_entry(&file);
             (with_values_of(c.entry, &current), file.run.clone(), None)
         }
         None => {
             let file = ModelFile::from_source(&file_path, source).map_err(|e| e.to_string())?;
             eprint!("{}", file.warnings);
-            let entry = crate::instant::file_entry(&file);
+            let entry = crate::models::file_entry(&file);
             (entry, file.run.clone(), Some(file))
         }
     };
@@ -278,7 +281,7 @@ fn run_scene(
     if let Some(file) = file {
         crate::resolve::resolve(scene, &registry).map_err(|e| e.to_string())?;
         if args.engine == EngineChoice::Compiled {
-            return run_compiled(file, scene.integrator.method == crate::ode::TAYLOR);
+            return run_compiled(file, scene.integrator.method.name() == crate::ode::TAYLOR);
         }
     }
     finish(scene, &registry, args)
@@ -308,24 +311,6 @@ fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
     }
 }
 
-/// `registry` with the model file `scene` names, if it names one, on the instant engine.
-fn with_file_model(scene: &Scene, registry: Registry) -> Result<Registry, String> {
-    let Some(path) = model_file_of(scene) else { return Ok(registry) };
-    let source = crate::model_file::source_with(&path, &scene.specified).map_err(|e| e.to_string())?;
-    let file = ModelFile::from_source(&path, source).map_err(|e| e.to_string())?;
-    eprint!("{}", file.warnings);
-    Ok(registry.with_entry(&scene.model, crate::instant::file_entry(&file)))
-}
-
-/// The model file a scene names (`model = "file.al"`, relative to the scene), if it does.
-fn model_file_of(scene: &Scene) -> Option<PathBuf> {
-    if !scene.model.to_ascii_lowercase().ends_with(".al") {
-        return None;
-    }
-    let dir = scene.path.parent().unwrap_or(Path::new("."));
-    Some(dir.join(&scene.model))
-}
-
 /// The scene of a `--model` run.
 fn model_scene(path: &Path, run: &FileRun, entry: &ModelEntry, args: &RunArgs) -> Result<Scene, String> {
     let model_args = ModelRunArgs { sets: args.sets.clone(), t_final: args.t_final };
@@ -353,7 +338,7 @@ fn run_compiled(file: &ModelFile, taylor: bool) -> Result<ExitCode, String> {
     Err(format!(
         "cannot start the compiled model {} even after rebuilding it: {e}\n  help: run with --engine instant, or remove {} and try again",
         binary.display(),
-        crate::compiled::cache_dir().display()
+        crate::models::cache_dir().display()
     ))
 }
 
@@ -361,11 +346,11 @@ fn run_compiled(file: &ModelFile, taylor: bool) -> Result<ExitCode, String> {
 /// could not be started: its path and why. Elsewhere than on Unix, runs it and returns its
 /// exit code.
 fn start_compiled(file: &ModelFile, taylor: bool) -> Result<(PathBuf, String), String> {
-    let (binary, built) = crate::compiled::ensure_binary(file, taylor).map_err(|e| e.to_string())?;
+    let (binary, built) = crate::models::ensure_binary(file, taylor).map_err(|e| e.to_string())?;
     if built {
         eprintln!("compiled: {}", binary.display());
     }
-    if let Some(why) = crate::compiled::not_a_program(&binary) {
+    if let Some(why) = crate::models::not_a_program(&binary) {
         return Ok((binary, why));
     }
     let mut command = std::process::Command::new(&binary);
@@ -409,7 +394,7 @@ fn print_timing(scene: &Scene, registry: &Registry, times: usize) -> Result<(), 
     let problem = crate::resolve::resolve(scene, registry).map_err(|e| e.to_string())?;
     let mut walls = Vec::with_capacity(times);
     for _ in 0..times {
-        let t = crate::solve::solve(&problem, registry).map_err(|e| e.to_string())?;
+        let t = crate::solve::solve(&problem, None).map_err(|e| e.to_string())?;
         walls.push(t.wall.as_secs_f64() * 1e3);
     }
     walls.sort_by(f64::total_cmp);

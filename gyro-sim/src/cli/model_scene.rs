@@ -4,7 +4,7 @@
 
 use kane_model::runtime::ModelInfo;
 
-use crate::model_file::FileRun;
+use crate::models::FileRun;
 
 /// End time when neither the command line nor the file's TFINAL gives one.
 const DEFAULT_T_FINAL: f64 = 10.0;
@@ -18,7 +18,7 @@ const DEFAULT_TOLERANCE: f64 = 1e-8;
 pub struct ModelRunArgs {
     /// `NAME=VALUE` pairs (a value may carry a unit: `Q2=30 deg`).
     pub sets: Vec<(String, String)>,
-    /// `--t-final`.
+    /// The end time given with `--t-final`.
     pub t_final: Option<f64>,
 }
 

@@ -46,7 +46,7 @@ pub fn print_summary(title: &str, summary: &run::RunSummary) {
 
 /// One line per event declared: how many times it happened and the first times; and the
 /// event that stopped the run.
-fn event_lines(log: &crate::events::EventLog) -> Vec<String> {
+fn event_lines(log: &crate::problem::EventLog) -> Vec<String> {
     const SHOWN: usize = 3;
     let mut lines: Vec<String> = log
         .names
@@ -73,7 +73,7 @@ fn event_lines(log: &crate::events::EventLog) -> Vec<String> {
 
 /// A warning per event whose sign changes outran the steps (crossings may be missing) or the
 /// output rows (crossings the rows cannot show).
-fn event_warnings(log: &crate::events::EventLog) -> Vec<String> {
+fn event_warnings(log: &crate::problem::EventLog) -> Vec<String> {
     let name = |i: usize| log.names.get(i).map_or("?", String::as_str);
     let mut lines: Vec<String> = log
         .unsettled
@@ -95,7 +95,7 @@ fn event_warnings(log: &crate::events::EventLog) -> Vec<String> {
 }
 
 /// The assembled start and the largest constraint residuals of the run.
-fn constraint_lines(c: &crate::trajectory::Constraints) -> Vec<String> {
+fn constraint_lines(c: &crate::problem::Constraints) -> Vec<String> {
     let mut lines = Vec::new();
     if let Some(a) = &c.assembly {
         let start = if a.iterations == 0 {
@@ -127,7 +127,7 @@ const NEAR_RANK_LOSS: f64 = 1e-8;
 
 /// The worst conditioning of the dependent speeds' matrix, a warning when it came near rank
 /// loss.
-fn conditioning_line(k: &crate::trajectory::Conditioning) -> String {
+fn conditioning_line(k: &crate::problem::Conditioning) -> String {
     if k.rcond >= NEAR_RANK_LOSS {
         format!(
             "motion constraints: matrix of dependent speeds reciprocal condition {:.2e} at worst (t = {})",
@@ -146,7 +146,7 @@ fn conditioning_line(k: &crate::trajectory::Conditioning) -> String {
 
 /// The drift of the conserved quantities the run wrote (`ENERGY`, `LZ`, `L3`): start, end and
 /// the change relative to max(1, |start|).
-fn conserved_drifts(t: &crate::trajectory::Trajectory) -> Vec<String> {
+fn conserved_drifts(t: &crate::problem::Trajectory) -> Vec<String> {
     let (Some(first), Some(last)) = (t.rows.first(), t.rows.last()) else { return Vec::new() };
     t.columns
         .iter()

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use crate::output::{write_sweep_metric, MemberPoint, MetricAxes};
-use crate::sweep;
+use crate::study::sweep;
 
 /// What a metric plot is asked.
 pub struct SweepPlotArgs<'a> {

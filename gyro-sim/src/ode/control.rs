@@ -19,6 +19,7 @@ pub(crate) struct PiControl {
 }
 
 impl PiControl {
+    /// The controller for a method of order `order` with the tableau's `control` constants.
     pub(crate) fn new(order: u32, control: StepControl) -> Self {
         let alpha = 1.0 / order as f64 - 0.75 * control.beta;
         Self { alpha, control, ln_err_old: 1e-4f64.ln() }

@@ -4,7 +4,8 @@
 
 use std::ops::ControlFlow;
 
-use super::stepper::{ErkStepper, Stats, StopReason};
+use super::stages::Stats;
+use super::stepper::{ErkStepper, StopReason};
 use super::taylor::TaylorStepper;
 use super::{OdeError, System};
 
@@ -74,7 +75,7 @@ pub fn drive<St: Stepping>(
             stepper.set_stop_time(target);
         }
         stepper.step()?;
-        if let Some(by) = crate::interrupt::requested() {
+        if let Some(by) = super::interrupt::requested() {
             return Err(OdeError::Interrupted { time: stepper.t(), by });
         }
         if let Some(t_stop) = watch(stepper) {

@@ -7,12 +7,13 @@
 use std::ops::ControlFlow;
 
 use super::drive::drive;
-use super::stepper::{ErkStepper, Stats, DEFAULT_MAX_STEPS};
+use super::stages::Stats;
+use super::stepper::{ErkStepper, DEFAULT_MAX_STEPS};
 use super::{Method, OdeError, System};
 
 /// Integrates from `(t0, y0)` through the increasing output `times` (none before `t0`), calling
 /// `out(t, y)` at each; `ControlFlow::Break` stops early, which is no error. The cost so far.
-/// At most [`DEFAULT_MAX_STEPS`] steps.
+/// At most `DEFAULT_MAX_STEPS` steps.
 pub fn integrate<S: System + ?Sized>(
     sys: &S,
     t0: f64,

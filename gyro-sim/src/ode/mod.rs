@@ -1,41 +1,44 @@
 //! Ordinary differential equations. In: a [`System`] `y' = f(t, y)`, a start `(t0, y0)` and a
 //! [`Method`] (a Butcher tableau from [`tableau`], found by name with [`by_name`]). Out: states
-//! step by step from an [`ErkStepper`], or at output times from [`integrate`], with the cost in
+//! step by step from an [`ErkStepper`], or at output times from [`integrate`](fn@integrate), with the cost in
 //! [`Stats`] or the reason in [`OdeError`].
 //!
 //! Files: `tableau` the coefficients as data; `methods` the table of methods by name; `stages`
 //! one step's stages and error estimate (`stages/unrolled` the compile-time-unrolled steps);
 //! `control` step sizes; `dense` the continuous extensions' one evaluation routine; `stepper`
 //! the stepper; `drive` the one loop from a stepper to output times; `integrate` output times
-//! on top of it; `events` the same with a watcher of
-//! each step (events); `taylor` the Taylor method on a system's own Taylor coefficients
-//! ([`System::taylor`]).
+//! on top of it; `watched` the same with a watcher of each step (events); `taylor` the Taylor
+//! method on a system's own Taylor coefficients ([`System::taylor`]); `unit_norm` a system held
+//! on unit-norm groups (Euler parameters); `interrupt` the stop signals long loops read.
 
 mod control;
 mod dense;
 mod drive;
-mod events;
 mod integrate;
+pub(crate) mod interrupt;
 mod methods;
 mod stages;
 mod stepper;
 pub mod tableau;
 mod taylor;
+mod unit_norm;
+mod watched;
 
 pub(crate) use control::PiControl;
-pub use dense::{DenseOutput, DenseRounding};
-pub use drive::{Stepping, Watched};
-pub use events::integrate_watched;
+pub use dense::DenseOutput;
+pub use drive::Stepping;
 pub use integrate::{integrate, integrate_limited};
 pub use methods::{
-    by_name, for_tolerances, methods_help, Method, MethodInfo, Tolerances, AUTO, AUTO_TIGHT, METHODS, TAYLOR,
+    by_name, for_tolerances, methods_help, Method, MethodInfo, Tolerances, AUTO, METHODS, TAYLOR,
 };
 pub(crate) use stages::blended_norm;
-pub use stepper::{ErkStepper, Stats, StopReason, DEFAULT_MAX_STEPS};
-pub use taylor::TaylorStepper;
-use thiserror::Error;
+pub use stages::Stats;
+pub use stepper::{ErkStepper, StopReason, DEFAULT_MAX_STEPS};
+pub use unit_norm::{normalise, NormDrift, UnitNorm};
+pub use watched::integrate_watched;
 
 pub use kane_model::runtime::TaylorWork;
+use thiserror::Error;
 
 /// A system `y' = f(t, y)` of fixed dimension; integrators only call `rhs`.
 pub trait System {
@@ -80,7 +83,7 @@ pub enum OdeError {
     /// The step size fell below what the time's precision allows.
     #[error("step size underflow at t = {time} (h = {step:e}): the problem is too stiff or singular for the tolerances")]
     StepSizeUnderflow {
-        /// Where.
+        /// Where it happened.
         time: f64,
         /// The step size.
         step: f64,
@@ -123,13 +126,13 @@ pub enum OdeError {
     /// A Runge-Kutta stepper was given the Taylor method.
     #[error("the taylor method has no Butcher tableau: integrate it with ode::integrate or a TaylorStepper")]
     NotRungeKutta,
-    /// A stop signal arrived (see [`crate::interrupt`]).
+    /// A stop signal arrived (see the `interrupt` module).
     #[error("{by} at t = {time}")]
     Interrupted {
         /// The time reached.
         time: f64,
         /// The signal.
-        by: crate::interrupt::Interrupted,
+        by: crate::ode::interrupt::Interrupted,
     },
     /// A slice's length is not the system's dimension (or the stepper's compile-time one).
     #[error("expected {expected} values, got {found}")]

@@ -7,9 +7,19 @@
 
 mod unrolled;
 
-use super::stepper::Stats;
 use super::tableau::Tableau;
 use super::{System, Tolerances};
+
+/// What integration cost.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Stats {
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected steps.
+    pub rejected: usize,
+    /// Calls of the right-hand side.
+    pub rhs_evals: usize,
+}
 
 /// Stepping storage. `N` is the dimension when known at compile time (0: read `n_dyn`); then the
 /// component loops unroll, and the built-in tableaux take the fully unrolled step.
@@ -239,8 +249,8 @@ pub(crate) fn blended_norm(h: f64, n: usize, sum5: f64, sum3: Option<f64>) -> f6
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ode::dense::{DenseOutput, DenseRounding};
     use crate::ode::tableau::{DOP853, RK4};
-    use crate::ode::{DenseOutput, DenseRounding};
 
     struct Decay;
     impl System for Decay {

@@ -10,22 +10,11 @@ use std::cell::{Cell, RefCell};
 
 use super::control::{accepted_step, bound_first_step, initial_step, PiControl};
 use super::dense::{DenseCache, StepData};
-use super::stages::Work;
+use super::stages::{Stats, Work};
 use super::{Method, OdeError, System, Tolerances};
 
 /// Most accepted steps a stepper takes unless told otherwise ([`ErkStepper::set_max_steps`]).
 pub const DEFAULT_MAX_STEPS: usize = 10_000_000;
-
-/// What integration cost.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Stats {
-    /// Accepted steps.
-    pub steps: usize,
-    /// Rejected steps.
-    pub rejected: usize,
-    /// Calls of the right-hand side.
-    pub rhs_evals: usize,
-}
 
 /// Why [`ErkStepper::step`] returned.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

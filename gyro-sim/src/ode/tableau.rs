@@ -10,11 +10,11 @@ pub use verner::{VERN7, VERN9};
 /// pairs the error weights `e = b - b_hat`.
 #[derive(Debug)]
 pub struct Tableau {
-    /// Name.
+    /// The name scenes give it (`dop853`).
     pub name: &'static str,
     /// Order of `b`.
     pub order: u32,
-    /// Nodes.
+    /// The nodes `c` (stage times as fractions of the step).
     pub c: &'static [f64],
     /// Rows of `a` (row i has i entries).
     pub a: &'static [&'static [f64]],

@@ -14,7 +14,8 @@
 //! error of small ones), and at their order it is their rule. Every step is accepted: the
 //! estimate is made before the step, from the series itself.
 
-use super::stepper::{Stats, StopReason, DEFAULT_MAX_STEPS};
+use super::stages::Stats;
+use super::stepper::{StopReason, DEFAULT_MAX_STEPS};
 use super::{OdeError, System, TaylorWork, Tolerances};
 /// The lowest order a step takes (the step-size rule reads orders `p - 1` and `p`).
 const MIN_ORDER: usize = 2;
@@ -55,7 +56,6 @@ pub struct TaylorStepper<'a, S: System + ?Sized> {
     ln_eps: f64,
     work: TaylorWork,
     stop: Option<f64>,
-    horizon: Option<f64>,
     max_steps: usize,
     stats: Stats,
 }
@@ -83,7 +83,6 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
             ln_eps: 0.0,
             work: Vec::new(),
             stop: None,
-            horizon: None,
             max_steps: DEFAULT_MAX_STEPS,
             stats: Stats::default(),
         };
@@ -96,11 +95,6 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
     /// Steps never pass `t_stop`; the one that reaches it ends on it exactly.
     pub fn set_stop_time(&mut self, t_stop: f64) {
         self.stop = Some(t_stop);
-    }
-
-    /// Where the whole integration ends (bounds a step when there is no stop time).
-    pub fn set_horizon(&mut self, t_end: f64) {
-        self.horizon = Some(t_end);
     }
 
     /// At most `max` steps in all ([`OdeError::TooManySteps`] before one more).
@@ -121,11 +115,6 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
     /// Where the last step began (`t0` before the first).
     pub fn step_start(&self) -> f64 {
         self.t_prev
-    }
-
-    /// The order of the last step (of the coming one before the first).
-    pub fn order(&self) -> usize {
-        self.order
     }
 
     /// The cost so far: steps, and in `rhs_evals` the coefficient passes (order `p` takes `p`;
@@ -214,7 +203,7 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
             self.expand()?;
         }
         let mut h = self.step_size();
-        let target = self.stop.or(self.horizon);
+        let target = self.stop;
         if !h.is_finite() {
             // A polynomial solution: nothing bounds the step but the way to go.
             h = target.map_or(1.0, |end| end - self.t);
@@ -371,7 +360,7 @@ mod tests {
             TaylorStepper::new(&Oscillator, 0.0, &[1.0, 0.0], Tolerances { rtol: 1e-12, atol: 1e-12 })
                 .unwrap();
         // -ln(1e-12) / 2 + 1 + ORDER_LEAD = 18.8: the nearest straight-line order is 20.
-        assert_eq!(s.order(), 20);
+        assert_eq!(s.order, 20);
         s.set_stop_time(1.0);
         while s.step().unwrap() == StopReason::StepTaken {}
         assert_eq!(s.t(), 1.0);
@@ -406,7 +395,7 @@ mod tests {
         let tol = Tolerances { rtol: 1e-12, atol: 1e-12 };
         let mut s = TaylorStepper::new(&LoopOnly, 0.0, &[1.0, 0.0], tol).unwrap();
         // -ln(1e-12) / 2 + 1 + ORDER_LEAD = 18.8, rounded.
-        assert_eq!(s.order(), 19);
+        assert_eq!(s.order, 19);
         s.set_stop_time(2.0);
         while s.step().unwrap() == StopReason::StepTaken {}
         let mut y = [0.0; 2];

@@ -4,9 +4,9 @@
 use std::fs::File;
 use std::path::{Path, PathBuf};
 
-use super::write::DisplayRows;
+use super::display::DisplayRows;
 use super::{write_atomically, Table};
-use crate::rows::RowSink;
+use crate::problem::RowSink;
 
 /// Writes `table` as CSV to `path` (atomically).
 pub fn write_csv(table: &Table, path: &Path) -> Result<(), String> {
@@ -43,7 +43,7 @@ pub struct CsvStream {
 
 impl CsvStream {
     /// Creates `path` with the header of `columns` (a run's columns, model units).
-    pub(crate) fn create(path: &Path, columns: &[crate::trajectory::Column]) -> Result<CsvStream, String> {
+    pub(crate) fn create(path: &Path, columns: &[crate::problem::Column]) -> Result<CsvStream, String> {
         let (display, shown) = DisplayRows::new(columns);
         let table = Table { title: String::new(), columns: shown, rows: Vec::new(), plot_rows: Vec::new() };
         let mut w = csv::Writer::from_path(path).map_err(|e| format!("{}: {e}", path.display()))?;

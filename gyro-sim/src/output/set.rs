@@ -31,60 +31,18 @@
 //! and extended attributes are not; `OUT` must be on its parent's filesystem (not a mount point).
 
 mod foreign;
+mod names;
 mod owner;
 mod swap;
 #[cfg(test)]
 mod tests;
 
 use std::fs::{self, File, OpenOptions};
-use std::hash::{BuildHasher, Hasher};
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicU64, Ordering};
 
+pub use names::PARTIAL_CSV;
+use names::{fail, COMMIT_LOCK};
 use owner::Owner;
-
-/// The files a run may put in its folder.
-pub const SET_FILES: &[&str] = &[
-    "trajectory.csv",
-    "events.csv",
-    "trajectory.png",
-    "elevation.png",
-    "axle_trace.png",
-    "view.html",
-    PARTIAL_CSV,
-];
-
-/// Where a failed run's rows go, beside the earlier set (removed when a later set is complete).
-pub const PARTIAL_CSV: &str = "trajectory.partial.csv";
-
-/// The file in the work folder whose lock serialises commits.
-const COMMIT_LOCK: &str = "commit.lock";
-
-static COUNTER: AtomicU64 = AtomicU64::new(0);
-
-/// A number no other call, here or in another process on any host, is likely to draw (the
-/// standard library seeds its hash keys from the system's random source).
-fn random() -> u64 {
-    let mut hasher = std::collections::hash_map::RandomState::new().build_hasher();
-    hasher.write_u64(COUNTER.fetch_add(1, Ordering::Relaxed));
-    hasher.write_u32(std::process::id());
-    hasher.finish()
-}
-
-/// `.partial-{pid}-{random}-{name}`: a temporary name no other process, and no other call here, uses.
-pub(crate) fn unique_temporary(name: &str) -> String {
-    format!(".partial-{}-{:016x}-{name}", std::process::id(), random())
-}
-
-/// Whether `file_name` is a temporary [`unique_temporary`] made for `name`.
-pub(crate) fn is_temporary_of(file_name: &str, name: &str) -> bool {
-    file_name.starts_with(".partial-") && file_name.ends_with(&format!("-{name}"))
-}
-
-/// `path: what failed`.
-fn fail(path: &Path, e: std::io::Error) -> String {
-    format!("{}: {e}", path.display())
-}
 
 /// Where a set goes: the output folder as given and resolved, and the work folder beside it.
 struct Place {

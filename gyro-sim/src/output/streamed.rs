@@ -7,11 +7,13 @@ use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
 use super::csv_file::CsvStream;
+use super::display::display_table;
 use super::set::{Staging, PARTIAL_CSV};
-use super::write::{display_table, finish_set};
-use super::{ViewSpec, WriteError, Written};
-use crate::rows::RowStream;
-use crate::trajectory::{Column, Trajectory};
+use super::write::finish_set;
+use super::{WriteError, Written};
+use crate::problem::RowStream;
+use crate::problem::{Column, Trajectory};
+use crate::scene::ViewSpec;
 
 /// A set being written into a folder: its CSV open in the staging folder.
 pub struct StreamedSet {

@@ -8,15 +8,12 @@
 //! `target=<x>,<y>,<z>` (the camera looks at the target from that direction, z up) and
 //! `fov=<deg>` (the vertical field of view, 45 unless given); `ui=0` hides the panels.
 
-mod spec;
-
 use std::collections::BTreeMap;
 use std::path::Path;
 
-pub use spec::{ArrowView, BodyView, Orientation, Shape, TraceView, ViewError, ViewSpec};
-
 use super::{write_atomically, WriteError};
-use crate::trajectory::Trajectory;
+use crate::problem::Trajectory;
+use crate::scene::{ViewError, ViewSpec};
 
 /// three.js 0.170.0, `build/three.module.min.js` (see `gyro-sim/assets/three/README.md`).
 const THREE_JS: &str = include_str!("../../assets/three/three.module.min.js");

@@ -4,27 +4,12 @@
 
 use std::path::{Path, PathBuf};
 
-use thiserror::Error;
-
 use super::set::Staging;
-use super::{write_csv, write_elevation, write_plot, write_trace, write_view, Column, Table, ViewSpec};
-use crate::trajectory::Trajectory;
-
-/// Why results could not be written.
-#[derive(Clone, Debug, PartialEq, Error)]
-pub enum WriteError {
-    /// The folder could not be made.
-    #[error("{path}: {message}")]
-    Folder {
-        /// The folder.
-        path: PathBuf,
-        /// What the system said.
-        message: String,
-    },
-    /// A file could not be written.
-    #[error("{0}")]
-    File(String),
-}
+use super::{
+    display_table, write_csv, write_elevation, write_plot, write_trace, write_view, Table, WriteError,
+};
+use crate::problem::Trajectory;
+use crate::scene::ViewSpec;
 
 /// The files written.
 #[derive(Clone, Debug, PartialEq)]
@@ -71,7 +56,7 @@ pub(crate) fn finish_set(
     rows: usize,
 ) -> Result<Written, WriteError> {
     if !trajectory.events.names.is_empty() {
-        crate::events::csv::write_events_csv(trajectory, &staging.path("events.csv"))
+        super::events_csv::write_events_csv(trajectory, &staging.path("events.csv"))
             .map_err(WriteError::File)?;
     }
     write_plot(table, &staging.path("trajectory.png")).map_err(WriteError::File)?;
@@ -88,64 +73,4 @@ pub(crate) fn finish_set(
     }
     staging.commit().map_err(WriteError::File)?;
     Ok(Written { csv: dir.join("trajectory.csv"), plot: dir.join("trajectory.png"), figures, rows })
-}
-
-/// The trajectory in display units, with CSV headers naming them.
-pub fn display_table(trajectory: &Trajectory) -> Table {
-    let (display, columns) = DisplayRows::new(&trajectory.columns);
-    let display = |rows: &[Vec<f64>]| -> Vec<Vec<f64>> { rows.iter().map(|r| display.row(r)).collect() };
-    let (rows, plot_rows) = (display(&trajectory.rows), display(&trajectory.plot_rows));
-    Table { title: trajectory.title.clone(), columns, rows, plot_rows }
-}
-
-/// How a run's rows (model units, hidden columns too) become written rows: the shown columns,
-/// angles the model gives in degrees written in degrees.
-pub(crate) struct DisplayRows {
-    shown: Vec<usize>,
-    degrees: Vec<bool>,
-}
-
-impl DisplayRows {
-    /// The mapping for a run's `columns`, and the written columns.
-    pub(crate) fn new(columns: &[crate::trajectory::Column]) -> (DisplayRows, Vec<Column>) {
-        let shown: Vec<usize> = (0..columns.len()).filter(|k| !columns[*k].hidden).collect();
-        let written: Vec<Column> = shown
-            .iter()
-            .map(|k| &columns[*k])
-            .map(|c| Column {
-                name: column_name(&c.name, &c.unit),
-                label: c.name.clone(),
-                unit: c.unit.clone(),
-                degrees: c.unit.eq_ignore_ascii_case("DEG"),
-                angle: c.is_angle(),
-                output: c.output,
-            })
-            .collect();
-        let degrees = written.iter().map(|c| c.degrees).collect();
-        (DisplayRows { shown, degrees }, written)
-    }
-
-    /// One row in display units: `t`, then the shown columns.
-    pub(crate) fn row(&self, row: &[f64]) -> Vec<f64> {
-        let mut out = Vec::with_capacity(self.shown.len() + 1);
-        out.push(row[0]);
-        let values = self.shown.iter().map(|k| row[k + 1]).zip(&self.degrees);
-        out.extend(values.map(|(v, d)| if *d { v.to_degrees() } else { v }));
-        out
-    }
-}
-
-/// `q1` + `DEG` -> `q1_deg`; `AP` + `M/SEC^2` -> `ap_m_per_s2`.
-pub fn column_name(name: &str, unit: &str) -> String {
-    let slug = unit
-        .to_ascii_lowercase()
-        .replace("sec", "s")
-        .replace('/', "_per_")
-        .replace(['^', ' '], "")
-        .replace('*', "_");
-    if slug.is_empty() {
-        name.to_ascii_lowercase()
-    } else {
-        format!("{}_{slug}", name.to_ascii_lowercase())
-    }
 }

@@ -5,7 +5,8 @@
 use serde::Deserialize;
 use toml::Spanned;
 
-use super::{Scene, SceneError, Span, Text, Value};
+use super::text::{line_col, SceneError, Span, Text};
+use super::{AxleKey, Control, Scene, Target, Value};
 
 /// A `[[controls]]` table as read.
 #[derive(Deserialize)]
@@ -16,49 +17,6 @@ pub(super) struct ControlFile {
     max: Spanned<f64>,
     step: Option<Spanned<f64>>,
     unit: Option<Spanned<String>>,
-}
-
-/// A value of the scene that a user may move within a range (a slider on `gyro-sim serve`'s page).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Control {
-    /// The name as written (`spin`, `U3`, `Y`).
-    pub name: String,
-    /// The value it moves.
-    pub target: Target,
-    /// Least value, in `unit`.
-    pub min: f64,
-    /// Greatest value, in `unit`.
-    pub max: f64,
-    /// The slider's step, in `unit`.
-    pub step: f64,
-    /// The unit the value is given in (the scene's, `deg`, `rad/s`), if any.
-    pub unit: Option<String>,
-    /// The value the scene gives, in `unit`.
-    pub value: f64,
-}
-
-/// The value a control moves.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Target {
-    /// The parameter at this index of [`Scene::parameters`].
-    Parameter(usize),
-    /// The initial value at this index of [`Scene::initial`].
-    Initial(usize),
-    /// An entry of the `[axle]` table.
-    Axle(AxleKey),
-}
-
-/// An `[axle]` entry a control can move.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum AxleKey {
-    /// The axle's angle from +z.
-    Tilt,
-    /// The spin rate.
-    Spin,
-    /// The precession rate.
-    Precession,
-    /// The nutation rate.
-    Nutation,
 }
 
 impl AxleKey {
@@ -159,7 +117,7 @@ impl Text<'_> {
         if same || (value.unit.is_none() && unit.get_ref().trim().is_empty()) {
             return Ok(value.unit.clone());
         }
-        let (line, column) = super::line_col(self.source, value_span.start);
+        let (line, column) = line_col(self.source, value_span.start);
         Err(self.err(
             unit.span(),
             format!(

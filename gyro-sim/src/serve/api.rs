@@ -2,9 +2,9 @@
 //! a run of the scene with the values asked for (the data the page draws), the scene's text
 //! with those values (to save), or a client error. Nothing but these is served.
 
-use crate::registry::Registry;
+use crate::models::Registry;
+use crate::problem::Trajectory;
 use crate::scene::Scene;
-use crate::trajectory::Trajectory;
 
 use super::request::{self, Refused};
 
@@ -25,7 +25,7 @@ pub struct App {
 pub struct Reply {
     /// HTTP status.
     pub status: u16,
-    /// `Content-Type`.
+    /// The reply's `Content-Type`.
     pub content_type: &'static str,
     /// The body.
     pub body: Vec<u8>,
@@ -108,7 +108,7 @@ pub fn run_data(scene: &Scene, registry: &Registry) -> Result<serde_json::Value,
     let view = scene.view.clone().unwrap_or_default();
     view.check().map_err(|e| e.to_string())?;
     let problem = crate::resolve::resolve(scene, registry).map_err(|e| e.to_string())?;
-    let trajectory = crate::solve::solve(&problem, registry).map_err(|e| e.to_string())?;
+    let trajectory = crate::solve::solve(&problem, None).map_err(|e| e.to_string())?;
     let plot = plot_columns(&trajectory);
     let mut data = crate::output::view_data(&trajectory, &view, &plot).map_err(|e| e.to_string())?;
     let units: serde_json::Map<String, serde_json::Value> =

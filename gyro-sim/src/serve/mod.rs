@@ -16,7 +16,7 @@ use std::time::Duration;
 
 pub use api::{answer, run_data, App, Reply};
 
-use crate::registry::Registry;
+use crate::models::Registry;
 use crate::scene::Scene;
 
 /// Requests answered at once, each on its own thread; more are answered 503 at once.
@@ -42,7 +42,7 @@ pub fn serve(app: App, port: u16, started: impl FnOnce(&str)) -> Result<(), Stri
     started(&address);
     let app = Arc::new(app);
     let active = Arc::new(AtomicUsize::new(0));
-    while crate::interrupt::requested().is_none() {
+    while crate::ode::interrupt::requested().is_none() {
         let request = match server.recv_timeout(POLL) {
             Ok(Some(request)) => request,
             Ok(None) => continue,

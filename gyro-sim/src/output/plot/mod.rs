@@ -1,4 +1,4 @@
-//! Plots of a run, PNG: in comes a [`Table`] in display units; out go the figures it has data
+//! Plots of a run, PNG: in comes a [`super::Table`] in display units; out go the figures it has data
 //! for: the time series like the paper's Figures 3-5 (`series`), the EJS elevation window
 //! (`elevation`) and the axle tip's trace seen from above (`trace`). Each is written atomically.
 
@@ -8,7 +8,7 @@ mod panel;
 mod series;
 mod sweep_metric;
 mod trace;
-mod work_precision;
+mod work_precision_figure;
 
 use std::sync::Once;
 
@@ -19,7 +19,7 @@ pub use elevation::write_elevation;
 pub use series::write_plot;
 pub use sweep_metric::{write_sweep_metric, MemberPoint, MetricAxes};
 pub use trace::write_trace;
-pub use work_precision::write_work_precision;
+pub use work_precision_figure::{write_work_precision, WorkPrecisionPoint};
 
 static FONT: Once = Once::new();
 

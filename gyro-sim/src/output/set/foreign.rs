@@ -4,7 +4,7 @@
 use std::fs::{self, FileType};
 use std::path::Path;
 
-use super::{fail, SET_FILES};
+use super::names::{fail, SET_FILES};
 
 /// What an entry of an output folder is to a commit.
 #[derive(Clone, Copy, Debug, PartialEq)]

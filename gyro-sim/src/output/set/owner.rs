@@ -9,7 +9,9 @@ use std::fs::{self, File, OpenOptions};
 use std::io::{ErrorKind, Read, Write};
 use std::path::{Path, PathBuf};
 
-use super::{fail, foreign, random, COMMIT_LOCK};
+use super::foreign;
+use super::names::{fail, COMMIT_LOCK};
+use crate::output::temporaries::random;
 
 /// A staging folder and the lock that says its run is alive.
 pub(super) struct Owner {

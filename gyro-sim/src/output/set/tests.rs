@@ -4,7 +4,8 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use super::owner::{remove_abandoned, Owner};
-use super::{swap, unique_temporary, Place, Staging};
+use super::{swap, Place, Staging};
+use crate::output::unique_temporary;
 
 /// A fresh folder `out` in a fresh test folder; its parent.
 fn fresh(name: &str) -> (PathBuf, PathBuf) {

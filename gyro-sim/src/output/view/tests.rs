@@ -5,7 +5,8 @@ use std::time::Duration;
 
 use super::*;
 use crate::ode::Stats;
-use crate::trajectory::Column;
+use crate::problem::Column;
+use crate::scene::{Orientation, Shape};
 
 /// The sha256 in `gyro-sim/assets/three/README.md`.
 const THREE_SHA256: &str = "08fd7545d13d2c7fb65ab691530a802dafefd638596501854f267d0fb13c39e7";

@@ -1,0 +1,170 @@
+//! A user's model file, run without rebuilding the simulator: in comes the path of an
+//! Autolev-style model file; out go its checked model, its lowered program and what the file
+//! says about a run (TFINAL, INTEGSTP, ABSERR, RELERR, its OUTPUT names).
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use kane_model::codegen::ProgramModel;
+use kane_model::mechanics::Model;
+use thiserror::Error;
+
+/// Why a model file cannot be run.
+#[derive(Debug, Error)]
+pub enum ModelFileError {
+    /// The file cannot be read.
+    #[error("{path}: cannot read the model file: {reason}")]
+    Read {
+        /// The path given.
+        path: String,
+        /// Why it failed.
+        reason: String,
+    },
+    /// The file does not check (syntax, derivation or consistency errors, with their places).
+    #[error("{0}")]
+    Check(String),
+    /// The equations cannot be lowered to a program.
+    #[error("{path}: {reason}")]
+    Lower {
+        /// The file.
+        path: String,
+        /// Why it failed.
+        reason: String,
+    },
+}
+
+/// What a model file says about a run (INPUT TFINAL, INTEGSTP, ABSERR, RELERR; OUTPUT).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct FileRun {
+    /// The final time, `TFINAL`.
+    pub t_final: Option<f64>,
+    /// `INTEGSTP`: the output step.
+    pub step: Option<f64>,
+    /// The absolute tolerance, `ABSERR`.
+    pub abserr: Option<f64>,
+    /// The relative tolerance, `RELERR`.
+    pub relerr: Option<f64>,
+    /// The OUTPUT names other than `T`, in order (without `>`).
+    pub outputs: Vec<String>,
+}
+
+/// A checked model file, ready to run.
+pub struct ModelFile {
+    /// The path it was read from.
+    pub path: PathBuf,
+    /// Its text.
+    pub source: String,
+    /// The model's name: the file's stem.
+    pub name: String,
+    /// The mechanics (for plausibility checks of a run's values).
+    pub model: Arc<Model>,
+    /// The lowered program (the instant path).
+    pub program: Arc<ProgramModel>,
+    /// What the file says about a run.
+    pub run: FileRun,
+    /// Warnings `kane check` would print (empty when none).
+    pub warnings: String,
+}
+
+impl ModelFile {
+    /// Reads, checks and lowers the model file at `path`.
+    pub fn load(path: &Path) -> Result<ModelFile, ModelFileError> {
+        ModelFile::from_source(path, source_with(path, &[])?)
+    }
+
+    /// Checks and lowers `source`, the text of the model file at `path` (see `source_with`).
+    pub fn from_source(path: &Path, source: String) -> Result<ModelFile, ModelFileError> {
+        let shown = path.display().to_string();
+        let checked =
+            kane_model::lang::check(&shown, &source).map_err(|r| ModelFileError::Check(r.to_string()))?;
+        let warnings = checked.warnings.to_string();
+        let loaded = checked.model;
+        let name = model_name(path);
+        let run = file_run(&loaded);
+        let mut spec = loaded
+            .into_spec(&name)
+            .map_err(|e| ModelFileError::Lower { path: shown.clone(), reason: e.to_string() })?;
+        let program = ProgramModel::new(&mut spec)
+            .map_err(|e| ModelFileError::Lower { path: shown, reason: e.to_string() })?;
+        Ok(ModelFile {
+            path: path.to_path_buf(),
+            source,
+            name,
+            model: Arc::new(spec.model),
+            program: Arc::new(program),
+            run,
+            warnings,
+        })
+    }
+}
+
+/// The text of the model file at `path` with a scene's `[specified]` formulas appended (after
+/// KANE(), where a file's own formulas for SPECIFIED quantities may stand).
+pub fn source_with(
+    path: &Path,
+    specified: &[(String, String, std::ops::Range<usize>)],
+) -> Result<String, ModelFileError> {
+    let mut source = std::fs::read_to_string(path)
+        .map_err(|e| ModelFileError::Read { path: path.display().to_string(), reason: e.to_string() })?;
+    if !specified.is_empty() {
+        if !source.ends_with('\n') {
+            source.push('\n');
+        }
+        source.push_str("% From the scene's [specified] table:\n");
+        for (name, formula, _) in specified {
+            source.push_str(&format!("{name} = {formula}\n"));
+        }
+    }
+    Ok(source)
+}
+
+/// A model's name from its file: the stem, as an identifier (`my gimbal-2.al` -> `my_gimbal_2`).
+pub fn model_name(path: &Path) -> String {
+    let stem = path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
+    let mut name: String = stem.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
+    if name.is_empty() || name.starts_with(|c: char| c.is_ascii_digit()) {
+        name.insert_str(0, "model_");
+    }
+    name
+}
+
+/// The run settings a loaded file gives.
+fn file_run(loaded: &kane_model::lang::LoadedModel) -> FileRun {
+    let input = |n: &str| loaded.inputs.iter().find(|i| i.name.eq_ignore_ascii_case(n)).map(|i| i.value);
+    let outputs = loaded
+        .outputs
+        .iter()
+        .map(|(n, _)| n.trim_end_matches('>').to_string())
+        .filter(|n| !n.eq_ignore_ascii_case("T"))
+        .collect();
+    FileRun {
+        t_final: input("TFINAL"),
+        step: input("INTEGSTP"),
+        abserr: input("ABSERR"),
+        relerr: input("RELERR"),
+        outputs,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_come_from_the_stem() {
+        assert_eq!(model_name(Path::new("/a/my gimbal-2.al")), "my_gimbal_2");
+        assert_eq!(model_name(Path::new("2top.al")), "model_2top");
+    }
+
+    #[test]
+    fn the_paper_file_gives_its_run_settings() {
+        let path =
+            Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/models/gimbal_gyroscope.al"));
+        let file = ModelFile::load(path).unwrap();
+        assert_eq!(file.name, "gimbal_gyroscope");
+        assert_eq!(file.run.t_final, Some(5.0));
+        assert_eq!(file.run.step, Some(0.05));
+        assert_eq!((file.run.abserr, file.run.relerr), (Some(1e-7), Some(1e-7)));
+        assert_eq!(file.run.outputs[..7], ["Q1", "Q2", "Q3", "U1", "U2", "U3", "AP"]);
+    }
+}
