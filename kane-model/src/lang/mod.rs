@@ -18,6 +18,7 @@ mod check;
 mod compare;
 mod diagnostic;
 mod eoms;
+pub mod event;
 mod interp;
 mod parser;
 mod present;
