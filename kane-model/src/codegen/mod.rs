@@ -32,15 +32,9 @@ pub use program_model::ProgramModel;
 /// Why a model cannot be turned into code.
 #[derive(Clone, Debug, PartialEq, Error)]
 pub enum CodegenError {
-    /// The model file does not call KANE().
-    #[error("the model derives no equations: call KANE() in the model file")]
-    NoEquations,
     /// A symbol the equations need is neither a state, a parameter nor time.
     #[error("`{0}` is a time-dependent quantity that is not a state and has no formula: give it one in the file (`{0} = ...`, after KANE() too) or in a gyro-sim scene's [specified] table; tables of values in time are not supported")]
     UnsupportedSymbol(String),
-    /// An OUTPUT name that is not a scalar or vector the model defines.
-    #[error("OUTPUT `{0}` is not a state, nor a scalar or vector defined in the model")]
-    UnknownOutput(String),
     /// An expression operation failed.
     #[error(transparent)]
     Expr(#[from] crate::expr::ExprError),
