@@ -5,7 +5,7 @@
 use std::ops::ControlFlow;
 use std::time::Instant;
 
-use kane_model::runtime::{GeneratedModel, ModelInfo};
+use kane_model::runtime::{GeneratedModel, ModelInfo, OutputKind};
 use thiserror::Error;
 
 use crate::diagnose;
@@ -367,10 +367,10 @@ pub(crate) struct Residuals {
 impl Residuals {
     /// Tracking for `info`'s residual outputs (none: nothing is computed).
     fn of(info: &ModelInfo) -> Residuals {
-        let find = |kind: &str| info.outputs.iter().position(|o| o.kind == kind);
+        let find = |kind: OutputKind| info.outputs.iter().position(|o| o.kind == kind);
         Residuals {
-            outputs: [find("configuration_residuals"), find("motion_residuals")],
-            matrix: find("constraint_matrix"),
+            outputs: [find(OutputKind::ConfigurationResiduals), find(OutputKind::MotionResiduals)],
+            matrix: find(OutputKind::ConstraintMatrix),
             ..Default::default()
         }
     }
@@ -409,7 +409,9 @@ impl Residuals {
 
 /// The kinetic-energy output of a model, if it has one that reads no rates.
 pub(crate) fn kinetic_energy_output(info: &ModelInfo) -> Option<usize> {
-    info.outputs.iter().position(|o| o.kind == "kinetic_energy" && !o.needs_rates && o.columns.len() == 1)
+    info.outputs
+        .iter()
+        .position(|o| o.kind == OutputKind::KineticEnergy && !o.needs_rates && o.columns.len() == 1)
 }
 
 /// The states to integrate: all but the cyclic coordinates that no column reads.

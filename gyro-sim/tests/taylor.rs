@@ -11,7 +11,7 @@ use gyro_sim::ode::{integrate, tableau::DOP853, Method, Tolerances};
 use gyro_sim::run::run;
 use gyro_sim::scene::Scene;
 use gyro_sim::solve::ModelSystem;
-use kane_model::dual::Dual;
+use kane_model::runtime::dual::Dual;
 use kane_model::runtime::GeneratedModel;
 
 /// Coefficients of `model` at `(t, y)` in `f64` and, with `y = y + eps f(y)`, `t = t + eps`, in

@@ -13,7 +13,7 @@ pub(crate) use probe::probe;
 
 use kane_model::codegen::ProgramModel;
 use kane_model::mechanics::{reciprocal_condition, CONSTRAINT_RCOND_LIMIT};
-use kane_model::runtime::ModelInfo;
+use kane_model::runtime::{ModelInfo, OutputKind};
 
 use crate::problem::Problem;
 use crate::solve::{kinetic_energy_output, BoundModel, SolveError};
@@ -138,7 +138,7 @@ fn singular_mass_matrix<B: BoundModel>(
 /// The smallest over the largest singular value of the motion constraints' matrix of
 /// dependent speeds at `(t, y)`, when the model has that matrix as an output.
 pub(crate) fn constraint_rcond<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Option<f64> {
-    let k = sys.info().outputs.iter().position(|o| o.kind == "constraint_matrix")?;
+    let k = sys.info().outputs.iter().position(|o| o.kind == OutputKind::ConstraintMatrix)?;
     Some(matrix_rcond(sys, k, t, y, &mut Vec::new()))
 }
 

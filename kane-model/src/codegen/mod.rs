@@ -57,10 +57,11 @@ pub struct CodeOptions {
 }
 
 impl CodeOptions {
-    /// Everything: Taylor coefficients with straight-line code at [`taylor::UNROLLED_ORDERS`],
-    /// and lanes.
+    /// Everything: Taylor coefficients with straight-line code at
+    /// [`crate::runtime::TAYLOR_UNROLLED_ORDERS`], and lanes.
     pub fn everything() -> CodeOptions {
-        CodeOptions { taylor: true, taylor_orders: taylor::UNROLLED_ORDERS.to_vec(), lanes: true }
+        let taylor_orders = crate::runtime::TAYLOR_UNROLLED_ORDERS.to_vec();
+        CodeOptions { taylor: true, taylor_orders, lanes: true }
     }
 }
 
