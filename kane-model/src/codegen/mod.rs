@@ -2,6 +2,13 @@
 //! out goes a Rust module with a straight-line `rhs` generic over `num_traits::Float`, one
 //! function per output, and the model's runtime metadata.
 //!
+//! The crate's layers, in the order data flows through them: `expr` -> `mechanics` -> `spec` ->
+//! `codegen` (this module) -> [`crate::runtime`]. Each uses only the layers before it and
+//! `runtime`, what generated code reaches: a leaf that uses nothing else in the crate (this
+//! module's evaluators run its recurrences; its metadata are runtime types). The model
+//! language, `lang`, sits above them all and is never read here: event expressions arrive as
+//! expressions ([`event::lower`]), specs as specs.
+//!
 //! The stages are modules: [`lower`] turns the spec into one [`ir::Program`] (SSA sections for
 //! `derive`, `rhs` with `M u' = f` solved inside it, and each output); `print` spells that
 //! program in Rust; [`taylor`] turns `rhs` into Taylor-coefficient recurrences, printed beside it.
