@@ -73,7 +73,7 @@ fn generated_outputs_equal_the_interpreted_ones() {
 #[test]
 fn generated_code_is_generic_over_the_number_type() {
     // The same rhs in f32 and with dual numbers (the directional derivative along u1).
-    use kane_model::dual::Dual;
+    use kane_model::runtime::dual::Dual;
     let p = gimbal::Params::default();
     let y = [0.1, 0.2, 0.3, 0.4, 0.5, 10.0];
     let mut d64 = [0.0; 6];
@@ -135,7 +135,7 @@ fn direction_cosine_outputs_are_the_gimbal_rotations() {
     let p = gimbal::Params::default();
     let dcm = |name: &str, y: &[f64]| -> [[f64; 3]; 3] {
         let k = gimbal::INFO.output(name).unwrap();
-        assert_eq!(gimbal::INFO.outputs[k].kind, "dcm");
+        assert_eq!(gimbal::INFO.outputs[k].kind, kane_model::runtime::OutputKind::Dcm);
         let mut out = [0.0; 9];
         gimbal::Model::output(k, 0.0, y, &[], &p, &mut out);
         [[out[0], out[1], out[2]], [out[3], out[4], out[5]], [out[6], out[7], out[8]]]

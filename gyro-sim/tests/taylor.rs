@@ -11,7 +11,7 @@ use gyro_sim::ModelSystem;
 use gyro_sim::Scene;
 use gyro_sim::{gimbal_gyroscope as gimbal, heavy_top as top};
 use gyro_sim::{integrate, tableau::DOP853, Method, Tolerances};
-use kane_model::dual::Dual;
+use kane_model::runtime::dual::Dual;
 use kane_model::runtime::GeneratedModel;
 
 /// Coefficients of `model` at `(t, y)` in `f64` and, with `y = y + eps f(y)`, `t = t + eps`, in

@@ -5,7 +5,7 @@
 use nalgebra::{DMatrix, DVector};
 use thiserror::Error;
 
-use crate::runtime::ModelInfo;
+use crate::runtime::{ModelInfo, OutputKind};
 
 /// Newton steps before giving up.
 const MAX_ITERATIONS: usize = 50;
@@ -56,7 +56,7 @@ pub enum AssemblyError {
 
 /// The output holding a model's configuration residuals, if it has one.
 pub fn residual_output(info: &ModelInfo) -> Option<usize> {
-    info.outputs.iter().position(|o| o.kind == "configuration_residuals")
+    info.outputs.iter().position(|o| o.kind == OutputKind::ConfigurationResiduals)
 }
 
 /// The largest of `start` and the magnitudes of `values`; NaN when any of them is NaN (so a

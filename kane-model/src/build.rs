@@ -22,6 +22,14 @@ pub enum BuildError {
     /// The model file has errors (each with its line and column).
     #[error("{0}")]
     Model(#[from] crate::lang::Report),
+    /// The model file has no spec (no equations, or an OUTPUT it does not define).
+    #[error("{model}: {source}")]
+    Spec {
+        /// The model file.
+        model: String,
+        /// Why.
+        source: crate::lang::SpecError,
+    },
     /// The model cannot be turned into code.
     #[error("{model}: {source}")]
     Codegen {
@@ -48,9 +56,10 @@ pub fn generate_file(path: &Path, source: &str, options: &CodeOptions) -> Result
     let shown = path.display().to_string();
     let loaded = crate::lang::check_for_generation(&shown, source)?.model;
     let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
-    let codegen = |source| BuildError::Codegen { model: shown.clone(), source };
-    let mut spec = loaded.into_spec(&name).map_err(codegen)?;
-    crate::codegen::generate(&mut spec, options).map_err(codegen)
+    let mut spec =
+        loaded.into_spec(&name).map_err(|source| BuildError::Spec { model: shown.clone(), source })?;
+    crate::codegen::generate(&mut spec, options)
+        .map_err(|source| BuildError::Codegen { model: shown, source })
 }
 
 /// The generated code of the canonical system `name` of [`crate::models::builtin_spec`].

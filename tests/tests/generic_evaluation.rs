@@ -1,8 +1,8 @@
 //! One expression evaluated in f64, f32 and a dual-number type: the engine's
 //! evaluation is generic over `num_traits::Float`, and dual numbers give exact derivatives.
 
-use kane_model::dual::Dual;
 use kane_model::expr::{Arena, ExprId, SymbolId, Tape};
+use kane_model::runtime::dual::Dual;
 
 type Dual64 = Dual<f64>;
 

@@ -2,7 +2,7 @@
 //! [`BoundModel`]) and parameter values; out go the ODE system the steppers integrate, its
 //! outputs, and the same system without the cyclic coordinates nothing reads ([`Reduced`]).
 
-use kane_model::runtime::{GeneratedModel, ModelInfo};
+use kane_model::runtime::{GeneratedModel, ModelInfo, OutputKind};
 
 use crate::ode::{System, TaylorWork};
 
@@ -139,14 +139,14 @@ impl<S: System> System for Reduced<'_, S> {
     }
 }
 
-/// The output of `info` of kind `kind` (`kinetic_energy`, `configuration_residuals`, ...), if it
+/// The output of `info` of kind `kind` (kinetic energy, configuration residuals, ...), if it
 /// has one: the one place an output is found by its kind.
-pub(crate) fn output_of_kind(info: &ModelInfo, kind: &str) -> Option<usize> {
+pub(crate) fn output_of_kind(info: &ModelInfo, kind: OutputKind) -> Option<usize> {
     info.outputs.iter().position(|o| o.kind == kind)
 }
 
 /// The kinetic-energy output of a model, if it has one that reads no rates.
 pub(crate) fn kinetic_energy_output(info: &ModelInfo) -> Option<usize> {
-    output_of_kind(info, "kinetic_energy")
+    output_of_kind(info, OutputKind::KineticEnergy)
         .filter(|k| !info.outputs[*k].needs_rates && info.outputs[*k].columns.len() == 1)
 }

@@ -3,7 +3,7 @@
 //! dependent speeds' matrix, the trajectory's [`Constraints`] report.
 
 use kane_model::assembly::Assembly;
-use kane_model::runtime::ModelInfo;
+use kane_model::runtime::{ModelInfo, OutputKind};
 
 use super::bound::{output_of_kind, BoundModel};
 use super::diagnose;
@@ -28,10 +28,10 @@ pub(crate) struct Residuals {
 impl Residuals {
     /// Tracking for `info`'s residual outputs (none: nothing is computed).
     pub(crate) fn of(info: &ModelInfo) -> Residuals {
-        let find = |kind: &str| output_of_kind(info, kind);
+        let find = |kind: OutputKind| output_of_kind(info, kind);
         Residuals {
-            outputs: [find("configuration_residuals"), find("motion_residuals")],
-            matrix: find("constraint_matrix"),
+            outputs: [find(OutputKind::ConfigurationResiduals), find(OutputKind::MotionResiduals)],
+            matrix: find(OutputKind::ConstraintMatrix),
             ..Default::default()
         }
     }

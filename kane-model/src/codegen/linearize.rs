@@ -4,7 +4,7 @@
 //! (the parameter-only `derive` section included for inputs, and the numeric constraint solve
 //! with it): exact to rounding, with no symbolic differentiation and no finite differences.
 
-use crate::dual::Dual;
+use crate::runtime::dual::Dual;
 
 use super::ir::{Input, Program};
 

@@ -2,8 +2,8 @@
 //! [`Meta`] (names, units, outputs), which the printer spells as a `ModelInfo` literal and
 //! [`Meta::leak`] turns into a `ModelInfo` at run time.
 
-use crate::runtime::{ModelInfo, OutputInfo};
-use crate::spec::ModelSpec;
+use crate::runtime::{ModelInfo, OutputInfo, OutputKind};
+use crate::spec::{self, ModelSpec, OrientationForm};
 
 use super::lower::Lowered;
 
@@ -14,8 +14,8 @@ pub struct OutputMeta {
     pub name: String,
     /// Its unit.
     pub unit: String,
-    /// Its kind label.
-    pub kind: String,
+    /// What it is.
+    pub kind: OutputKind,
     /// Its column names.
     pub columns: Vec<String>,
     /// The states it reads.
@@ -67,7 +67,7 @@ impl Meta {
             .map(|(o, code)| OutputMeta {
                 name: o.name.clone(),
                 unit: o.unit.clone(),
-                kind: o.kind.label().to_string(),
+                kind: output_kind(&o.kind),
                 columns: o.columns(),
                 reads: code.reads.clone(),
                 needs_rates: code.needs_rates,
@@ -77,7 +77,7 @@ impl Meta {
             .outputs
             .iter()
             .filter_map(|o| match &o.kind {
-                crate::spec::OutputKind::ConfigurationResiduals { dependent } => Some(dependent),
+                spec::OutputKind::ConfigurationResiduals { dependent } => Some(dependent),
                 _ => None,
             })
             .flatten()
@@ -107,7 +107,7 @@ impl Meta {
             .map(|o| OutputInfo {
                 name: leak_str(&o.name),
                 unit: leak_str(&o.unit),
-                kind: leak_str(&o.kind),
+                kind: o.kind,
                 columns: leak_strs(&o.columns),
                 reads: Box::leak(o.reads.clone().into_boxed_slice()),
                 needs_rates: o.needs_rates,
@@ -126,6 +126,23 @@ impl Meta {
             op_counts: self.op_counts,
             taylor_straight_line: Box::leak(self.taylor_straight_line.clone().into_boxed_slice()),
         }))
+    }
+}
+
+/// The runtime kind of a spec's output kind (its frame, point or size left out).
+fn output_kind(kind: &spec::OutputKind) -> OutputKind {
+    use spec::OutputKind as S;
+    match kind {
+        S::Scalar => OutputKind::Scalar,
+        S::Vector { .. } => OutputKind::Vector,
+        S::Orientation { form: OrientationForm::Dcm, .. } => OutputKind::Dcm,
+        S::Orientation { form: OrientationForm::Quaternion, .. } => OutputKind::Quaternion,
+        S::KineticEnergy => OutputKind::KineticEnergy,
+        S::PotentialEnergy => OutputKind::PotentialEnergy,
+        S::AngularMomentum { .. } => OutputKind::AngularMomentum,
+        S::ConfigurationResiduals { .. } => OutputKind::ConfigurationResiduals,
+        S::MotionResiduals => OutputKind::MotionResiduals,
+        S::ConstraintMatrix { .. } => OutputKind::ConstraintMatrix,
     }
 }
 

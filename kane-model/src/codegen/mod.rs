@@ -2,6 +2,13 @@
 //! out goes a Rust module with a straight-line `rhs` generic over `num_traits::Float`, one
 //! function per output, and the model's runtime metadata.
 //!
+//! The crate's layers, in the order data flows through them: `expr` -> `mechanics` -> `spec` ->
+//! `codegen` (this module) -> [`crate::runtime`]. Each uses only the layers before it and
+//! `runtime`, what generated code reaches: a leaf that uses nothing else in the crate (this
+//! module's evaluators run its recurrences; its metadata are runtime types). The model
+//! language, `lang`, sits above them all and is never read here: event expressions arrive as
+//! expressions ([`event::lower`]), specs as specs.
+//!
 //! The stages are modules: [`lower`] turns the spec into one [`ir::Program`] (SSA sections for
 //! `derive`, `rhs` with `M u' = f` solved inside it, and each output); `print` spells that
 //! program in Rust; [`taylor`] turns `rhs` into Taylor-coefficient recurrences, printed beside it.
@@ -32,15 +39,9 @@ pub use program_model::ProgramModel;
 /// Why a model cannot be turned into code.
 #[derive(Clone, Debug, PartialEq, Error)]
 pub enum CodegenError {
-    /// The model file does not call KANE().
-    #[error("the model derives no equations: call KANE() in the model file")]
-    NoEquations,
     /// A symbol the equations need is neither a state, a parameter nor time.
     #[error("`{0}` is a time-dependent quantity that is not a state and has no formula: give it one in the file (`{0} = ...`, after KANE() too) or in a gyro-sim scene's [specified] table; tables of values in time are not supported")]
     UnsupportedSymbol(String),
-    /// An OUTPUT name that is not a scalar or vector the model defines.
-    #[error("OUTPUT `{0}` is not a state, nor a scalar or vector defined in the model")]
-    UnknownOutput(String),
     /// An expression operation failed.
     #[error(transparent)]
     Expr(#[from] crate::expr::ExprError),
@@ -63,10 +64,11 @@ pub struct CodeOptions {
 }
 
 impl CodeOptions {
-    /// Everything: Taylor coefficients with straight-line code at [`taylor::UNROLLED_ORDERS`],
-    /// and lanes.
+    /// Everything: Taylor coefficients with straight-line code at
+    /// [`crate::runtime::TAYLOR_UNROLLED_ORDERS`], and lanes.
     pub fn everything() -> CodeOptions {
-        CodeOptions { taylor: true, taylor_orders: taylor::UNROLLED_ORDERS.to_vec(), lanes: true }
+        let taylor_orders = crate::runtime::TAYLOR_UNROLLED_ORDERS.to_vec();
+        CodeOptions { taylor: true, taylor_orders, lanes: true }
     }
 }
 

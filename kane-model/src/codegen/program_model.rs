@@ -3,7 +3,7 @@
 //! same SSA sections the printer spells, so both paths compute the same operations.
 
 use crate::assembly::{Assembly, AssemblyError};
-use crate::dual::Dual;
+use crate::runtime::dual::Dual;
 use crate::runtime::{quaternion_from_dcm, ModelInfo, TaylorWork};
 use crate::spec::ModelSpec;
 
@@ -103,7 +103,7 @@ impl ProgramModel {
 
     /// The normalised Taylor coefficients of the solution through `(t, y)` up to `order` into
     /// `out` (state-major, `order + 1` per state; see [`TaylorProgram::coefficients`]); false
-    /// for an order above [`super::taylor::recur::MAX_ORDER`].
+    /// for an order above [`crate::runtime::TAYLOR_MAX_ORDER`].
     #[allow(clippy::too_many_arguments)]
     pub fn taylor(
         &self,

@@ -154,15 +154,7 @@ impl Func {
             Func::Exp => x.exp(),
             Func::Ln => x.ln(),
             Func::Abs => x.abs(),
-            Func::Sign => {
-                if x > T::zero() {
-                    T::one()
-                } else if x < T::zero() {
-                    -T::one()
-                } else {
-                    T::zero()
-                }
-            }
+            Func::Sign => crate::runtime::sign(x),
             Func::Sinh => x.sinh(),
             Func::Cosh => x.cosh(),
             Func::Tanh => x.tanh(),

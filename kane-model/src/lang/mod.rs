@@ -18,6 +18,7 @@ mod check;
 mod compare;
 mod diagnostic;
 mod eoms;
+pub mod event;
 mod interp;
 mod parser;
 mod present;
@@ -38,6 +39,7 @@ pub use interp::{Bookkeeping, CodeRequest, InputValue, LoadedModel};
 pub use parser::parse_expression;
 pub use present::Presenter;
 pub use show::show;
+pub use to_spec::SpecError;
 pub use token::Span;
 
 /// Parses a program; every syntax error is reported.

@@ -2,16 +2,34 @@
 //! file's equations, INPUT defaults, UNITS, its OUTPUT scalars, the residuals of its
 //! configuration and motion constraints (`CONFIG`, `CONSTRAINT`) and the kinetic energy.
 
-use crate::codegen::CodegenError;
+use thiserror::Error;
+
 use crate::mechanics::FrameId;
 use crate::spec::{ModelSpec, OrientationForm};
 
 use super::{LoadedModel, Value};
 
+/// Why a loaded model file has no spec.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum SpecError {
+    /// The model file does not call KANE().
+    #[error("the model derives no equations: call KANE() in the model file")]
+    NoEquations,
+    /// An OUTPUT name that is not a scalar or vector the model defines.
+    #[error("OUTPUT `{0}` is not a state, nor a scalar or vector defined in the model")]
+    UnknownOutput(String),
+    /// An expression operation failed.
+    #[error(transparent)]
+    Expr(#[from] crate::expr::ExprError),
+    /// A mechanics operation failed.
+    #[error(transparent)]
+    Mechanics(#[from] crate::mechanics::MechanicsError),
+}
+
 impl LoadedModel {
     /// The spec of this model file, named `name` (the model moves into it).
-    pub fn into_spec(mut self, name: &str) -> Result<ModelSpec, CodegenError> {
-        let eqs = self.equations.clone().ok_or(CodegenError::NoEquations)?;
+    pub fn into_spec(mut self, name: &str) -> Result<ModelSpec, SpecError> {
+        let eqs = self.equations.clone().ok_or(SpecError::NoEquations)?;
         let mut formulas = super::interp::specified_formulas(&mut self.model, &self.bindings)?;
         // Auxiliary speeds are zero in every motion the outputs are computed along.
         formulas.extend(self.model.auxiliary_zero_map()?);
@@ -31,7 +49,7 @@ impl LoadedModel {
                 Output::Value(Value::Vector(v)) => spec.add_vector(oname, &v, n, &unit)?,
                 Output::Value(Value::Scalar(e)) => spec.add_scalar(oname, e, &unit),
                 Output::Orientation(f) => spec.add_orientation(oname, f, OrientationForm::Dcm)?,
-                Output::Value(_) => return Err(CodegenError::UnknownOutput(oname.to_string())),
+                Output::Value(_) => return Err(SpecError::UnknownOutput(oname.to_string())),
             }
         }
         spec.add_configuration_residuals("CONFIG", "")?;
@@ -53,7 +71,7 @@ impl LoadedModel {
     fn output_values(
         &self,
         eqs: &crate::mechanics::KaneEquations,
-    ) -> Result<Vec<(String, Output)>, CodegenError> {
+    ) -> Result<Vec<(String, Output)>, SpecError> {
         let mut out = Vec::new();
         for (oname, _) in &self.outputs {
             let is_state = eqs
@@ -83,7 +101,7 @@ impl LoadedModel {
                 }
                 _ => match self.newtonian_dcm_of(oname) {
                     Some(f) => out.push((bare.to_string(), Output::Orientation(f))),
-                    None => return Err(CodegenError::UnknownOutput(oname.clone())),
+                    None => return Err(SpecError::UnknownOutput(oname.clone())),
                 },
             }
         }

@@ -61,24 +61,6 @@ pub enum OutputKind {
     },
 }
 
-impl OutputKind {
-    /// A name for the kind, as generated metadata carries it.
-    pub fn label(&self) -> &'static str {
-        match self {
-            OutputKind::Scalar => "scalar",
-            OutputKind::Vector { .. } => "vector",
-            OutputKind::Orientation { form: OrientationForm::Dcm, .. } => "dcm",
-            OutputKind::Orientation { form: OrientationForm::Quaternion, .. } => "quaternion",
-            OutputKind::KineticEnergy => "kinetic_energy",
-            OutputKind::PotentialEnergy => "potential_energy",
-            OutputKind::AngularMomentum { .. } => "angular_momentum",
-            OutputKind::ConfigurationResiduals { .. } => "configuration_residuals",
-            OutputKind::MotionResiduals => "motion_residuals",
-            OutputKind::ConstraintMatrix { .. } => "constraint_matrix",
-        }
-    }
-}
-
 /// One output: its name, unit, kind and scalar components (in the states, parameters, time and
 /// the speed rates `u'`).
 #[derive(Clone, Debug, PartialEq)]

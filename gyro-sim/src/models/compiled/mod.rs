@@ -214,7 +214,7 @@ fn write_model(
     std::fs::write(dir.join(&model_file), &file.source).map_err(io)?;
     let path = |c: &str| format!("{:?}", sources.join(c).display().to_string());
     let manifest = format!(
-        "[package]\nname = \"gyro-models\"\nversion = \"0.0.0\"\nedition = \"2021\"\npublish = false\nautobins = true\n\n[dependencies]\ngyro-sim = {{ path = {} }}\nkane-derive = {{ path = {} }}\nkane-model = {{ path = {} }}\n\n[profile.release]\ndebug = false\n\n[workspace]\n",
+        "[package]\nname = \"gyro-models\"\nversion = \"0.0.0\"\nedition = \"2021\"\npublish = false\nautobins = true\n\n[dependencies]\ngyro-sim = {{ path = {} }}\nkane-derive = {{ path = {} }}\nkane-model = {{ path = {}, default-features = false }}\n\n[profile.release]\ndebug = false\n\n[workspace]\n",
         path("gyro-sim"),
         path("kane-derive"),
         path("kane-model"),

@@ -123,8 +123,8 @@ fn panel_of(table: &Table, g: Vec<usize>) -> Panel<'_> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::super::{Column, Table};
     use super::{panels, vector_component};
+    use crate::output::display::{Column, Table};
 
     #[test]
     fn eighteen_rates_are_split_over_panels_of_at_most_six() {

@@ -13,7 +13,7 @@ pub(crate) use probe::probe;
 
 use kane_model::codegen::ProgramModel;
 use kane_model::mechanics::{reciprocal_condition, CONSTRAINT_RCOND_LIMIT};
-use kane_model::runtime::ModelInfo;
+use kane_model::runtime::{ModelInfo, OutputKind};
 
 use super::bound::{kinetic_energy_output, output_of_kind, BoundModel};
 use crate::problem::Problem;
@@ -139,7 +139,7 @@ fn singular_mass_matrix<B: BoundModel>(
 /// The smallest over the largest singular value of the motion constraints' matrix of
 /// dependent speeds at `(t, y)`, when the model has that matrix as an output.
 pub(crate) fn constraint_rcond<B: BoundModel>(sys: &B, t: f64, y: &[f64]) -> Option<f64> {
-    let k = output_of_kind(sys.info(), "constraint_matrix")?;
+    let k = output_of_kind(sys.info(), OutputKind::ConstraintMatrix)?;
     Some(matrix_rcond(sys, k, t, y, &mut Vec::new()))
 }
 

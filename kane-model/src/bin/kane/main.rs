@@ -300,9 +300,9 @@ fn linearize(file: PathBuf, set: Vec<String>, inputs: Vec<String>, json: bool) -
     let loaded = lang::check_for_generation(&file.display().to_string(), &src).map_err(|r| r.render())?.model;
     let values = values_with_sets(&loaded, &set)?;
     let name = file.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
-    let fail = |e: kane_model::codegen::CodegenError| format!("{}: {e}", file.display());
-    let mut spec = loaded.into_spec(&name).map_err(fail)?;
-    let model = kane_model::codegen::ProgramModel::new(&mut spec).map_err(fail)?;
+    let fail = |e: &dyn std::fmt::Display| format!("{}: {e}", file.display());
+    let mut spec = loaded.into_spec(&name).map_err(|e| fail(&e))?;
+    let model = kane_model::codegen::ProgramModel::new(&mut spec).map_err(|e| fail(&e))?;
     let info = model.info();
     let upper = |s: &&str| s.to_ascii_uppercase();
     let missing: Vec<String> = info

@@ -2,7 +2,7 @@
 //! (names, units, outputs with their columns and the states they read).
 
 use proc_macro2::TokenStream;
-use quote::quote;
+use quote::{format_ident, quote};
 
 use super::super::meta::Meta;
 
@@ -24,11 +24,12 @@ pub fn info(meta: &Meta) -> TokenStream {
     let outputs = meta.outputs.iter().map(|o| {
         let (oname, unit, kind, columns, reads) = (&o.name, &o.unit, &o.kind, &o.columns, &o.reads);
         let needs_rates = o.needs_rates;
+        let kind = format_ident!("{kind:?}");
         quote! {
             ::kane_model::runtime::OutputInfo {
                 name: #oname,
                 unit: #unit,
-                kind: #kind,
+                kind: ::kane_model::runtime::OutputKind::#kind,
                 columns: &[#(#columns),*],
                 reads: &[#(#reads),*],
                 needs_rates: #needs_rates,

@@ -194,7 +194,7 @@ fn functions(program: &Program, params: &[Ident], quaternion: &[bool]) -> TokenS
         /// The Jacobian `d(y')/dy` at `(t, y)`, row-major, exact to round-off: one pass of `rhs`
         /// in dual numbers per column.
         pub fn jacobian(t: f64, y: &[f64], p: &Params, jac: &mut [f64]) {
-            use ::kane_model::dual::Dual;
+            use ::kane_model::runtime::dual::Dual;
             let mut yd = [Dual::new(0.0, 0.0); #ns];
             let mut dyd = [Dual::new(0.0, 0.0); #ns];
             for col in 0..#ns {
@@ -268,7 +268,7 @@ fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident], taylor: boo
                 &d.v
             }
             fn output_rate(k: usize, t: f64, y: &[f64], dy: &[f64], p: &Params, out: &mut [f64], rate: &mut [f64]) {
-                use ::kane_model::dual::Dual;
+                use ::kane_model::runtime::dual::Dual;
                 let mut yd = [Dual::new(0.0, 0.0); #ns];
                 for ((v, a), b) in yd.iter_mut().zip(y).zip(dy) {
                     *v = Dual::new(*a, *b);

@@ -146,7 +146,7 @@ fn call(kind: TKind, d: usize, k: TokenStream) -> TokenStream {
         TKind::Cosh(a, s) => ("cosh", vec![lit(a), lit(s)]),
         TKind::Integral(f, a, q) => {
             let f = format_ident!("{}", format!("{f:?}"));
-            ("integral", vec![lit(a), lit(q), quote!(::kane_model::expr::Func::#f)])
+            ("integral", vec![lit(a), lit(q), quote!(__t::Inverse::#f)])
         }
         TKind::Atan2(y, x, r) => ("atan2", vec![lit(y), lit(x), lit(r)]),
         TKind::Abs(a) => ("abs", vec![lit(a)]),

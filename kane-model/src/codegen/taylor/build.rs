@@ -7,6 +7,7 @@
 use rustc_hash::FxHashMap;
 
 use crate::expr::Func;
+use crate::runtime::taylor::Inverse;
 
 use super::super::ir::{Input, Op, Section};
 use super::{TKind, TaylorError, TaylorOp, TaylorProgram};
@@ -123,16 +124,16 @@ impl Builder {
                 let one = self.constant(1.0);
                 let sq = self.mul(a, a);
                 let q = self.push(TKind::Add(one, sq), &[one, sq]);
-                self.push(TKind::Integral(f, a, q), &[a, q])
+                self.push(TKind::Integral(Inverse::Atan, a, q), &[a, q])
             }
             Func::Asin => {
                 let q = self.cosine_of_arcsine(a);
-                self.push(TKind::Integral(f, a, q), &[a, q])
+                self.push(TKind::Integral(Inverse::Asin, a, q), &[a, q])
             }
             Func::Acos => {
                 let root = self.cosine_of_arcsine(a);
                 let q = self.push(TKind::Neg(root), &[root]);
-                self.push(TKind::Integral(f, a, q), &[a, q])
+                self.push(TKind::Integral(Inverse::Acos, a, q), &[a, q])
             }
         }
     }

@@ -1,28 +1,22 @@
 //! Taylor coefficients of the solution: in comes the `rhs` section of a lowered program (the
 //! mass-matrix solve included); out goes a [`TaylorProgram`], the same computation as operations
-//! with normalised-derivative recurrences ([`recur`]), which [`TaylorProgram::coefficients`]
-//! runs over any `Float` and the printer spells as Rust. Given `y(t)`, it gives
-//! `y_0 .. y_p` with `y(t + h) = sum_k y_k h^k + O(h^(p+1))`: pass `k` computes coefficient `k`
-//! of every value, and the states' next coefficient is `y_{k+1} = f_k / (k + 1)`.
+//! with normalised-derivative recurrences ([`crate::runtime::taylor`]), which
+//! [`TaylorProgram::coefficients`] runs over any `Float` and the printer spells as Rust. Given
+//! `y(t)`, it gives `y_0 .. y_p` with `y(t + h) = sum_k y_k h^k + O(h^(p+1))`: pass `k` computes
+//! coefficient `k` of every value, and the states' next coefficient is `y_{k+1} = f_k / (k + 1)`.
 
 mod build;
 mod linear;
-pub mod recur;
 
 use num_traits::Float;
 use thiserror::Error;
 
-use crate::expr::Func;
+use crate::runtime::taylor as recur;
+use crate::runtime::taylor::Inverse;
 
 use super::ir::{Input, Section};
 
 pub use build::build;
-
-/// The orders a model asks straight-line code for by default (one function each, every loop
-/// written out), spread over those the Taylor stepper takes at tolerances 1e-4 to 1e-16 (it
-/// picks the one of a model's orders nearest the order it would choose). Not every order: each
-/// costs build time.
-pub const UNROLLED_ORDERS: &[usize] = &[8, 12, 14, 16, 20];
 
 /// The largest straight-line pass count ([`TaylorProgram::straight_line_cost`]) written out:
 /// past it the loop is as fast (measured: BENCHMARKS.md, "Straight-line or loop") and the code
@@ -92,7 +86,7 @@ pub enum TKind {
     /// `cosh(a)`, with its partner `sinh(a)`.
     Cosh(u32, u32),
     /// `f(a)` with `f(a)' = a' / q` (atan, asin, acos).
-    Integral(Func, u32, u32),
+    Integral(Inverse, u32, u32),
     /// `atan2(y, x)` with `r = x^2 + y^2`.
     Atan2(u32, u32, u32),
     /// `|a|`.
@@ -178,7 +172,7 @@ impl TaylorProgram {
     /// The normalised Taylor coefficients of the solution through `(t, y)`, orders `0..=order`,
     /// into `out` (state-major: state `i`'s coefficient `k` at `out[i * (order + 1) + k]`);
     /// `read` gives parameters and derived quantities; `work` is scratch (reused to save
-    /// allocating). False (nothing done) for an order above [`recur::MAX_ORDER`].
+    /// allocating). False (nothing done) for an order above [`crate::runtime::TAYLOR_MAX_ORDER`].
     pub fn coefficients<T: Float>(
         &self,
         t: T,

@@ -1,4 +1,4 @@
-//! The recurrences of [`crate::codegen::taylor::recur`] written out for one order `k` known when
+//! The recurrences of [`crate::runtime::taylor`] written out for one order `k` known when
 //! printing: in come an operation and how to name any earlier coefficient; out goes coefficient
 //! `k` as one expression, every sum term by term, each product added by a fused multiply-add:
 //! the loop functions' numbers to rounding.
@@ -109,7 +109,7 @@ pub fn coefficient(kind: TKind, c: Coef, d: u32, k: usize) -> X {
         (TKind::Cos(a, s), _) => div_count(weighted(c, k, a, s, k).negated(), k),
         (TKind::Integral(f, a, _), 0) => {
             let (f, a) = (format_ident!("{}", format!("{f:?}")), c(a, 0).tokens());
-            X::atom(quote!(::kane_model::expr::Func::#f.apply(#a)))
+            X::atom(quote!(__t::Inverse::#f.apply(#a)))
         }
         (TKind::Integral(_, a, q), _) => {
             let s = weighted(c, k, d, q, k - 1);

@@ -11,7 +11,7 @@ use num_traits::{Float, Num, NumCast, One, ToPrimitive, Zero};
 ///
 /// # Example
 /// ```
-/// use kane_model::dual::Dual;
+/// use kane_model::runtime::dual::Dual;
 /// use num_traits::Float;
 /// let x = Dual::variable(0.5_f64);
 /// let y = (x * x).sin();

@@ -1,21 +1,42 @@
-//! The recurrences: in comes a work array of normalised Taylor coefficients, one row per value
+//! The Taylor-coefficient recurrences generated `taylor` functions call: in comes a work array of normalised Taylor coefficients, one row per value
 //! (value `v`'s coefficient `k` at `w[v][k]`, so `v(t + h) = sum_k w[v][k] h^k`), whose operands
 //! are known through order `k`; out goes coefficient `k` of one value. Order 0 is the plain
-//! operation. The evaluator ([`super::TaylorProgram::coefficients`]) and generated code call the
-//! same functions, so both compute the same numbers. Rows have a fixed length
+//! operation. The code generator's evaluator (`TaylorProgram::coefficients`) and generated code
+//! call the same functions, so both compute the same numbers. Rows have a fixed length
 //! ([`MAX_ORDER`]` + 1`), so generated code indexes them without multiplications.
 //!
 //! Operands come before the value they define (SSA), so every function reads before it writes.
 
 use num_traits::Float;
 
-use crate::expr::Func;
-
 /// The highest order a Taylor expansion takes (a step at tolerance 1e-16 takes 20).
 pub const MAX_ORDER: usize = 32;
 
 /// One value's coefficients, orders `0..=MAX_ORDER`.
 pub type Row<T> = [T; MAX_ORDER + 1];
+
+/// An inverse function `f` whose derivative is `f(a)' = a' / q` ([`integral`] takes it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Inverse {
+    /// `atan(a)`, with `q = 1 + a^2`.
+    Atan,
+    /// `asin(a)`, with `q = sqrt(1 - a^2)`.
+    Asin,
+    /// `acos(a)`, with `q = -sqrt(1 - a^2)`.
+    Acos,
+}
+
+impl Inverse {
+    /// The function's value at `x`.
+    #[inline(always)]
+    pub fn apply<T: Float>(self, x: T) -> T {
+        match self {
+            Inverse::Atan => x.atan(),
+            Inverse::Asin => x.asin(),
+            Inverse::Acos => x.acos(),
+        }
+    }
+}
 
 /// Whether this CPU has fused multiply-add, which the straight-line coefficients are compiled
 /// for (x86 checks at run time, once; AArch64 always has it).
@@ -195,7 +216,7 @@ pub fn cosh<T: Float>(w: &mut [Row<T>], k: usize, d: usize, a: usize, s: usize) 
 /// `d = f(a)` where `d' = a' / q` (atan: `q = 1 + a^2`; asin: `q = sqrt(1 - a^2)`; acos:
 /// `q = -sqrt(1 - a^2)`): `k d_k = (k a_k - sum_{i=1}^{k-1} q_i (k-i) d_{k-i}) / q_0`.
 #[inline(always)]
-pub fn integral<T: Float>(w: &mut [Row<T>], k: usize, d: usize, a: usize, q: usize, f: Func) {
+pub fn integral<T: Float>(w: &mut [Row<T>], k: usize, d: usize, a: usize, q: usize, f: Inverse) {
     if k == 0 {
         w[d][0] = f.apply(w[a][0]);
         return;
@@ -229,7 +250,7 @@ pub fn abs<T: Float>(w: &mut [Row<T>], k: usize, d: usize, a: usize) {
 /// `d = sign(a)`: constant while `a` keeps its sign.
 #[inline(always)]
 pub fn sign<T: Float>(w: &mut [Row<T>], k: usize, d: usize, a: usize) {
-    w[d][k] = if k == 0 { Func::Sign.apply(w[a][0]) } else { T::zero() };
+    w[d][k] = if k == 0 { super::sign(w[a][0]) } else { T::zero() };
 }
 
 /// Rows ready for an expansion of `order` (at most [`MAX_ORDER`]; false, nothing done, above):
