@@ -46,14 +46,11 @@ pub(super) fn tick_labels(lo: f64, hi: f64) -> impl Fn(&f64) -> String {
 /// An axis tick's label: at most 6 significant digits, trailing zeros dropped, never `-0` (so
 /// neither `-0.0` nor `0.6000000000000001`); very large or small magnitudes in exponent form.
 pub(super) fn tick_label(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return if v.is_nan() {
-            "NaN".into()
-        } else if v == 0.0 {
-            "0".into()
-        } else {
-            format!("{v}")
-        };
+    if v == 0.0 {
+        return "0".into();
+    }
+    if !v.is_finite() {
+        return format!("{v}");
     }
     let magnitude = v.abs().log10().floor() as i32;
     if !(-4..7).contains(&magnitude) {
@@ -61,13 +58,9 @@ pub(super) fn tick_label(v: f64) -> String {
         let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
         return format!("{}e{exponent}", trimmed(mantissa));
     }
+    // Five decimals past the leading digit: a value this large never rounds to zero.
     let decimals = (5 - magnitude).clamp(0, 10) as usize;
-    let text = trimmed(&format!("{v:.decimals$}")).to_string();
-    if text == "-0" {
-        "0".into()
-    } else {
-        text
-    }
+    trimmed(&format!("{v:.decimals$}")).to_string()
 }
 
 /// A decimal number's text without trailing zeros after its point (nor the point itself).
