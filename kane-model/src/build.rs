@@ -27,7 +27,7 @@ pub enum BuildError {
     Spec {
         /// The model file.
         model: String,
-        /// Why.
+        /// Why the model text did not become a spec.
         source: crate::lang::SpecError,
     },
     /// The model cannot be turned into code.
@@ -35,7 +35,7 @@ pub enum BuildError {
     Codegen {
         /// The model file or name.
         model: String,
-        /// Why.
+        /// Why the spec could not be lowered to code.
         source: CodegenError,
     },
     /// The generated tokens are not a Rust file (a bug in the printer).

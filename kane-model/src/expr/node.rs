@@ -61,11 +61,11 @@ impl SymbolKind {
 /// A one-argument elementary function.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
 pub enum Func {
-    /// Sine.
+    /// The sine, `sin(x)`.
     Sin,
-    /// Cosine.
+    /// The cosine, `cos(x)`.
     Cos,
-    /// Tangent.
+    /// The tangent, `tan(x)`.
     Tan,
     /// Arc sine.
     Asin,

@@ -24,9 +24,9 @@ fn gcd(mut a: i128, mut b: i128) -> i128 {
 }
 
 impl Rational {
-    /// Zero.
+    /// The rational zero, 0/1.
     pub const ZERO: Rational = Rational { num: 0, den: 1 };
-    /// One.
+    /// The rational one, 1/1.
     pub const ONE: Rational = Rational { num: 1, den: 1 };
     /// Minus one.
     pub const MINUS_ONE: Rational = Rational { num: -1, den: 1 };
@@ -241,7 +241,7 @@ impl Number {
         }
     }
 
-    /// Negation.
+    /// The number negated; an error when that overflows.
     pub fn checked_neg(self) -> Result<Number, ExprError> {
         match self {
             Number::Rational(a) => Ok(Number::Rational(a.checked_neg()?)),

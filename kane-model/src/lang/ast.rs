@@ -47,7 +47,7 @@ pub enum BinOp {
 pub enum ExprKind {
     /// A number as written, with trailing `>` count (`0>` is the zero vector, `1>>` the unit dyadic).
     Number {
-        /// Value.
+        /// The literal's value.
         value: f64,
         /// Number of `>`.
         suffix: u8,
@@ -65,14 +65,14 @@ pub enum ExprKind {
     Call {
         /// Function name as written.
         name: String,
-        /// Arguments.
+        /// The call's arguments, in order.
         args: Vec<Expr>,
     },
     /// `NAME[i, j]`, possibly with primes inside (`DEPENDENT[Q1']`).
     Index {
         /// Array name.
         name: String,
-        /// Indices.
+        /// The index expressions, in order.
         args: Vec<Expr>,
     },
     /// `[a, b; c, d]`.
@@ -127,7 +127,7 @@ pub struct DeclItem {
     pub sign: Option<char>,
     /// Value given with `=`.
     pub value: Option<Expr>,
-    /// Where.
+    /// Where the declared name is in the file.
     pub span: Span,
 }
 
@@ -153,7 +153,7 @@ pub struct Target {
     pub suffix: u8,
     /// Indices (`EQN[1] = ...`).
     pub index: Option<Vec<Expr>>,
-    /// Where.
+    /// Where the target is in the file.
     pub span: Span,
 }
 
@@ -162,7 +162,7 @@ pub struct Target {
 pub enum StmtKind {
     /// A declaration.
     Declare {
-        /// Which.
+        /// Which kind of name is declared.
         kind: DeclKind,
         /// The names.
         items: Vec<DeclItem>,
@@ -226,13 +226,13 @@ pub enum StmtKind {
 pub struct InputItem {
     /// Name as written.
     pub name: String,
-    /// Primes.
+    /// How many primes follow the name (time derivatives).
     pub primes: u8,
-    /// Value.
+    /// The value given (an expression).
     pub value: Expr,
     /// Unit word after the value (`DEG`), if any.
     pub unit: Option<String>,
-    /// Where.
+    /// Where the item is in the file.
     pub span: Span,
 }
 
@@ -241,6 +241,6 @@ pub struct InputItem {
 pub struct Stmt {
     /// What it is.
     pub kind: StmtKind,
-    /// Where.
+    /// Where the command is in the file.
     pub span: Span,
 }

@@ -44,7 +44,7 @@ pub struct Token {
 /// A character the lexer does not know.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LexError {
-    /// Where.
+    /// Where the character is in the file.
     pub span: Span,
     /// The character.
     pub ch: char,

@@ -24,19 +24,19 @@ pub enum Shape {
     },
     /// Solid sphere of radius `r`: `2 m r^2 / 5` about every axis.
     SolidSphere {
-        /// Radius.
+        /// The radius of the shape.
         r: ExprId,
     },
     /// Solid cylinder of radius `r` and length `l` along axis 3.
     SolidCylinder {
-        /// Radius.
+        /// The radius of the shape.
         r: ExprId,
-        /// Length.
+        /// The length along the axis.
         l: ExprId,
     },
     /// Thin rod of length `l` along axis 3: `m l^2 / 12` transverse, zero axial.
     ThinRod {
-        /// Length.
+        /// The length along the axis.
         l: ExprId,
     },
     /// Box with edge lengths `a, b, c` along axes 1, 2, 3: `m (b^2 + c^2) / 12`, ...
@@ -50,7 +50,7 @@ pub enum Shape {
     },
     /// Thin disk of radius `r` with normal along axis 3: `m r^2 / 4` transverse, `m r^2 / 2` axial.
     ThinDisk {
-        /// Radius.
+        /// The radius of the shape.
         r: ExprId,
     },
 }

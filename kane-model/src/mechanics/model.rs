@@ -72,7 +72,7 @@ pub struct Body {
     pub frame: FrameId,
     /// Mass centre.
     pub mass_center: PointId,
-    /// Mass.
+    /// The body's mass, once given.
     pub mass: Option<ExprId>,
     /// Inertia dyadic about the mass centre.
     pub inertia: Option<Dyadic>,
@@ -81,11 +81,11 @@ pub struct Body {
 /// A particle: a point with a mass.
 #[derive(Clone, Debug)]
 pub struct Particle {
-    /// Name.
+    /// The particle's name as declared.
     pub name: String,
     /// Where it is.
     pub point: PointId,
-    /// Mass.
+    /// The particle's mass, once given.
     pub mass: Option<ExprId>,
 }
 

@@ -20,7 +20,7 @@ use num_traits::{Float, Num, NumCast, One, ToPrimitive, Zero};
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 pub struct Dual<T> {
-    /// Value.
+    /// The value (real part).
     pub re: T,
     /// Derivative part.
     pub eps: T,

@@ -98,7 +98,7 @@ enum Points {
     Grid(Vec<usize>),
     /// A Latin-hypercube sample: each member's fractions made from its index.
     Sample {
-        /// Members.
+        /// How many members the sweep has.
         count: usize,
         /// The seed the strata's order and the points inside them come from.
         seed: u64,

@@ -39,7 +39,7 @@ pub(crate) struct Sources {
 pub(crate) struct LoadSource {
     /// The load, as an assignment names it: `FORCE_P>` or `TORQUE_B>`.
     pub(crate) name: String,
-    /// Where.
+    /// Where the statement is in the file.
     pub(crate) span: Span,
     /// An assignment (`TORQUE_B> = ...`), not a FORCE or TORQUE command.
     pub(crate) assigned: bool,

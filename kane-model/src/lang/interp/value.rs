@@ -17,9 +17,9 @@ pub enum Value {
     Dyadic(Dyadic),
     /// A matrix of scalars, row-major.
     Matrix {
-        /// Rows.
+        /// The number of rows.
         rows: usize,
-        /// Columns.
+        /// The number of columns.
         cols: usize,
         /// Entries, row by row.
         data: Vec<ExprId>,

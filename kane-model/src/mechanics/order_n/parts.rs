@@ -12,7 +12,7 @@ use super::tree::{parameter_only, reads_only, Attach, Links};
 /// The mass properties of one link about its pivot, in link components.
 #[derive(Clone, Debug)]
 pub(crate) struct LinkMass {
-    /// Mass.
+    /// The mass of the part.
     pub mass: ExprId,
     /// First moment: mass times the mass centre's offset from the pivot.
     pub moment: V3,
