@@ -38,7 +38,6 @@
 //!
 //! Every module is private; what the binary, the examples, the benches, the tests and a compiled
 //! model's generated driver use is re-exported here.
-#![warn(missing_docs)]
 
 mod cli;
 mod models;

@@ -10,7 +10,6 @@
 //! - [`lang`]: the Autolev-compatible model language, building models and specs.
 //! - [`models`]: canonical systems (the paper's gimbal, the heavy top, n-link pendulums).
 //! - [`plausibility`]: masses, inertias and Euler parameters checked at given values.
-#![warn(missing_docs)]
 
 pub mod assembly;
 pub mod build;
