@@ -13,7 +13,8 @@ use super::{Method, OdeError, System};
 
 /// Integrates from `(t0, y0)` through the increasing output `times` (none before `t0`), calling
 /// `out(t, y)` at each; `ControlFlow::Break` stops early, which is no error. The cost so far.
-/// At most `DEFAULT_MAX_STEPS` steps.
+/// At most `DEFAULT_MAX_STEPS` steps. The built-in tableaux step unrolled for the system's
+/// [`System::FIXED_DIM`] when its dimension is that one.
 pub fn integrate<S: System + ?Sized>(
     sys: &S,
     t0: f64,
@@ -40,7 +41,11 @@ pub fn integrate_limited<S: System + ?Sized>(
         return super::integrate_watched(sys, t0, y0, times, method, max_steps, watch, out).map(|w| w.stats);
     }
     let limits = Limits { method, max_steps };
-    match sys.dim() {
+    if sys.dim() != S::FIXED_DIM {
+        return integrate_n::<S, 0>(sys, t0, y0, times, limits, out);
+    }
+    // A constant after monomorphisation: only the arm taken is compiled for `S`.
+    match S::FIXED_DIM {
         1 => integrate_n::<S, 1>(sys, t0, y0, times, limits, out),
         2 => integrate_n::<S, 2>(sys, t0, y0, times, limits, out),
         3 => integrate_n::<S, 3>(sys, t0, y0, times, limits, out),

@@ -42,6 +42,10 @@ use thiserror::Error;
 
 /// A system `y' = f(t, y)` of fixed dimension; integrators only call `rhs`.
 pub trait System {
+    /// The dimension every value of the type has, known when the type is (a generated model's
+    /// state count): the built-in tableaux then take steps unrolled for it at compile time.
+    /// 0 (the default): general steps only, so no unrolled code is compiled for the type.
+    const FIXED_DIM: usize = 0;
     /// Number of states.
     fn dim(&self) -> usize;
     /// Writes `f(t, y)` into `dy`.

@@ -44,6 +44,7 @@ impl<'a, S: System + ?Sized> UnitNorm<'a, S> {
 }
 
 impl<S: System + ?Sized> System for UnitNorm<'_, S> {
+    const FIXED_DIM: usize = S::FIXED_DIM;
     fn dim(&self) -> usize {
         self.inner.dim()
     }

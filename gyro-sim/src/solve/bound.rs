@@ -50,6 +50,7 @@ impl<M: GeneratedModel> BoundModel for ModelSystem<M> {
 }
 
 impl<M: GeneratedModel> System for ModelSystem<M> {
+    const FIXED_DIM: usize = M::INFO.state_names.len();
     fn dim(&self) -> usize {
         M::INFO.state_names.len()
     }
@@ -98,6 +99,8 @@ impl<'a, S: System> Reduced<'a, S> {
 }
 
 impl<S: System> System for Reduced<'_, S> {
+    // The full dimension: a run that keeps fewer states takes general steps.
+    const FIXED_DIM: usize = S::FIXED_DIM;
     fn dim(&self) -> usize {
         self.keep.len()
     }
