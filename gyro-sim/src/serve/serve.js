@@ -16,6 +16,7 @@ let queued = null; // the change waiting for the run in progress: { values, sinc
 window.gyroState = {
   values,
   redraws: 0,
+  answers: 0, // runs answered: drawn, or refused with the error shown
   latencies: [],
   error: '',
   data: () => window.gyroView?.data(),
@@ -112,6 +113,7 @@ async function runOnce(asked, since) {
     if (!response.ok) throw new Error(answer.error ?? 'the server answered ' + response.status);
   } catch (e) {
     showError(String(e.message ?? e));
+    window.gyroState.answers += 1;
     return;
   }
   window.gyroView.load(answer);
@@ -120,6 +122,7 @@ async function runOnce(asked, since) {
   const ms = performance.now() - since;
   const state = window.gyroState;
   state.redraws += 1;
+  state.answers += 1;
   state.latencies.push(ms);
   state.error = '';
   errorLine.textContent = '';

@@ -102,18 +102,30 @@ pub fn folder(name: &str) -> PathBuf {
 /// The CSV `gyro-sim run` writes for the scene the server saves with `values` (its header and
 /// rows), the scene written into `dir`.
 pub fn run_saved(address: &str, values: &str, dir: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    run_saved_outcome(address, values, dir).unwrap_or_else(|stderr| panic!("{stderr}"))
+}
+
+/// What `gyro-sim run` gives for the scene the server saves with `values`: the CSV's header and
+/// rows, or its error message when the run fails.
+pub fn run_saved_outcome(
+    address: &str,
+    values: &str,
+    dir: &Path,
+) -> Result<(Vec<String>, Vec<Vec<f64>>), String> {
     let (status, text) = request(address, "POST", "/api/scene", values.as_bytes());
     assert_eq!(status, 200, "{}", String::from_utf8_lossy(&text));
     let scene = dir.join("saved.toml");
     std::fs::write(&scene, &text).unwrap();
     let out = dir.join("run");
     let run = Command::new(BIN).arg("run").arg(&scene).arg("--out").arg(&out).output().unwrap();
-    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    if !run.status.success() {
+        return Err(String::from_utf8_lossy(&run.stderr).into_owned());
+    }
     let csv = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
     let mut lines = csv.lines();
     let header = lines.next().unwrap().split(',').map(String::from).collect();
     let rows = lines.map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
-    (header, rows)
+    Ok((header, rows))
 }
 
 /// A column of a CSV by its header name.
