@@ -119,14 +119,15 @@ fn tape(c: &mut Criterion) {
     for (label, trig) in [("arithmetic", false), ("with_sin_cos", true)] {
         let mut ar = Arena::new();
         let (root, syms) = deep_random_with(&mut ar, 100_000, 13, trig);
-        let tape = Tape::compile(&ar, &[root], &syms).unwrap();
+        let tape = Tape::compile(&ar, &[root], |s| syms.iter().position(|x| *x == s)).unwrap();
         let inputs: Vec<f64> = (0..SYMBOLS).map(|i| 0.1 + 0.05 * i as f64).collect();
         let mut regs = Vec::new();
         let mut out = [0.0];
-        g.throughput(Throughput::Elements(tape.ops().len() as u64));
-        g.bench_function(format!("eval_{label}_{}_instructions", tape.ops().len()), |b| {
+        g.throughput(Throughput::Elements(tape.ops.len() as u64));
+        g.bench_function(format!("eval_{label}_{}_instructions", tape.ops.len()), |b| {
             b.iter(|| {
-                tape.eval(black_box(&inputs), &mut regs, &mut out);
+                let inputs = black_box(&inputs);
+                tape.eval_in(|k| inputs[k], &mut regs, &mut out);
                 black_box(out[0])
             })
         });

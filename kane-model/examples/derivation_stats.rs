@@ -6,7 +6,6 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
-use kane_model::expr::{ExprId, Tape};
 use kane_model::mechanics::{KaneEquations, Model};
 use kane_model::models::{n_link_pendulum, GimbalGyroscope};
 
@@ -30,12 +29,6 @@ unsafe impl GlobalAlloc for PeakAlloc {
 #[global_allocator]
 static GLOBAL: PeakAlloc = PeakAlloc;
 
-/// Arithmetic operations to compute the roots with every shared subexpression computed once.
-fn ops(model: &Model, roots: &[ExprId]) -> usize {
-    let syms = model.ar.free_symbols(roots);
-    Tape::compile(&model.ar, roots, &syms).map(|t| t.op_count()).unwrap_or(0)
-}
-
 fn report(name: &str, build: impl Fn() -> (Model, KaneEquations)) {
     // Time: best of several runs, each building the model from scratch.
     let runs = 5;
@@ -50,9 +43,8 @@ fn report(name: &str, build: impl Fn() -> (Model, KaneEquations)) {
     PEAK.store(0, Ordering::Relaxed);
     let (model, eqs) = build();
     let peak = PEAK.load(Ordering::Relaxed);
-    let mm: Vec<ExprId> = eqs.mass_matrix.iter().flatten().copied().collect();
-    let m_ops = ops(&model, &mm);
-    let f_ops = ops(&model, &eqs.forcing);
+    let ops = eqs.op_counts(&model.ar);
+    let (m_ops, f_ops) = (ops.mass_matrix, ops.forcing);
     println!(
         "| {name} | {:.3} ms | {m_ops} | {f_ops} | {} | {:.1} MiB |",
         best * 1e3,

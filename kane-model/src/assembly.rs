@@ -160,7 +160,7 @@ mod tests {
         outputs: &[],
         cyclic: &[],
         dependent_coordinates: &[1],
-        op_counts: (0, 0),
+        op_counts: crate::runtime::OpCounts { rhs: 0, outputs: 0 },
         taylor_straight_line: &[],
     };
 

@@ -550,7 +550,7 @@ static BLOWUP: kane_model::runtime::ModelInfo = kane_model::runtime::ModelInfo {
     outputs: &[],
     cyclic: &[],
     dependent_coordinates: &[],
-    op_counts: (0, 0),
+    op_counts: kane_model::runtime::OpCounts { rhs: 0, outputs: 0 },
     taylor_straight_line: &[],
 };
 

@@ -6,10 +6,9 @@
 
 use rustc_hash::FxHashMap;
 
-use crate::expr::{Arena, ExprId, SymbolId, TIME};
+use crate::expr::{Arena, Compiler, ExprId, SymbolId, TIME};
 
 use super::ir::{Input, Section};
-use super::lower::exprs::ExprLowering;
 
 /// What one input slot of an event section holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -48,7 +47,7 @@ pub fn lower(ar: &Arena, root: ExprId, reads: impl Fn(SymbolId) -> Option<EventS
         inputs.insert(s, Input::Slot(slots.len()));
         slots.push(slot);
     }
-    let mut lowering = ExprLowering::new(ar, &inputs, None);
+    let mut lowering = Compiler::new(ar, |s| inputs.get(&s).copied(), None);
     let values = lowering.lower_all(&[root]);
     EventCode { section: lowering.builder.finish(values), slots }
 }

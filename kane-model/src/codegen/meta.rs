@@ -2,7 +2,7 @@
 //! [`Meta`] (names, units, outputs), which the printer spells as a `ModelInfo` literal and
 //! [`Meta::leak`] turns into a `ModelInfo` at run time.
 
-use crate::runtime::{ModelInfo, OutputInfo, OutputKind};
+use crate::runtime::{ModelInfo, OpCounts, OutputInfo, OutputKind};
 use crate::spec::{self, ModelSpec, OrientationForm};
 
 use super::lower::Lowered;
@@ -46,7 +46,7 @@ pub struct Meta {
     /// The coordinates the configuration constraints determine.
     pub dependent_coordinates: Vec<usize>,
     /// Operations per `rhs` call and per evaluation of every output.
-    pub op_counts: (usize, usize),
+    pub op_counts: OpCounts,
     /// The orders whose Taylor coefficients the generated code computes straight-line.
     pub taylor_straight_line: Vec<usize>,
 }

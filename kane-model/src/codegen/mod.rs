@@ -79,7 +79,10 @@ pub struct Emitted {
     pub tokens: TokenStream,
     /// Arithmetic operations per `rhs` call (equations and solve) and per evaluation of every
     /// output, counted on the lowered program.
-    pub op_counts: (usize, usize),
+    pub op_counts: crate::runtime::OpCounts,
+    /// The sizes of `M` and `f` as derived (before simplification), counted as `kane check`
+    /// counts them; None when the chosen form never formed them.
+    pub equation_ops: Option<crate::mechanics::EquationOps>,
     /// Values computed by one `rhs` call (named intermediates and results).
     pub rhs_values: usize,
     /// Whether the module has Taylor coefficients.
@@ -103,9 +106,9 @@ impl Emitted {
         };
         format!(
             "rhs: {} operations, {} values per call; outputs: {} operations for all of them; Taylor coefficients: {taylor}; lanes: {}",
-            self.op_counts.0,
+            self.op_counts.rhs,
             self.rhs_values,
-            self.op_counts.1,
+            self.op_counts.outputs,
             if self.lanes { "yes" } else { "no" },
         )
     }
@@ -127,6 +130,7 @@ pub fn generate(spec: &mut ModelSpec, options: &CodeOptions) -> Result<Emitted, 
     Ok(Emitted {
         tokens,
         op_counts: lowered.program.op_counts(),
+        equation_ops: spec.equations.formed.then(|| spec.equations.op_counts(&spec.model.ar)),
         rhs_values,
         taylor,
         taylor_straight_line: orders,

@@ -5,7 +5,7 @@ use std::collections::hash_map::Entry;
 
 use rustc_hash::FxHashMap;
 
-use crate::expr::{ExprId, Node, SymbolId, SymbolKind};
+use crate::expr::{Arena, ExprId, Node, SymbolId, SymbolKind, Tape};
 
 use super::auxiliary::SolvedLoads;
 use super::error::{MechanicsError, Result};
@@ -69,6 +69,31 @@ impl KaneEquations {
             each(&mut l.forcing)?;
         }
         Ok(())
+    }
+
+    /// The sizes of `M` and `f`: each compiled as one tape (shared subexpressions once).
+    pub fn op_counts(&self, ar: &Arena) -> EquationOps {
+        let ops = |roots: &[ExprId]| Tape::compile(ar, roots, Some).map_or(0, |t| t.op_count());
+        let m: Vec<ExprId> = self.mass_matrix.iter().flatten().copied().collect();
+        EquationOps { n: self.mass_matrix.len(), mass_matrix: ops(&m), forcing: ops(&self.forcing) }
+    }
+}
+
+/// Arithmetic operations of Kane's equations as derived: the tape of `M` and that of `f`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct EquationOps {
+    /// The order of `M`.
+    pub n: usize,
+    /// Operations computing every entry of `M`.
+    pub mass_matrix: usize,
+    /// Operations computing every entry of `f`.
+    pub forcing: usize,
+}
+
+impl std::fmt::Display for EquationOps {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let n = self.n;
+        write!(f, "M {n}x{n} in {} operations, f in {}", self.mass_matrix, self.forcing)
     }
 }
 

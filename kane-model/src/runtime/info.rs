@@ -68,10 +68,20 @@ pub struct ModelInfo {
     /// run, see kane-model's `assembly`); empty for a model without such constraints.
     pub dependent_coordinates: &'static [usize],
     /// Arithmetic operations per call of `rhs` and per evaluation of every output.
-    pub op_counts: (usize, usize),
+    pub op_counts: OpCounts,
     /// The orders whose Taylor coefficients the model computes straight-line (faster than the
     /// loop every other order takes); empty for a model without them.
     pub taylor_straight_line: &'static [usize],
+}
+
+/// Arithmetic operations of a model's lowered program (instructions other than inputs and
+/// constants).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct OpCounts {
+    /// Per call of `rhs` (the equations and the solve of `M u' = f`).
+    pub rhs: usize,
+    /// Per evaluation of every output.
+    pub outputs: usize,
 }
 
 impl ModelInfo {

@@ -11,7 +11,7 @@ mod model;
 mod quaternion;
 pub mod taylor;
 
-pub use info::{ModelInfo, OutputInfo, OutputKind};
+pub use info::{ModelInfo, OpCounts, OutputInfo, OutputKind};
 pub use model::{GeneratedModel, LaneModel, TaylorWork, TAYLOR_MAX_ORDER, TAYLOR_UNROLLED_ORDERS};
 pub use quaternion::quaternion_from_dcm;
 

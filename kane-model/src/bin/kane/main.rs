@@ -11,7 +11,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use kane_model::codegen::CodeOptions;
-use kane_model::expr::{ExprId, SymbolId, Tape};
+use kane_model::expr::{ExprId, SymbolId};
 use kane_model::lang::{self, LoadedModel};
 use kane_model::mechanics::KaneEquations;
 
@@ -167,11 +167,6 @@ fn names(m: &LoadedModel, syms: &[SymbolId]) -> Vec<String> {
     syms.iter().map(|s| m.model.ar.symbol_info(*s).name.clone()).collect()
 }
 
-fn ops(m: &LoadedModel, roots: &[ExprId]) -> usize {
-    let syms = m.model.ar.free_symbols(roots);
-    Tape::compile(&m.model.ar, roots, &syms).map(|t| t.op_count()).unwrap_or(0)
-}
-
 fn run(command: Command) -> Result<(), String> {
     match command {
         Command::Check { file } => check(file),
@@ -196,7 +191,6 @@ fn check(file: PathBuf) -> Result<(), String> {
     let bookkeeping = lang::bookkeeping_summary(&m, &src);
     match &m.equations {
         Some(e) => {
-            let mm: Vec<ExprId> = e.mass_matrix.iter().flatten().copied().collect();
             let dependent = match &e.constraints {
                 Some(c) => {
                     format!(" and {} dependent ({})", c.dependent.len(), names(&m, &c.dependent).join(", "))
@@ -204,16 +198,14 @@ fn check(file: PathBuf) -> Result<(), String> {
                 None => String::new(),
             };
             outln!(
-                "{}: ok: {} coordinates ({}), {} speeds ({}){dependent}, {} bodies; M {n}x{n} in {} operations, f in {}",
+                "{}: ok: {} coordinates ({}), {} speeds ({}){dependent}, {} bodies; {}",
                 file.display(),
                 e.coordinates.len(),
                 names(&m, &e.coordinates).join(", "),
                 e.speeds.len(),
                 names(&m, &e.speeds).join(", "),
                 m.model.bodies().len(),
-                ops(&m, &mm),
-                ops(&m, &e.forcing),
-                n = e.mass_matrix.len(),
+                e.op_counts(&m.model.ar),
             );
         }
         None => outln!("{}: ok: no KANE() in this file", file.display()),
@@ -432,9 +424,12 @@ fn gen(file: PathBuf, out: Option<PathBuf>, stats: bool, options: CodeOptions) -
         None => out!("{source}"),
     }
     if stats {
+        if let Some(ops) = emitted.equation_ops {
+            eprintln!("equations (as `kane check` counts them): {ops}");
+        }
         eprintln!(
             "lowered program: rhs {} operations per call; outputs {} operations for all of them",
-            emitted.op_counts.0, emitted.op_counts.1
+            emitted.op_counts.rhs, emitted.op_counts.outputs
         );
     }
     Ok(())

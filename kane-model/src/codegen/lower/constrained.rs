@@ -7,12 +7,11 @@
 // Matrix code reads clearest with indices.
 #![allow(clippy::needless_range_loop)]
 
-use crate::expr::{Arena, ExprId, SymbolId};
+use crate::expr::{Arena, Compiler, ExprId, SymbolId};
 use crate::mechanics::{KaneEquations, SolvedLoads, SpeedConstraints};
 
 use super::super::ir::{Input, Op, Section, SectionBuilder};
 use super::super::CodegenError;
-use super::exprs::ExprLowering;
 use super::hoist::Hoisted;
 use super::householder::{self, sum, Factored};
 use super::inverse::{self, LoadValues};
@@ -40,7 +39,7 @@ pub fn lower(
     let states: Vec<SymbolId> = eqs.coordinates.iter().chain(&eqs.speeds).copied().collect();
     let (symbols, derive) = hoisted.reading(ar, &states, params);
     let dependent: Vec<ExprId> = c.dependent.iter().map(|s| ar.symbol_expr(*s)).collect();
-    let mut lowering = ExprLowering::new(ar, &symbols, None);
+    let mut lowering = Compiler::new(ar, |s| symbols.get(&s).copied(), None);
     let block = Block::lower(&mut lowering, &dependent, &roots[..first], eqs.coordinates.len());
     let values = lowering.lower_all(&roots[first..]);
     let b = &mut lowering.builder;
@@ -89,7 +88,7 @@ impl Block {
     /// factors `A_d`, solves the dependent speeds from the state (speeds after `nq`
     /// coordinates) and makes the section read them wherever their symbols (`dependent`, as
     /// expressions) appear.
-    pub fn lower(lowering: &mut ExprLowering, dependent: &[ExprId], roots: &[ExprId], nq: usize) -> Block {
+    pub fn lower(lowering: &mut Compiler<Input>, dependent: &[ExprId], roots: &[ExprId], nq: usize) -> Block {
         let md = dependent.len();
         let ni = (roots.len() - md * md - md) / md;
         let values = lowering.lower_all(roots);
@@ -119,7 +118,7 @@ impl Block {
 
     /// Makes the section read the dependent speeds' rates (their symbols' expressions `rates`)
     /// from `A_d u_d' = -(A_i u_i' + bias)`, the independent rates read as `Input::Rate`.
-    pub fn bind_rates(&self, lowering: &mut ExprLowering, bias: &[ExprId], rates: &[ExprId]) {
+    pub fn bind_rates(&self, lowering: &mut Compiler<Input>, bias: &[ExprId], rates: &[ExprId]) {
         let bias = lowering.lower_all(bias);
         let b = &mut lowering.builder;
         let zero = b.constant(0.0);
@@ -192,7 +191,7 @@ impl Block {
     /// constraints `c` and the loads `l`, this block lowered in it already.
     pub fn bind_loads(
         &self,
-        lowering: &mut ExprLowering,
+        lowering: &mut Compiler<Input>,
         eqs: &KaneEquations,
         c: &SpeedConstraints,
         l: &SolvedLoads,

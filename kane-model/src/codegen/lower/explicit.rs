@@ -4,11 +4,10 @@
 
 use rustc_hash::FxHashMap;
 
-use crate::expr::{Arena, ExprId, SymbolId};
+use crate::expr::{Arena, Compiler, ExprId, SymbolId};
 
 use super::super::ir::Section;
 use super::super::CodegenError;
-use super::exprs::ExprLowering;
 use super::hoist::Hoisted;
 
 /// What the explicit form reads and returns.
@@ -37,7 +36,7 @@ pub fn lower(
     }
     let (symbols, derive) = hoisted.reading(ar, form.states, params);
     let late = late_speeds(ar, form.speeds);
-    let mut lowering = ExprLowering::new(ar, &symbols, Some(&late));
+    let mut lowering = Compiler::new(ar, |s| symbols.get(&s).copied(), Some(&late));
     let values = lowering.lower_all(&roots);
     Ok((derive, lowering.builder.finish(values)))
 }

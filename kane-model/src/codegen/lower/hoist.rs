@@ -4,10 +4,9 @@
 
 use rustc_hash::FxHashMap;
 
-use crate::expr::{Arena, ExprError, ExprId, Node, SymbolId, SymbolKind, TIME};
+use crate::expr::{Arena, Compiler, ExprError, ExprId, Node, SymbolId, SymbolKind, TIME};
 
 use super::super::ir::{Input, Section};
-use super::exprs::ExprLowering;
 
 /// Fresh constants standing for parameter-only expressions.
 #[derive(Clone, Debug, Default)]
@@ -34,7 +33,7 @@ impl Hoisted {
         symbols.extend(params.iter().enumerate().map(|(i, s)| (*s, Input::Param(i))));
         let derive = {
             let defs: Vec<ExprId> = self.defs.iter().map(|d| d.1).collect();
-            let mut lowering = ExprLowering::new(ar, &symbols, None);
+            let mut lowering = Compiler::new(ar, |s| symbols.get(&s).copied(), None);
             let values = lowering.lower_all(&defs);
             lowering.builder.finish(values)
         };

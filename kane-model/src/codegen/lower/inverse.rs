@@ -6,12 +6,11 @@
 // Matrix code reads clearest with indices.
 #![allow(clippy::needless_range_loop)]
 
-use crate::expr::{Arena, ExprId, SymbolId};
+use crate::expr::{Arena, Compiler, ExprId, SymbolId};
 use crate::mechanics::{KaneEquations, SolvedLoads};
 
-use super::super::ir::{Op, Section, SectionBuilder};
+use super::super::ir::{Input, Op, Section, SectionBuilder};
 use super::super::CodegenError;
-use super::exprs::ExprLowering;
 use super::hoist::Hoisted;
 use super::householder::{self, sum};
 use super::solve::{symmetric, upper_triangle};
@@ -34,7 +33,7 @@ pub fn lower(
     let roots = roots.iter().map(|r| hoisted.rewrite(ar, *r, &is_param)).collect::<Result<Vec<_>, _>>()?;
     let states: Vec<SymbolId> = eqs.coordinates.iter().chain(&eqs.speeds).copied().collect();
     let (symbols, derive) = hoisted.reading(ar, &states, params);
-    let mut lowering = ExprLowering::new(ar, &symbols, None);
+    let mut lowering = Compiler::new(ar, |s| symbols.get(&s).copied(), None);
     let values = lowering.lower_all(&roots);
     let x = solve_unconstrained(&mut lowering.builder, n, l.loads.len(), &values[..first]);
     let mut results = values[first..].to_vec();
@@ -76,7 +75,7 @@ impl LoadValues {
 
 /// Makes the section of an unconstrained model read the loads (their symbols' expressions
 /// `loads`) from the system.
-pub fn bind_loads(lowering: &mut ExprLowering, eqs: &KaneEquations, l: &SolvedLoads, loads: &[ExprId]) {
+pub fn bind_loads(lowering: &mut Compiler<Input>, eqs: &KaneEquations, l: &SolvedLoads, loads: &[ExprId]) {
     let n = eqs.speeds.len();
     let mut roots = upper_triangle(&eqs.mass_matrix);
     roots.extend(&eqs.forcing);

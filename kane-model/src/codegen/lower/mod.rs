@@ -4,7 +4,6 @@
 mod choose;
 mod constrained;
 mod explicit;
-pub(crate) mod exprs;
 mod hoist;
 mod householder;
 mod inverse;

@@ -3,13 +3,12 @@
 
 use rustc_hash::FxHashMap;
 
-use crate::expr::{ExprId, SymbolId, TIME};
+use crate::expr::{Compiler, ExprId, SymbolId, TIME};
 use crate::spec::ModelSpec;
 
 use super::super::ir::{Input, OutputCode};
 use super::super::CodegenError;
 use super::constrained;
-use super::exprs::ExprLowering;
 use super::inverse;
 
 /// One [`OutputCode`] per output of `spec`; `params` are the constants the code reads.
@@ -63,7 +62,7 @@ pub fn lower(spec: &mut ModelSpec, params: &[SymbolId]) -> Result<Vec<OutputCode
         let ar = &spec.model.ar;
         let needs_rates = block.is_some_and(|c| c.dependent_rates.iter().any(|s| free.contains(s)))
             || free.iter().any(|s| rates.contains(s));
-        let mut lowering = ExprLowering::new(ar, &symbols, None);
+        let mut lowering = Compiler::new(ar, |s| symbols.get(&s).copied(), None);
         if let Some(c) = block {
             let roots = constrained::block_roots(c);
             let b = constrained::Block::lower(

@@ -6,12 +6,11 @@
 
 use rustc_hash::FxHashMap;
 
-use crate::expr::{Arena, ExprId, SymbolId};
+use crate::expr::{Arena, Compiler, ExprId, SymbolId};
 use crate::mechanics::KaneEquations;
 
 use super::super::ir::Section;
 use super::super::CodegenError;
-use super::exprs::ExprLowering;
 use super::hoist::Hoisted;
 use super::solve;
 
@@ -44,7 +43,7 @@ pub fn lower(
             .entry(e)
             .or_insert_with(|| ar_ref.free_symbols(&[e]).iter().any(|s| eqs.speeds.contains(s)))
     };
-    let mut lowering = ExprLowering::new(ar_ref, &symbols, Some(&is_late));
+    let mut lowering = Compiler::new(ar_ref, |s| symbols.get(&s).copied(), Some(&is_late));
     let values = lowering.lower_all(&r.roots);
     let mut k = 0;
     let mut m: Vec<Vec<Option<u32>>> = vec![vec![None; n]; n];

@@ -20,7 +20,7 @@ pub fn info(meta: &Meta) -> TokenStream {
         taylor_straight_line,
         ..
     } = meta;
-    let (rhs_ops, out_ops) = meta.op_counts;
+    let (rhs_ops, out_ops) = (meta.op_counts.rhs, meta.op_counts.outputs);
     let outputs = meta.outputs.iter().map(|o| {
         let (oname, unit, kind, columns, reads) = (&o.name, &o.unit, &o.kind, &o.columns, &o.reads);
         let needs_rates = o.needs_rates;
@@ -47,7 +47,7 @@ pub fn info(meta: &Meta) -> TokenStream {
             outputs: &[#(#outputs),*],
             cyclic: &[#(#cyclic),*],
             dependent_coordinates: &[#(#dependent_coordinates),*],
-            op_counts: (#rhs_ops, #out_ops),
+            op_counts: ::kane_model::runtime::OpCounts { rhs: #rhs_ops, outputs: #out_ops },
             taylor_straight_line: &[#(#taylor_straight_line),*],
         }
     }

@@ -1,46 +1,81 @@
-//! Expressions into a section: in come expression roots and how each symbol is read; out go
-//! SSA values. The shape of each computation (subtraction, quotients, balanced products, late
-//! factors last) is the printers' shared layout, so generated code computes what a reader of
-//! the printed equations sees.
+//! Expressions into a tape: in come expression roots and the input each symbol reads; out go
+//! SSA values in a [`TapeBuilder`]. The shape of each computation (subtraction, quotients,
+//! balanced products, late factors last) is the printers' shared layout, so generated code
+//! computes what a reader of the printed equations sees.
 
-use rustc_hash::FxHashMap;
+use std::hash::Hash;
 
-use crate::expr::{layout, Arena, Cse, ExprId, Func, Number, Op, Prec, SymbolId, Syntax};
+use rustc_hash::{FxHashMap, FxHashSet};
 
-use super::super::ir::{Input, SectionBuilder};
+use super::super::arena::Arena;
+use super::super::cse::Cse;
+use super::super::node::{ExprId, Func, SymbolId};
+use super::super::number::Number;
+use super::super::print::layout::{layout, Prec, Syntax};
+use super::{Op, TapeBuilder};
 
-/// Lowers expressions into one section.
-pub struct ExprLowering<'a> {
+/// How deep the layout of one expression may nest before a node is computed ahead, as if it
+/// were shared: the layout recurses, so this bounds its stack on deep expressions (no model's
+/// equations come near it).
+const MAX_NESTING: usize = 200;
+
+/// Compiles expressions into one tape.
+pub(crate) struct Compiler<'a, I> {
     ar: &'a Arena,
-    /// The section being built.
-    pub builder: SectionBuilder,
-    symbols: &'a FxHashMap<SymbolId, Input>,
+    /// The tape being built.
+    pub builder: TapeBuilder<I>,
+    symbols: Box<dyn Fn(SymbolId) -> Option<I> + 'a>,
     names: FxHashMap<ExprId, u32>,
     late: Option<&'a dyn Fn(ExprId) -> bool>,
+    missing: Option<SymbolId>,
 }
 
-impl<'a> ExprLowering<'a> {
-    /// A lowering reading symbols through `symbols`; `late` marks factors to multiply last.
+impl<'a, I: Copy + Eq + Hash> Compiler<'a, I> {
+    /// A compiler reading each symbol as the input `symbols` names; `late` marks factors to
+    /// multiply last.
     pub fn new(
         ar: &'a Arena,
-        symbols: &'a FxHashMap<SymbolId, Input>,
+        symbols: impl Fn(SymbolId) -> Option<I> + 'a,
         late: Option<&'a dyn Fn(ExprId) -> bool>,
     ) -> Self {
-        ExprLowering { ar, builder: SectionBuilder::default(), symbols, names: FxHashMap::default(), late }
+        let (builder, symbols, names) = (TapeBuilder::default(), Box::new(symbols), FxHashMap::default());
+        Compiler { ar, builder, symbols, names, late, missing: None }
     }
 
     /// Lowers the shared subexpressions of `roots` (children first), then each root; returns the
     /// roots' values.
     pub fn lower_all(&mut self, roots: &[ExprId]) -> Vec<u32> {
-        let cse = Cse::new(self.ar, roots);
-        for &e in &cse.temps {
+        for e in self.ahead(roots) {
             let v = layout(self.ar, e, self, true).0;
             self.names.insert(e, v);
         }
         roots.iter().map(|&e| self.value(e)).collect()
     }
 
-    /// Makes `e` (a symbol's expression) read the value `v` computed earlier in the section.
+    /// The nodes of `roots` computed ahead of them, children first: the shared ones, and any
+    /// whose layout would nest deeper than [`MAX_NESTING`] below a node computed ahead.
+    fn ahead(&self, roots: &[ExprId]) -> Vec<ExprId> {
+        let shared: FxHashSet<ExprId> = Cse::new(self.ar, roots).temps.into_iter().collect();
+        let mut depth: FxHashMap<ExprId, usize> = FxHashMap::default();
+        let mut ahead = Vec::new();
+        for id in self.ar.bottom_up(roots, |_| false) {
+            let below = self.ar.node(id).children().iter().map(|c| depth.get(c).copied().unwrap_or(0)).max();
+            let d = match below {
+                _ if self.names.contains_key(&id) => 0,
+                Some(d) => d + 1,
+                None => 0,
+            };
+            if shared.contains(&id) || d >= MAX_NESTING {
+                ahead.push(id);
+                depth.insert(id, 0);
+            } else {
+                depth.insert(id, d);
+            }
+        }
+        ahead
+    }
+
+    /// Makes `e` (a symbol's expression) read the value `v` computed earlier in the tape.
     pub fn bind(&mut self, e: ExprId, v: u32) {
         self.names.insert(e, v);
     }
@@ -51,6 +86,11 @@ impl<'a> ExprLowering<'a> {
             Some(&v) => v,
             None => layout(self.ar, e, self, true).0,
         }
+    }
+
+    /// The first symbol read that has no input (its value is NaN), if any.
+    pub fn missing(&self) -> Option<SymbolId> {
+        self.missing
     }
 
     fn balanced(&mut self, factors: Vec<(u32, Prec)>) -> u32 {
@@ -70,16 +110,18 @@ impl<'a> ExprLowering<'a> {
     }
 }
 
-impl Syntax for ExprLowering<'_> {
+impl<I: Copy + Eq + Hash> Syntax for Compiler<'_, I> {
     type Out = u32;
     fn number(&mut self, n: Number) -> u32 {
         self.builder.constant(n.to_f64())
     }
     fn symbol(&mut self, s: SymbolId) -> u32 {
-        match self.symbols.get(&s) {
-            Some(&input) => self.builder.input(input),
-            // Callers check the symbols first; an unknown one cannot be computed.
-            None => self.builder.constant(f64::NAN),
+        match (self.symbols)(s) {
+            Some(input) => self.builder.input(input),
+            None => {
+                self.missing = self.missing.or(Some(s));
+                self.builder.constant(f64::NAN)
+            }
         }
     }
     fn named(&mut self, id: ExprId) -> Option<u32> {
