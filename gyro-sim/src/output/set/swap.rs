@@ -39,21 +39,12 @@ fn exchange(_: &Path, _: &Path) -> Result<(), Option<std::io::Error>> {
 /// The fallback: `out` renamed to `old`, then `stage` to `out`; a kill between the two leaves
 /// no `out` until the next commit renames `old` back.
 pub(super) fn by_renames(stage: &Path, out: &Path, old: &Path) -> Result<(), SetError> {
-    let (out_path, old_path) = (out.to_path_buf(), old.to_path_buf());
-    fs::rename(out, old).map_err(|source| SetError::SetAside {
-        out: out_path.clone(),
-        old: old_path.clone(),
-        source,
-    })?;
+    let set_aside = |source| SetError::SetAside { out: out.to_path_buf(), old: old.to_path_buf(), source };
+    fs::rename(out, old).map_err(set_aside)?;
     if let Err(source) = fs::rename(stage, out) {
         let back = fs::rename(old, out).err();
-        return Err(SetError::PutInPlace {
-            out: out_path,
-            stage: stage.to_path_buf(),
-            old: old_path,
-            source,
-            back,
-        });
+        let (out, stage, old) = (out.to_path_buf(), stage.to_path_buf(), old.to_path_buf());
+        return Err(SetError::PutInPlace { out, stage, old, source, back });
     }
     Ok(())
 }
