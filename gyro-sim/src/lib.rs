@@ -53,15 +53,19 @@ mod study;
 
 // The front door: everything outside the crate names these, and nothing else.
 pub use cli::{main_with, CompiledModel};
-pub use models::{content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, ModelFile, Registry};
+pub use models::{
+    content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, ModelFile, ModelFileError, Registry,
+};
 pub use ode::{
     by_name, integrate, integrate_limited, tableau, DenseOutput, ErkStepper, Method, OdeError, Stats,
     StopReason, System, Tolerances, METHODS,
 };
-pub use output::{write, write_view};
-pub use problem::{Column, Engine, ModelEntry, Pick, Problem, Trajectory, MAX_KEPT_ROWS};
+pub use output::{write, write_view, PlotError, SetError, WriteError};
+pub use problem::{
+    Column, Engine, ModelEntry, Pick, Problem, RowError, SolveError, Trajectory, MAX_KEPT_ROWS,
+};
 pub use resolve::{resolve, sleeping_threshold, steady_precession};
-pub use run::{run, run_with, RunSummary};
-pub use scene::{ArrowView, BodyView, Orientation, Scene, Shape, TraceView, ViewSpec};
+pub use run::{run, run_with, RunError, RunSummary};
+pub use scene::{ArrowView, BodyView, Orientation, Scene, SceneError, Shape, TraceView, ViewError, ViewSpec};
 pub use solve::{solve_bound, BoundModel, ModelSystem, Reduced};
 pub use study::batch::final_states;

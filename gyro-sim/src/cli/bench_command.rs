@@ -4,6 +4,7 @@
 use std::path::Path;
 use std::process::ExitCode;
 
+use super::CliError;
 use crate::models::Registry;
 use crate::scene::Scene;
 use crate::study::work_precision::{measure, to_csv, Options};
@@ -14,15 +15,16 @@ pub fn bench_command(
     repeats: usize,
     out: &Path,
     registry: &Registry,
-) -> Result<ExitCode, String> {
-    let scene = Scene::load(scene).map_err(|e| e.to_string())?;
-    let problem = crate::resolve::resolve(&scene, registry).map_err(|e| e.to_string())?;
+) -> Result<ExitCode, CliError> {
+    let scene = Scene::load(scene)?;
+    let problem = crate::resolve::resolve(&scene, registry)?;
     let options = Options { repeats, ..Options::default() };
-    let points = measure(&problem, &options).map_err(|e| format!("{}: {e}", scene.path.display()))?;
-    std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    let points = measure(&problem, &options)
+        .map_err(|e| CliError::Run { scene: scene.path.clone(), source: Box::new(e.into()) })?;
+    std::fs::create_dir_all(out).map_err(|source| CliError::Io { path: out.to_path_buf(), source })?;
     let csv = to_csv(&points);
     let csv_path = out.join("work_precision.csv");
-    crate::output::write_atomically(&csv_path, |tmp| std::fs::write(tmp, &csv).map_err(|e| e.to_string()))?;
+    crate::output::write_file_atomically(&csv_path, csv.as_bytes())?;
     let png = out.join("work_precision.png");
     crate::output::write_work_precision(&points, &format!("{}: work against precision", scene.title), &png)?;
     println!(

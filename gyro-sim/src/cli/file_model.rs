@@ -4,14 +4,15 @@
 
 use std::path::{Path, PathBuf};
 
+use super::CliError;
 use crate::models::{ModelFile, Registry};
 use crate::scene::Scene;
 
 /// `registry` with the model file `scene` names, if it names one, on the instant engine.
-pub(super) fn with_file_model(scene: &Scene, registry: Registry) -> Result<Registry, String> {
+pub(super) fn with_file_model(scene: &Scene, registry: Registry) -> Result<Registry, CliError> {
     let Some(path) = model_file_of(scene) else { return Ok(registry) };
-    let source = crate::models::source_with(&path, &scene.specified).map_err(|e| e.to_string())?;
-    let file = ModelFile::from_source(&path, source).map_err(|e| e.to_string())?;
+    let source = crate::models::source_with(&path, &scene.specified)?;
+    let file = ModelFile::from_source(&path, source)?;
     eprint!("{}", file.warnings);
     Ok(registry.with_entry(&scene.model, crate::models::file_entry(&file)))
 }

@@ -4,6 +4,7 @@
 //! run in this one's place) or on the instant path (the lowered program evaluated directly).
 
 mod bench_command;
+mod error;
 mod file_model;
 mod model_scene;
 mod origins;
@@ -20,6 +21,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 pub use model_scene::{parse_set, scene_text, ModelRunArgs};
 pub use summary::print_summary;
 
+pub use error::CliError;
 use file_model::model_file_of;
 
 use crate::models::{FileRun, ModelFile, Registry};
@@ -205,8 +207,8 @@ pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCod
     };
     match result {
         Ok(code) => code,
-        Err(message) => {
-            eprintln!("{}", message.trim_end());
+        Err(e) => {
+            eprintln!("{}", e.to_string().trim_end());
             crate::ode::interrupt::requested().map_or(ExitCode::FAILURE, |by| ExitCode::from(by.exit_code()))
         }
     }
@@ -217,9 +219,9 @@ fn run_command(
     args: &RunArgs,
     registry: Registry,
     compiled: Option<CompiledModel>,
-) -> Result<ExitCode, String> {
+) -> Result<ExitCode, CliError> {
     let scene = match &args.scene {
-        Some(path) => Some(Scene::load(path).map_err(|e| e.to_string())?),
+        Some(path) => Some(Scene::load(path)?),
         None => None,
     };
     let file_path = match (&scene, &args.model) {
@@ -228,28 +230,25 @@ fn run_command(
         (None, None) => None,
     };
     let Some(file_path) = file_path else {
-        let scene = scene.ok_or("give a scene or --model")?;
+        let scene = scene.ok_or(CliError::NoScene)?;
         if let Some((name, _, _)) = scene.specified.first() {
-            return Err(format!(
-                "{}: [specified] {name}: formulas are for a model file's SPECIFIED quantities, and {} is a compiled model",
-                scene.path.display(),
-                scene.model
-            ));
+            let (path, name, model) = (scene.path.clone(), name.clone(), scene.model.clone());
+            return Err(CliError::SpecifiedCompiled { scene: path, name, model });
         }
         return finish(&scene, &registry, args);
     };
     let specified = scene.as_ref().map_or(&[][..], |s| &s.specified[..]);
-    let source = crate::models::source_with(&file_path, specified).map_err(|e| e.to_string())?;
+    let source = crate::models::source_with(&file_path, specified)?;
     let key = crate::models::registry_key(&source);
     let (entry, run, file) = match compiled.filter(|c| c.key == key) {
         Some(c) => {
             // The binary's equations; INPUT values (perhaps edited since it was built) from the file.
-            let file = ModelFile::from_source(&file_path, source).map_err(|e| e.to_string())?;
+            let file = ModelFile::from_source(&file_path, source)?;
             let current = crate::models::file_entry(&file);
             (with_values_of(c.entry, &current), file.run.clone(), None)
         }
         None => {
-            let file = ModelFile::from_source(&file_path, source).map_err(|e| e.to_string())?;
+            let file = ModelFile::from_source(&file_path, source)?;
             eprint!("{}", file.warnings);
             let entry = crate::models::file_entry(&file);
             (entry, file.run.clone(), Some(file))
@@ -259,7 +258,7 @@ fn run_command(
         let scene = model_scene(&file_path, &run, &entry, args)?;
         let given = origins::Given { model: &file_path, sets: &args.sets, t_final: args.t_final };
         return run_scene(&scene, registry, entry, file.as_ref(), args)
-            .map_err(|e| origins::point_at_arguments(&e, &scene.source, &given));
+            .map_err(|e| at_arguments(e, &scene.source, &given));
     };
     run_scene(&scene, registry, entry, file.as_ref(), args)
 }
@@ -272,14 +271,14 @@ fn run_scene(
     entry: ModelEntry,
     file: Option<&ModelFile>,
     args: &RunArgs,
-) -> Result<ExitCode, String> {
+) -> Result<ExitCode, CliError> {
     if args.print_scene {
         print!("{}", scene.source);
         return Ok(ExitCode::SUCCESS);
     }
     let registry = registry.with_entry(&scene.model, entry);
     if let Some(file) = file {
-        crate::resolve::resolve(scene, &registry).map_err(|e| e.to_string())?;
+        crate::resolve::resolve(scene, &registry)?;
         if args.engine == EngineChoice::Compiled {
             return run_compiled(file, scene.integrator.method.name() == crate::ode::TAYLOR);
         }
@@ -312,21 +311,27 @@ fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
 }
 
 /// The scene of a `--model` run.
-fn model_scene(path: &Path, run: &FileRun, entry: &ModelEntry, args: &RunArgs) -> Result<Scene, String> {
+fn model_scene(path: &Path, run: &FileRun, entry: &ModelEntry, args: &RunArgs) -> Result<Scene, CliError> {
     let model_args = ModelRunArgs { sets: args.sets.clone(), t_final: args.t_final };
     let text = scene_text(&path.display().to_string(), run, entry.info, &model_args)?;
     let given = origins::Given { model: path, sets: &args.sets, t_final: args.t_final };
-    let mut scene = Scene::parse(origins::GENERATED, &text)
-        .map_err(|e| origins::point_at_arguments(&e.to_string(), &text, &given))?;
+    let mut scene =
+        Scene::parse(origins::GENERATED, &text).map_err(|e| at_arguments(e.into(), &text, &given))?;
     // The model is found under the path as given (not relative to a scene file).
     scene.path = PathBuf::from(origins::GENERATED);
     Ok(scene)
 }
 
+/// `e`, an error in the generated scene `source`, pointed at the argument its place came from.
+fn at_arguments(e: CliError, source: &str, given: &origins::Given<'_>) -> CliError {
+    let message = origins::point_at_arguments(&e.to_string(), source, given);
+    CliError::AtArguments { message, source: Box::new(e) }
+}
+
 /// Builds (or finds) the compiled binary (with Taylor coefficients when `taylor`) and runs it
 /// with the same arguments: on Unix in place of this process, so signals reach it directly. A
 /// cached binary that cannot be started (damaged) is removed and rebuilt once.
-fn run_compiled(file: &ModelFile, taylor: bool) -> Result<ExitCode, String> {
+fn run_compiled(file: &ModelFile, taylor: bool) -> Result<ExitCode, CliError> {
     let first = start_compiled(file, taylor)?;
     eprintln!(
         "the cached compiled model {} cannot be started ({}): rebuilding it",
@@ -334,19 +339,15 @@ fn run_compiled(file: &ModelFile, taylor: bool) -> Result<ExitCode, String> {
         first.1
     );
     let _ = std::fs::remove_file(&first.0);
-    let (binary, e) = start_compiled(file, taylor)?;
-    Err(format!(
-        "cannot start the compiled model {} even after rebuilding it: {e}\n  help: run with --engine instant, or remove {} and try again",
-        binary.display(),
-        crate::models::cache_dir().display()
-    ))
+    let (binary, why) = start_compiled(file, taylor)?;
+    Err(CliError::CannotStart { binary, why, cache: crate::models::cache_dir() })
 }
 
 /// Builds (or finds) the binary and runs it in place of this process; returns only when it
 /// could not be started: its path and why. Elsewhere than on Unix, runs it and returns its
 /// exit code.
-fn start_compiled(file: &ModelFile, taylor: bool) -> Result<(PathBuf, String), String> {
-    let (binary, built) = crate::models::ensure_binary(file, taylor).map_err(|e| e.to_string())?;
+fn start_compiled(file: &ModelFile, taylor: bool) -> Result<(PathBuf, String), CliError> {
+    let (binary, built) = crate::models::ensure_binary(file, taylor)?;
     if built {
         eprintln!("compiled: {}", binary.display());
     }
@@ -363,22 +364,16 @@ fn start_compiled(file: &ModelFile, taylor: bool) -> Result<(PathBuf, String), S
     }
     #[cfg(not(unix))]
     {
-        let status = command
-            .status()
-            .map_err(|e| format!("cannot start the compiled model {}: {e}", binary.display()))?;
+        let status = command.status().map_err(|source| CliError::Start { binary: binary.clone(), source })?;
         std::process::exit(status.code().unwrap_or(1))
     }
 }
 
 /// Runs, writes and summarises.
-fn finish(scene: &Scene, registry: &Registry, args: &RunArgs) -> Result<ExitCode, String> {
-    let failed = |e: crate::run::RunError| match e {
-        // A scene error already names the file, line and column; the View error names the file.
-        crate::run::RunError::Scene(_) | crate::run::RunError::View { .. } => e.to_string(),
-        e => format!("{}: {e}", scene.path.display()),
-    };
+fn finish(scene: &Scene, registry: &Registry, args: &RunArgs) -> Result<ExitCode, CliError> {
     let out = args.out.as_deref();
-    let summary = crate::run::run_with(scene, registry, out).map_err(failed)?;
+    let summary = crate::run::run_with(scene, registry, out)
+        .map_err(|e| CliError::Run { scene: scene.path.clone(), source: Box::new(e) })?;
     print_summary(&scene.title, &summary);
     if let Some(entry) = registry.find(&scene.model) {
         println!("model {} ran {}", entry.info.name, entry.engine.label());
@@ -390,11 +385,11 @@ fn finish(scene: &Scene, registry: &Registry, args: &RunArgs) -> Result<ExitCode
 }
 
 /// Integrates `times` more times and prints the median and least wall time.
-fn print_timing(scene: &Scene, registry: &Registry, times: usize) -> Result<(), String> {
-    let problem = crate::resolve::resolve(scene, registry).map_err(|e| e.to_string())?;
+fn print_timing(scene: &Scene, registry: &Registry, times: usize) -> Result<(), CliError> {
+    let problem = crate::resolve::resolve(scene, registry)?;
     let mut walls = Vec::with_capacity(times);
     for _ in 0..times {
-        let t = crate::solve::solve(&problem, None).map_err(|e| e.to_string())?;
+        let t = crate::solve::solve(&problem, None)?;
         walls.push(t.wall.as_secs_f64() * 1e3);
     }
     walls.sort_by(f64::total_cmp);

@@ -4,6 +4,7 @@
 
 use kane_model::runtime::ModelInfo;
 
+use super::CliError;
 use crate::models::FileRun;
 
 /// End time when neither the command line nor the file's TFINAL gives one.
@@ -23,12 +24,12 @@ pub struct ModelRunArgs {
 }
 
 /// Splits `NAME=VALUE`.
-pub fn parse_set(text: &str) -> Result<(String, String), String> {
+pub fn parse_set(text: &str) -> Result<(String, String), CliError> {
     match text.split_once('=') {
         Some((n, v)) if !n.trim().is_empty() && !v.trim().is_empty() => {
             Ok((n.trim().to_string(), v.trim().to_string()))
         }
-        _ => Err(format!("`{text}` is not NAME=VALUE (for example --set Y=10 or --set \"Q2=30 deg\")")),
+        _ => Err(CliError::SetForm { text: text.to_string() }),
     }
 }
 
@@ -40,7 +41,7 @@ pub fn scene_text(
     run: &FileRun,
     info: &ModelInfo,
     args: &ModelRunArgs,
-) -> Result<String, String> {
+) -> Result<String, CliError> {
     let t_final = args.t_final.or(run.t_final).unwrap_or(DEFAULT_T_FINAL);
     let step = run.step.filter(|s| *s > 0.0 && *s <= t_final).unwrap_or(t_final / DEFAULT_ROWS);
     let known = |n: &str| info.state(n).is_some() || info.output(n).is_some();
@@ -67,12 +68,12 @@ pub fn scene_text(
         } else if info.state(name).is_some() {
             initial.push_str(&line);
         } else {
-            return Err(format!(
-                "--set {name}: {} has no parameter or state `{name}`\n  help: parameters: {}; states: {}",
-                info.name,
-                info.param_names.join(", "),
-                info.state_names.join(", ")
-            ));
+            return Err(CliError::UnknownSet {
+                name: name.clone(),
+                model: info.name.to_string(),
+                params: info.param_names.iter().map(|p| p.to_string()).collect(),
+                states: info.state_names.iter().map(|s| s.to_string()).collect(),
+            });
         }
     }
     if !params.is_empty() {
@@ -140,7 +141,8 @@ mod tests {
         let scene = Scene::parse("<command line>", &text).unwrap();
         assert_eq!((scene.t_final, scene.output_step), (10.0, 0.1));
         assert_eq!(scene.outputs.len(), 6, "every state");
-        let e = scene_text("g.al", &FileRun::default(), &INFO, &args(&[("MASS", "3")])).unwrap_err();
+        let e =
+            scene_text("g.al", &FileRun::default(), &INFO, &args(&[("MASS", "3")])).unwrap_err().to_string();
         assert!(e.starts_with("--set MASS: gimbal_gyroscope has no parameter or state `MASS`"), "{e}");
         assert!(parse_set("Y").is_err() && parse_set("Y=").is_err());
         assert_eq!(parse_set("Q2 = 30 deg").unwrap(), ("Q2".into(), "30 deg".into()));

@@ -4,12 +4,13 @@
 use std::path::Path;
 use std::process::ExitCode;
 
+use super::CliError;
 use crate::models::Registry;
 use crate::scene::Scene;
 
 /// Loads the scene (a model file it names runs on the instant engine), runs it once and serves it.
-pub fn serve_command(scene: &Path, port: u16, registry: Registry) -> Result<ExitCode, String> {
-    let scene = Scene::load(scene).map_err(|e| e.to_string())?;
+pub fn serve_command(scene: &Path, port: u16, registry: Registry) -> Result<ExitCode, CliError> {
+    let scene = Scene::load(scene)?;
     let registry = super::file_model::with_file_model(&scene, registry)?;
     if scene.controls.is_empty() {
         eprintln!(

@@ -11,6 +11,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use indicatif::{ProgressBar, ProgressStyle};
 
+use super::CliError;
 use crate::models::Registry;
 use crate::scene::Scene;
 use crate::study::sweep::{self, Design, MemberSet, Members, Range, Shard, SweepPlan};
@@ -36,8 +37,8 @@ pub struct SweepArgs<'a> {
 /// Runs the members of this shard not yet in `out/sweep.csv` (or its journal, after a kill),
 /// journaling each as it ends, and rewrites `sweep.csv` and `timing.csv` with all of them; the
 /// folder must hold this sweep (or none) and no other sweep may be running in it.
-pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCode, String> {
-    let scene = Scene::load(args.scene).map_err(|e| e.to_string())?;
+pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCode, CliError> {
+    let scene = Scene::load(args.scene)?;
     let registry = super::file_model::with_file_model(&scene, registry.clone())?;
     let design = match args.samples {
         Some(count) => Design::Samples { count, seed: args.seed },
@@ -48,7 +49,8 @@ pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCo
     let plan = plan_of(&scene, args.vary, &design, members.len(), shard)?;
     let names: Vec<String> = args.vary.iter().map(|r| r.name.clone()).collect();
     let header = sweep::table::header(&names, &sweep::value_columns(&scene, &registry)?);
-    std::fs::create_dir_all(args.out).map_err(|e| format!("{}: {e}", args.out.display()))?;
+    std::fs::create_dir_all(args.out)
+        .map_err(|source| CliError::Io { path: args.out.to_path_buf(), source })?;
     let _lock = sweep::lock::FolderLock::take(args.out)?;
     sweep::identity::bind(args.out, &plan, args.new)?;
     let fingerprint = plan.fingerprint();
@@ -66,10 +68,7 @@ pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCo
         run.journaled(todo, shard_len.saturating_sub(done.len()), header.len() - names.len() - 4)?;
     if let Some(by) = crate::ode::interrupt::requested() {
         let kept = sweep::scan_journal(args.out, &fingerprint, &header, &mut |_| Ok(()))?;
-        return Err(format!(
-            "{by}: {kept} members done are kept in {}; run the same command again to resume",
-            args.out.join(sweep::JOURNAL_FILE).display()
-        ));
+        return Err(CliError::Interrupted { by, kept, journal: args.out.join(sweep::JOURNAL_FILE) });
     }
     sweep::finish(args.out, &fingerprint, &header)?;
     journal.remove()?;
@@ -89,10 +88,10 @@ fn plan_of(
     design: &Design,
     members: usize,
     shard: Shard,
-) -> Result<SweepPlan, String> {
+) -> Result<SweepPlan, CliError> {
     let (model, model_text) = match super::file_model::model_file_of(scene) {
         Some(path) => {
-            let text = std::fs::read(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+            let text = std::fs::read(&path).map_err(|source| CliError::Io { path: path.clone(), source })?;
             (path.display().to_string(), sweep::identity::fnv1a64(&text))
         }
         None => (scene.model.clone(), "built-in".to_string()),
@@ -117,14 +116,11 @@ fn plan_of(
 }
 
 /// Adds to `done` the members of the rows of `out/sweep.csv` (whose columns must be `header`).
-fn add_rows(out: &Path, header: &[String], done: &mut MemberSet) -> Result<(), String> {
+fn add_rows(out: &Path, header: &[String], done: &mut MemberSet) -> Result<(), CliError> {
     let csv_path = out.join("sweep.csv");
     if let Some(mut rows) = sweep::table::RowLines::open(&csv_path)? {
         if rows.header != header {
-            return Err(format!(
-                "{} holds another sweep's rows (other columns): give another --out, or --new to start over",
-                csv_path.display()
-            ));
+            return Err(CliError::OtherRows { path: csv_path });
         }
         while let Some((m, _)) = rows.next_row()? {
             done.insert(m);
@@ -150,13 +146,11 @@ impl Run<'_> {
         todo: impl Iterator<Item = usize> + Send,
         len: usize,
         n_values: usize,
-    ) -> Result<(usize, usize), String> {
-        let bar = ProgressBar::new(len as u64).with_style(
-            ProgressStyle::with_template("{bar:40} {pos}/{len} members, {eta} left")
-                .map_err(|e| e.to_string())?,
-        );
+    ) -> Result<(usize, usize), CliError> {
+        let bar = ProgressBar::new(len as u64)
+            .with_style(ProgressStyle::with_template("{bar:40} {pos}/{len} members, {eta} left")?);
         let (ran, failed) = (AtomicUsize::new(0), AtomicUsize::new(0));
-        let journal_error = std::sync::Mutex::new(None::<String>);
+        let journal_error = std::sync::Mutex::new(None::<sweep::SweepError>);
         let record = |row: &sweep::SweepRow, ms: f64| {
             match self.journal.record(&sweep::table::cells(row, n_values), ms) {
                 Ok(()) => {
@@ -164,7 +158,9 @@ impl Run<'_> {
                     failed.fetch_add(usize::from(row.status != "ok"), Ordering::Relaxed);
                 }
                 Err(e) => {
-                    journal_error.lock().map(|mut slot| slot.get_or_insert(e).clone()).ok();
+                    if let Ok(mut slot) = journal_error.lock() {
+                        slot.get_or_insert(e);
+                    }
                 }
             }
             bar.inc(1);
@@ -172,14 +168,14 @@ impl Run<'_> {
         sweep::run_members(self.scene, self.vary, self.members, todo, self.registry, &record);
         bar.finish_and_clear();
         match journal_error.into_inner().ok().flatten() {
-            Some(e) => Err(format!("the sweep's journal could not be written: {e}")),
+            Some(e) => Err(CliError::Journal(e)),
             None => Ok((ran.into_inner(), failed.into_inner())),
         }
     }
 }
 
 /// `gyro-sim sweep-merge`: joins the shards' rows into `out/sweep.csv`.
-pub fn merge_command(out: &Path, shards: &[PathBuf]) -> Result<ExitCode, String> {
+pub fn merge_command(out: &Path, shards: &[PathBuf]) -> Result<ExitCode, CliError> {
     let dirs: Vec<&Path> = shards.iter().map(PathBuf::as_path).collect();
     let n = sweep::merge(&dirs, out)?;
     println!("merged {n} members from {} shards into {}", shards.len(), out.join("sweep.csv").display());

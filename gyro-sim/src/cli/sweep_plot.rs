@@ -5,6 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use super::CliError;
 use crate::output::{write_sweep_metric, MemberPoint, MetricAxes};
 use crate::study::sweep;
 
@@ -21,31 +22,29 @@ pub struct SweepPlotArgs<'a> {
 }
 
 /// Draws the metric of `args.dir/sweep.csv` over the varied values.
-pub fn sweep_plot_command(args: &SweepPlotArgs<'_>) -> Result<ExitCode, String> {
+pub fn sweep_plot_command(args: &SweepPlotArgs<'_>) -> Result<ExitCode, CliError> {
     let csv_path = args.dir.join("sweep.csv");
     let (header, rows) = sweep::read_rows(&csv_path)?;
     if header.is_empty() {
-        return Err(format!(
-            "{}: no sweep.csv (run gyro-sim sweep --out {} first)",
-            csv_path.display(),
-            args.dir.display()
-        ));
+        return Err(CliError::NoSweep { csv: csv_path, dir: args.dir.to_path_buf() });
     }
     let status = header
         .iter()
         .position(|h| h == "status")
-        .ok_or_else(|| format!("{}: no status column: not a sweep's file", csv_path.display()))?;
+        .ok_or_else(|| CliError::NoStatus { csv: csv_path.clone() })?;
     let varied = &header[1..status];
     let find = |name: &str, among: &[String]| {
-        among.iter().position(|h| h.eq_ignore_ascii_case(name)).ok_or_else(|| {
-            format!("{}: no column `{name}`; the columns are: {}", csv_path.display(), among.join(", "))
+        among.iter().position(|h| h.eq_ignore_ascii_case(name)).ok_or_else(|| CliError::NoColumn {
+            csv: csv_path.clone(),
+            name: name.to_string(),
+            columns: among.to_vec(),
         })
     };
     let metric = find(args.metric, &header)?;
     let over: Vec<String> =
         if args.over.is_empty() { varied.iter().take(2).cloned().collect() } else { args.over.to_vec() };
     if over.is_empty() || over.len() > 2 {
-        return Err(format!("--over takes one or two of the varied names ({})", varied.join(", ")));
+        return Err(CliError::Over { varied: varied.to_vec() });
     }
     let axes: Vec<usize> = over.iter().map(|n| find(n, varied).map(|k| k + 1)).collect::<Result<_, _>>()?;
     let number = |r: &[String], k: usize| r.get(k).and_then(|c| c.parse::<f64>().ok());

@@ -13,7 +13,7 @@ mod model_file;
 mod registry;
 
 pub use builtin::{gimbal_gyroscope, heavy_top};
-pub use compiled::{cache_dir, content_hash, ensure_binary, not_a_program, registry_key};
+pub use compiled::{cache_dir, content_hash, ensure_binary, not_a_program, registry_key, CompileError};
 pub use instant::file_entry;
-pub use model_file::{source_with, FileRun, ModelFile};
+pub use model_file::{source_with, FileRun, ModelFile, ModelFileError};
 pub use registry::Registry;

@@ -13,23 +13,36 @@ use thiserror::Error;
 #[derive(Debug, Error)]
 pub enum ModelFileError {
     /// The file cannot be read.
-    #[error("{path}: cannot read the model file: {reason}")]
+    #[error("{}: cannot read the model file: {source}", path.display())]
     Read {
         /// The path given.
-        path: String,
-        /// Why it failed.
-        reason: String,
+        path: PathBuf,
+        /// What the system said.
+        #[source]
+        source: std::io::Error,
     },
-    /// The file does not check (syntax, derivation or consistency errors, with their places).
-    #[error("{0}")]
-    Check(String),
+    /// The file does not check: the language's report, whose diagnostics carry their file,
+    /// line and column (syntax, derivation or consistency errors).
+    #[error(transparent)]
+    Check(#[from] kane_model::lang::Report),
+    /// The checked model does not make a spec (no equations, a SPECIFIED quantity without a
+    /// formula, ...).
+    #[error("{}: {source}", path.display())]
+    Spec {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        #[source]
+        source: kane_model::lang::SpecError,
+    },
     /// The equations cannot be lowered to a program.
-    #[error("{path}: {reason}")]
+    #[error("{}: {source}", path.display())]
     Lower {
         /// The file.
-        path: String,
-        /// Why it failed.
-        reason: String,
+        path: PathBuf,
+        /// Why.
+        #[source]
+        source: kane_model::codegen::CodegenError,
     },
 }
 
@@ -75,17 +88,16 @@ impl ModelFile {
     /// Checks and lowers `source`, the text of the model file at `path` (see `source_with`).
     pub fn from_source(path: &Path, source: String) -> Result<ModelFile, ModelFileError> {
         let shown = path.display().to_string();
-        let checked =
-            kane_model::lang::check(&shown, &source).map_err(|r| ModelFileError::Check(r.to_string()))?;
+        let checked = kane_model::lang::check(&shown, &source)?;
         let warnings = checked.warnings.to_string();
         let loaded = checked.model;
         let name = model_name(path);
         let run = file_run(&loaded);
         let mut spec = loaded
             .into_spec(&name)
-            .map_err(|e| ModelFileError::Lower { path: shown.clone(), reason: e.to_string() })?;
+            .map_err(|source| ModelFileError::Spec { path: path.to_path_buf(), source })?;
         let program = ProgramModel::new(&mut spec)
-            .map_err(|e| ModelFileError::Lower { path: shown, reason: e.to_string() })?;
+            .map_err(|source| ModelFileError::Lower { path: path.to_path_buf(), source })?;
         Ok(ModelFile {
             path: path.to_path_buf(),
             source,
@@ -105,7 +117,7 @@ pub fn source_with(
     specified: &[(String, String, std::ops::Range<usize>)],
 ) -> Result<String, ModelFileError> {
     let mut source = std::fs::read_to_string(path)
-        .map_err(|e| ModelFileError::Read { path: path.display().to_string(), reason: e.to_string() })?;
+        .map_err(|source| ModelFileError::Read { path: path.to_path_buf(), source })?;
     if !specified.is_empty() {
         if !source.ends_with('\n') {
             source.push('\n');

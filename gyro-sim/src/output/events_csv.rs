@@ -4,21 +4,22 @@
 
 use std::path::Path;
 
-use super::{column_name, write_atomically};
+use super::{column_name, write_atomically, WriteError};
 use crate::problem::Trajectory;
 
 /// Writes the events of `trajectory` to `path` (atomically); a header alone when none happened.
-pub fn write_events_csv(trajectory: &Trajectory, path: &Path) -> Result<(), String> {
+pub fn write_events_csv(trajectory: &Trajectory, path: &Path) -> Result<(), WriteError> {
     let shown: Vec<usize> =
         (0..trajectory.columns.len()).filter(|k| !trajectory.columns[*k].hidden).collect();
     write_atomically(path, |tmp| {
-        let mut w = csv::Writer::from_path(tmp).map_err(|e| format!("{}: {e}", tmp.display()))?;
+        let fail = |e: csv::Error| WriteError::csv(tmp, e);
+        let mut w = csv::Writer::from_path(tmp).map_err(fail)?;
         let mut header = vec!["event".to_string(), "direction".to_string(), "t".to_string()];
         header.extend(shown.iter().map(|k| {
             let c = &trajectory.columns[*k];
             column_name(&c.name, &c.unit)
         }));
-        w.write_record(&header).map_err(|e| e.to_string())?;
+        w.write_record(&header).map_err(fail)?;
         for r in &trajectory.events.records {
             let mut record = vec![r.name.clone(), if r.rising { "up" } else { "down" }.to_string()];
             record.push(r.row[0].to_string());
@@ -27,8 +28,8 @@ pub fn write_events_csv(trajectory: &Trajectory, path: &Path) -> Result<(), Stri
                 let v = r.row[k + 1];
                 record.push(if c.unit.eq_ignore_ascii_case("DEG") { v.to_degrees() } else { v }.to_string());
             }
-            w.write_record(&record).map_err(|e| e.to_string())?;
+            w.write_record(&record).map_err(fail)?;
         }
-        w.flush().map_err(|e| e.to_string())
+        w.flush().map_err(|e| WriteError::io(tmp, e))
     })
 }

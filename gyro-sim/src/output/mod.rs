@@ -18,27 +18,13 @@ pub use plot::{
     MetricAxes, WorkPrecisionPoint,
 };
 pub use streamed::StreamedSet;
-pub(crate) use temporaries::{remove_temporaries, unique_temporary, write_atomically};
+pub(crate) use temporaries::{remove_temporaries, unique_temporary, write_atomically, write_file_atomically};
 pub use view::write_view;
 pub(crate) use view::{page_html, script_json, view_data};
 pub use write::{write, write_set, Written};
 
-use std::path::PathBuf;
+mod error;
 
-use thiserror::Error;
-
-/// Why results could not be written.
-#[derive(Clone, Debug, PartialEq, Error)]
-pub enum WriteError {
-    /// The folder could not be made.
-    #[error("{path}: {message}")]
-    Folder {
-        /// The folder.
-        path: PathBuf,
-        /// What the system said.
-        message: String,
-    },
-    /// A file could not be written.
-    #[error("{0}")]
-    File(String),
-}
+pub use error::WriteError;
+pub use plot::PlotError;
+pub use set::SetError;

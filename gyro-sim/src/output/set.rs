@@ -30,6 +30,7 @@
 //! is left in the removed one (`cd .` again); `OUT`'s permission bits are carried over, its owner
 //! and extended attributes are not; `OUT` must be on its parent's filesystem (not a mount point).
 
+mod error;
 mod foreign;
 mod names;
 mod owner;
@@ -40,8 +41,9 @@ mod tests;
 use std::fs::{self, File, OpenOptions};
 use std::path::{Path, PathBuf};
 
+pub use error::SetError;
+use names::COMMIT_LOCK;
 pub use names::PARTIAL_CSV;
-use names::{fail, COMMIT_LOCK};
 use owner::Owner;
 
 /// Where a set goes: the output folder as given and resolved, and the work folder beside it.
@@ -53,35 +55,26 @@ struct Place {
 
 impl Place {
     /// The place of the output folder `dir` (which may not exist yet); the work folder is made.
-    fn of(dir: &Path) -> Result<Place, String> {
+    fn of(dir: &Path) -> Result<Place, SetError> {
         let out = match fs::canonicalize(dir) {
             Ok(out) => out,
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
                 let Some(name) = dir.file_name() else {
-                    return Err(format!("{}: give the output folder by its name", dir.display()));
+                    return Err(SetError::Unnamed { dir: dir.to_path_buf() });
                 };
                 let parent = dir.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
                 let made = fs::create_dir_all(parent).and_then(|_| fs::canonicalize(parent));
-                made.map_err(|e| {
-                    format!("{}: cannot make the output folder's parent: {e}", parent.display())
-                })?
-                .join(name)
+                made.map_err(|source| SetError::Parent { parent: parent.to_path_buf(), source })?.join(name)
             }
-            Err(e) => return Err(format!("{}: cannot open the output folder: {e}", dir.display())),
+            Err(source) => return Err(SetError::Open { dir: dir.to_path_buf(), source }),
         };
         let (Some(parent), Some(name)) = (out.parent(), out.file_name()) else {
-            return Err(format!(
-                "{}: a run replaces its output folder whole; give a folder inside it",
-                dir.display()
-            ));
+            return Err(SetError::Root { dir: dir.to_path_buf() });
         };
         let work = parent.join(format!(".{}.gyro-sim", name.to_string_lossy()));
-        if let Err(e) = fs::create_dir(&work) {
-            if e.kind() != std::io::ErrorKind::AlreadyExists {
-                return Err(format!(
-                    "{}: cannot make the folder sets are staged in, beside the output folder: {e}; the output folder's parent must be writable",
-                    work.display()
-                ));
+        if let Err(source) = fs::create_dir(&work) {
+            if source.kind() != std::io::ErrorKind::AlreadyExists {
+                return Err(SetError::Work { work, source });
             }
         }
         Ok(Place { shown: dir.to_path_buf(), out, work })
@@ -89,30 +82,26 @@ impl Place {
 
     /// Takes the commit lock (held while the result lives) and settles abandoned staging (an
     /// interrupted commit's earlier set put back); the output folder exists after.
-    fn enter(&self) -> Result<File, String> {
+    fn enter(&self) -> Result<File, SetError> {
         let path = self.work.join(COMMIT_LOCK);
         let open = OpenOptions::new().read(true).write(true).create(true).truncate(false).open(&path);
-        let lock = open.map_err(|e| fail(&path, e))?;
-        lock.lock().map_err(|e| fail(&path, e))?;
+        let lock = open.map_err(|e| SetError::io(&path, e))?;
+        lock.lock().map_err(|e| SetError::io(&path, e))?;
         owner::remove_abandoned(&self.work, &self.out);
         let made = fs::create_dir_all(&self.out);
-        made.map_err(|e| format!("{}: cannot make the output folder: {e}", self.shown.display()))?;
+        made.map_err(|source| SetError::Make { dir: self.shown.clone(), source })?;
         Ok(lock)
     }
 }
 
 /// An error unless `out` and `work` are on one filesystem (a set is swapped in by a rename).
-fn same_filesystem(out: &Path, work: &Path) -> Result<(), String> {
+fn same_filesystem(out: &Path, work: &Path) -> Result<(), SetError> {
     #[cfg(unix)]
     {
         use std::os::unix::fs::MetadataExt;
-        let dev = |p: &Path| fs::metadata(p).map(|m| m.dev()).map_err(|e| fail(p, e));
+        let dev = |p: &Path| fs::metadata(p).map(|m| m.dev()).map_err(|e| SetError::io(p, e));
         if dev(out)? != dev(work)? {
-            return Err(format!(
-                "{}: a mount point or on another filesystem than its parent; a run's set is staged in {} and swapped in whole, which needs one filesystem: give a folder inside it as the output",
-                out.display(),
-                work.display()
-            ));
+            return Err(SetError::OtherFilesystem { out: out.to_path_buf(), work: work.to_path_buf() });
         }
     }
     let _ = (out, work);
@@ -127,13 +116,13 @@ pub(crate) struct Staging {
 
 impl Staging {
     /// A new staging folder for the output folder `dir` (made if missing).
-    pub(crate) fn new(dir: &Path) -> Result<Staging, String> {
+    pub(crate) fn new(dir: &Path) -> Result<Staging, SetError> {
         let place = Place::of(dir)?;
         if fs::symlink_metadata(&place.out).is_err() {
             drop(place.enter()?);
         }
         if !place.out.is_dir() {
-            return Err(format!("{}: not a folder; give a folder as the output", dir.display()));
+            return Err(SetError::NotAFolder { dir: dir.to_path_buf() });
         }
         same_filesystem(&place.out, &place.work)?;
         foreign::refuse_folders(&place.out)?;
@@ -148,22 +137,22 @@ impl Staging {
 
     /// Puts the staged file `name` in place as `dir/as_name` by one rename, leaving the folder's
     /// set as it is; the rest of the staging is dropped.
-    pub(crate) fn commit_one(self, name: &str, as_name: &str) -> Result<PathBuf, String> {
+    pub(crate) fn commit_one(self, name: &str, as_name: &str) -> Result<PathBuf, SetError> {
         let _lock = self.place.enter()?;
         let target = self.place.out.join(as_name);
-        fs::rename(self.path(name), &target).map_err(|e| fail(&target, e))?;
+        fs::rename(self.path(name), &target).map_err(|e| SetError::io(&target, e))?;
         let shown = self.place.shown.join(as_name);
         drop(self);
         Ok(shown)
     }
 
     /// Makes the staged set the folder's set in one atomic step, the folder's other files kept.
-    pub(crate) fn commit(self) -> Result<(), String> {
+    pub(crate) fn commit(self) -> Result<(), SetError> {
         let _lock = self.place.enter()?;
         let (stage, out) = (self.owner.dir(), &self.place.out);
         foreign::link_into(out, stage)?;
-        let permissions = fs::metadata(out).map_err(|e| fail(out, e))?.permissions();
-        fs::set_permissions(stage, permissions).map_err(|e| fail(stage, e))?;
+        let permissions = fs::metadata(out).map_err(|e| SetError::io(out, e))?.permissions();
+        fs::set_permissions(stage, permissions).map_err(|e| SetError::io(stage, e))?;
         swap::swap(stage, out, &self.owner.old())?;
         // The owner, dropped under the lock, finds the earlier set in its place and removes it.
         drop(self);

@@ -25,9 +25,8 @@ pub struct StreamedSet {
 impl StreamedSet {
     /// Stages a set in `dir` (made if missing) and opens its CSV for a run's `columns`.
     pub fn begin(dir: &Path, columns: &[Column]) -> Result<StreamedSet, WriteError> {
-        let folder = |message: String| WriteError::Folder { path: dir.to_path_buf(), message };
-        let staging = Staging::new(dir).map_err(folder)?;
-        let csv = CsvStream::create(&staging.path("trajectory.csv"), columns).map_err(WriteError::File)?;
+        let staging = Staging::new(dir)?;
+        let csv = CsvStream::create(&staging.path("trajectory.csv"), columns)?;
         Ok(StreamedSet { dir: dir.to_path_buf(), staging, csv: Arc::new(Mutex::new(csv)) })
     }
 
@@ -38,8 +37,8 @@ impl StreamedSet {
 
     /// Closes the CSV; the rows it holds.
     fn close(&self) -> Result<usize, WriteError> {
-        let mut csv = self.csv.lock().map_err(|_| WriteError::File("the CSV writer failed".into()))?;
-        csv.finish().map_err(WriteError::File)
+        let mut csv = self.csv.lock().map_err(|_| WriteError::Poisoned)?;
+        csv.finish()
     }
 
     /// Closes the CSV, writes the figures and the view from `trajectory`'s kept rows, and puts
@@ -57,7 +56,7 @@ impl StreamedSet {
         if rows == 0 {
             return Ok(None);
         }
-        let path = self.staging.commit_one("trajectory.csv", PARTIAL_CSV).map_err(WriteError::File)?;
+        let path = self.staging.commit_one("trajectory.csv", PARTIAL_CSV)?;
         Ok(Some((path, rows)))
     }
 }

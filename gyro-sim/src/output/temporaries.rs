@@ -7,6 +7,8 @@ use std::hash::{BuildHasher, Hasher};
 use std::path::Path;
 use std::sync::atomic::{AtomicU64, Ordering};
 
+use super::WriteError;
+
 static COUNTER: AtomicU64 = AtomicU64::new(0);
 
 /// A number no other call, here or in another process on any host, is likely to draw (the
@@ -29,37 +31,42 @@ pub(crate) fn is_temporary_of(file_name: &str, name: &str) -> bool {
 }
 
 /// Removes from `dir` the temporaries (`.partial-{pid}-{random}-NAME`) of the files `names`.
-pub(crate) fn remove_temporaries(dir: &Path, names: &[&str]) -> Result<(), String> {
+pub(crate) fn remove_temporaries(dir: &Path, names: &[&str]) -> Result<(), WriteError> {
     let entries = match std::fs::read_dir(dir) {
         Ok(entries) => entries,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(()),
-        Err(e) => return Err(format!("{}: {e}", dir.display())),
+        Err(e) => return Err(WriteError::io(dir, e)),
     };
     for entry in entries {
-        let entry = entry.map_err(|e| format!("{}: {e}", dir.display()))?;
+        let entry = entry.map_err(|e| WriteError::io(dir, e))?;
         let name = entry.file_name();
         let name = name.to_string_lossy();
         if names.iter().any(|n| is_temporary_of(&name, n)) {
             let path = entry.path();
-            std::fs::remove_file(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+            std::fs::remove_file(&path).map_err(|e| WriteError::io(&path, e))?;
         }
     }
     Ok(())
 }
 
 /// Writes `path` through a temporary file in the same folder, named for this process and call,
-/// and a rename.
-pub(crate) fn write_atomically(
-    path: &std::path::Path,
-    write: impl FnOnce(&std::path::Path) -> Result<(), String>,
-) -> Result<(), String> {
+/// and a rename; `write` writes the temporary, and its error (or the rename's) is returned.
+pub(crate) fn write_atomically<E: From<WriteError>>(
+    path: &Path,
+    write: impl FnOnce(&Path) -> Result<(), E>,
+) -> Result<(), E> {
     // The temporary keeps the real extension last: encoders choose the format from it.
     let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("output");
     let tmp = path.with_file_name(unique_temporary(name));
     let result =
-        write(&tmp).and_then(|_| std::fs::rename(&tmp, path).map_err(|e| format!("{}: {e}", path.display())));
+        write(&tmp).and_then(|_| std::fs::rename(&tmp, path).map_err(|e| E::from(WriteError::io(path, e))));
     if result.is_err() {
         let _ = std::fs::remove_file(&tmp);
     }
     result
+}
+
+/// Writes `bytes` to `path` through [`write_atomically`].
+pub(crate) fn write_file_atomically(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
+    write_atomically(path, |tmp| std::fs::write(tmp, bytes).map_err(|e| WriteError::io(tmp, e)))
 }

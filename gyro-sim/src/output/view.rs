@@ -11,7 +11,7 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use super::{write_atomically, WriteError};
+use super::{write_file_atomically, WriteError};
 use crate::problem::Trajectory;
 use crate::scene::{ViewError, ViewSpec};
 
@@ -28,10 +28,9 @@ const FIELD_OF_VIEW_DEG: f64 = 45.0;
 
 /// Writes the view of `trajectory` as one HTML file at `path`, atomically.
 pub fn write_view(trajectory: &Trajectory, view: &ViewSpec, path: &Path) -> Result<(), WriteError> {
-    let html =
-        view_html(trajectory, view).map_err(|e| WriteError::File(format!("{}: {e}", path.display())))?;
-    write_atomically(path, |tmp| std::fs::write(tmp, &html).map_err(|e| format!("{}: {e}", tmp.display())))
-        .map_err(WriteError::File)
+    let html = view_html(trajectory, view)
+        .map_err(|source| WriteError::View { path: path.to_path_buf(), source })?;
+    write_file_atomically(path, html.as_bytes())
 }
 
 /// The page's text.

@@ -37,10 +37,9 @@ pub fn write_set(
     view: Option<&ViewSpec>,
     dir: &Path,
 ) -> Result<Written, WriteError> {
-    let folder = |message: String| WriteError::Folder { path: dir.to_path_buf(), message };
-    let staging = Staging::new(dir).map_err(folder)?;
+    let staging = Staging::new(dir)?;
     let table = display_table(trajectory);
-    write_csv(&table, &staging.path("trajectory.csv")).map_err(WriteError::File)?;
+    write_csv(&table, &staging.path("trajectory.csv"))?;
     let rows = table.rows.len();
     finish_set(staging, trajectory, &table, view, dir, rows)
 }
@@ -56,21 +55,20 @@ pub(crate) fn finish_set(
     rows: usize,
 ) -> Result<Written, WriteError> {
     if !trajectory.events.names.is_empty() {
-        super::events_csv::write_events_csv(trajectory, &staging.path("events.csv"))
-            .map_err(WriteError::File)?;
+        super::events_csv::write_events_csv(trajectory, &staging.path("events.csv"))?;
     }
-    write_plot(table, &staging.path("trajectory.png")).map_err(WriteError::File)?;
+    write_plot(table, &staging.path("trajectory.png"))?;
     let mut figures = Vec::new();
-    if write_elevation(table, &staging.path("elevation.png")).map_err(WriteError::File)? {
+    if write_elevation(table, &staging.path("elevation.png"))? {
         figures.push(dir.join("elevation.png"));
     }
-    if write_trace(table, &staging.path("axle_trace.png")).map_err(WriteError::File)? {
+    if write_trace(table, &staging.path("axle_trace.png"))? {
         figures.push(dir.join("axle_trace.png"));
     }
     if let Some(view) = view {
         write_view(trajectory, view, &staging.path("view.html"))?;
         figures.push(dir.join("view.html"));
     }
-    staging.commit().map_err(WriteError::File)?;
+    staging.commit()?;
     Ok(Written { csv: dir.join("trajectory.csv"), plot: dir.join("trajectory.png"), figures, rows })
 }

@@ -16,7 +16,7 @@ mod trajectory;
 pub use event_log::{Crowded, EventLog, EventRecord, Unsettled};
 pub use event_spec::{EventSpec, Rule, Source};
 pub(crate) use rows::Rows;
-pub use rows::{RowSink, RowStream, MAX_KEPT_ROWS};
+pub use rows::{RowError, RowSink, RowStream, MAX_KEPT_ROWS};
 pub use solve_error::SolveError;
 pub use trajectory::{Accuracy, Column, Conditioning, Constraints, Trajectory};
 

@@ -5,13 +5,44 @@
 
 use std::sync::{Arc, Mutex};
 
+use thiserror::Error;
+
 /// Most rows kept in memory beside a stream (figures are drawn from them).
 pub const MAX_KEPT_ROWS: usize = 20_000;
 
 /// Takes rows (`t`, then the columns, model units) one at a time.
 pub trait RowSink: Send {
     /// Takes one row; an error stops the run.
-    fn row(&mut self, row: &[f64]) -> Result<(), String>;
+    fn row(&mut self, row: &[f64]) -> Result<(), RowError>;
+}
+
+/// Why a row could not be taken.
+#[derive(Clone, Debug, Error)]
+pub enum RowError {
+    /// The sink failed at an earlier row (a thread panicked while it held the sink).
+    #[error("the row writer failed earlier")]
+    Poisoned,
+    /// The sink could not take the row: its own error (a file's, for a CSV).
+    #[error("{0}")]
+    Sink(#[source] Arc<dyn std::error::Error + Send + Sync>),
+}
+
+impl RowError {
+    /// The sink's error `e`.
+    pub fn sink(e: impl std::error::Error + Send + Sync + 'static) -> RowError {
+        RowError::Sink(Arc::new(e))
+    }
+}
+
+impl PartialEq for RowError {
+    /// Equal when both are [`RowError::Poisoned`] or both hold the same sink error.
+    fn eq(&self, other: &RowError) -> bool {
+        match (self, other) {
+            (RowError::Poisoned, RowError::Poisoned) => true,
+            (RowError::Sink(a), RowError::Sink(b)) => Arc::ptr_eq(a, b),
+            _ => false,
+        }
+    }
 }
 
 /// A shared [`RowSink`], as a problem carries it.
@@ -20,8 +51,8 @@ pub struct RowStream(pub Arc<Mutex<dyn RowSink>>);
 
 impl RowStream {
     /// Sends one row.
-    fn send(&self, row: &[f64]) -> Result<(), String> {
-        let mut sink = self.0.lock().map_err(|_| "the row writer failed earlier".to_string())?;
+    fn send(&self, row: &[f64]) -> Result<(), RowError> {
+        let mut sink = self.0.lock().map_err(|_| RowError::Poisoned)?;
         sink.row(row)
     }
 }
@@ -61,7 +92,7 @@ impl Rows {
     }
 
     /// Takes one row.
-    pub(crate) fn push(&mut self, row: Vec<f64>) -> Result<(), String> {
+    pub(crate) fn push(&mut self, row: Vec<f64>) -> Result<(), RowError> {
         if let Some(s) = &self.stream {
             s.send(&row)?;
         }
@@ -101,7 +132,7 @@ mod tests {
 
     struct Count(usize);
     impl RowSink for Count {
-        fn row(&mut self, _: &[f64]) -> Result<(), String> {
+        fn row(&mut self, _: &[f64]) -> Result<(), RowError> {
             self.0 += 1;
             Ok(())
         }

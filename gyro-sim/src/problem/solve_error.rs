@@ -81,7 +81,7 @@ pub enum SolveError {
     },
     /// Writing a row as it was produced failed.
     #[error("integration stopped: writing a row failed: {0}")]
-    Rows(String),
+    Rows(#[source] crate::problem::RowError),
     /// An output became NaN or infinite.
     #[error("integration failed: {name} is not finite ({value}) at t = {time}")]
     NonFiniteOutput {

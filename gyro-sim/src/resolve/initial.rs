@@ -48,10 +48,10 @@ impl TopStart {
     pub fn from_scene(scene: &Scene, axle: &Axle) -> Result<TopStart, SceneError> {
         let get = |given: &Option<(Value, std::ops::Range<usize>)>, key: &str, kind: Kind| {
             given.as_ref().map_or(Ok(0.0), |(v, span)| {
-                in_radians(v, kind).map_err(|unit| {
+                in_radians(v, kind).map_err(|wrong| {
                     scene.error_at(
                         span.clone(),
-                        format!("`{key}` in [axle] is {}, not in {unit}", kind.what()),
+                        format!("`{key}` in [axle] is {}, {wrong}", kind.what()),
                         &format!("write a number with {}", kind.units()),
                     )
                 })
@@ -91,16 +91,23 @@ impl Kind {
     }
 }
 
-/// `v` in radians (an angle) or rad/s (a rate); the unit written, upper case, when it does not
-/// fit `kind`.
-pub fn in_radians(v: &Value, kind: Kind) -> Result<f64, String> {
+/// A unit that does not fit what an `[axle]` value measures: the unit written, upper case.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("not in {unit}")]
+pub struct WrongUnit {
+    /// The unit written, upper case, spaces removed.
+    pub unit: String,
+}
+
+/// `v` in radians (an angle) or rad/s (a rate); the unit written when it does not fit `kind`.
+pub fn in_radians(v: &Value, kind: Kind) -> Result<f64, WrongUnit> {
     let deg = std::f64::consts::PI / 180.0;
     let unit = v.unit.as_deref().map(|u| u.to_ascii_uppercase().replace(' ', "").replace("SEC", "S"));
     match (kind, unit.as_deref()) {
         (Kind::Angle, None | Some("RAD")) | (Kind::Rate, None | Some("RAD/S")) => Ok(v.number),
         (Kind::Angle, Some("DEG")) | (Kind::Rate, Some("DEG/S")) => Ok(v.number * deg),
         (Kind::Rate, Some("RPM")) => Ok(v.number * std::f64::consts::TAU / 60.0),
-        (_, Some(u)) => Err(u.to_string()),
+        (_, Some(u)) => Err(WrongUnit { unit: u.to_string() }),
     }
 }
 
@@ -176,7 +183,7 @@ mod tests {
     #[test]
     fn units() {
         let deg = std::f64::consts::PI / 180.0;
-        let near = |got: Result<f64, String>, want: f64| (got.unwrap() - want).abs() <= 4e-16 * want;
+        let near = |got: Result<f64, WrongUnit>, want: f64| (got.unwrap() - want).abs() <= 4e-16 * want;
         assert_eq!(in_radians(&value(60.0, "deg"), Kind::Angle), Ok(60.0 * deg));
         assert_eq!(in_radians(&value(1.5, "rad"), Kind::Angle), Ok(1.5));
         assert_eq!(in_radians(&value(1.5, ""), Kind::Angle), Ok(1.5));
@@ -184,8 +191,11 @@ mod tests {
         assert_eq!(in_radians(&value(10.0, "rad/sec"), Kind::Rate), Ok(10.0));
         assert_eq!(in_radians(&value(90.0, "deg/s"), Kind::Rate), Ok(90.0 * deg));
         assert!(near(in_radians(&value(60.0, "rpm"), Kind::Rate), std::f64::consts::TAU));
-        assert_eq!(in_radians(&value(10.0, "rad/s"), Kind::Angle), Err("RAD/S".to_string()));
-        assert_eq!(in_radians(&value(10.0, "deg"), Kind::Rate), Err("DEG".to_string()));
+        assert_eq!(
+            in_radians(&value(10.0, "rad/s"), Kind::Angle),
+            Err(WrongUnit { unit: "RAD/S".to_string() })
+        );
+        assert_eq!(in_radians(&value(10.0, "deg"), Kind::Rate), Err(WrongUnit { unit: "DEG".to_string() }));
     }
 
     #[test]

@@ -87,7 +87,7 @@ fn run(app: &App, values: &[(usize, f64)]) -> Reply {
     let _pass = app.runs.enter();
     match run_data(&app.scene.with_controls(values), &app.registry) {
         Ok(data) => Reply::json(200, &data),
-        Err(message) => Reply::error(422, &message),
+        Err(e) => Reply::error(422, &e.to_string()),
     }
 }
 
@@ -102,15 +102,29 @@ fn saved_scene(app: &App, values: &[(usize, f64)]) -> Reply {
     }
 }
 
+/// Why a scene's run gave no data for the page.
+#[derive(Debug, thiserror::Error)]
+pub enum RunDataError {
+    /// The scene's `[view]` tables are wrong.
+    #[error(transparent)]
+    View(#[from] crate::scene::ViewError),
+    /// The scene does not fit its model.
+    #[error(transparent)]
+    Scene(#[from] crate::scene::SceneError),
+    /// The integration stopped.
+    #[error(transparent)]
+    Solve(#[from] crate::problem::SolveError),
+}
+
 /// Runs `scene` (resolve, then solve: the `gyro-sim run` pipeline without files) and gives the
 /// page's data: the view's columns and the plotted ones, their units, the controls' values.
-pub fn run_data(scene: &Scene, registry: &Registry) -> Result<serde_json::Value, String> {
+pub fn run_data(scene: &Scene, registry: &Registry) -> Result<serde_json::Value, RunDataError> {
     let view = scene.view.clone().unwrap_or_default();
-    view.check().map_err(|e| e.to_string())?;
-    let problem = crate::resolve::resolve(scene, registry).map_err(|e| e.to_string())?;
-    let trajectory = crate::solve::solve(&problem, None).map_err(|e| e.to_string())?;
+    view.check()?;
+    let problem = crate::resolve::resolve(scene, registry)?;
+    let trajectory = crate::solve::solve(&problem, None)?;
     let plot = plot_columns(&trajectory);
-    let mut data = crate::output::view_data(&trajectory, &view, &plot).map_err(|e| e.to_string())?;
+    let mut data = crate::output::view_data(&trajectory, &view, &plot)?;
     let units: serde_json::Map<String, serde_json::Value> =
         trajectory.columns.iter().map(|c| (c.name.clone(), c.unit.clone().into())).collect();
     let values: serde_json::Map<String, serde_json::Value> =

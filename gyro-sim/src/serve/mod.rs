@@ -10,14 +10,39 @@ pub mod request;
 
 use std::io::Read;
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 use std::time::Duration;
 
-pub use api::{answer, run_data, App, Reply};
+pub use api::{answer, run_data, App, Reply, RunDataError};
+use thiserror::Error;
 
 use crate::models::Registry;
 use crate::scene::Scene;
+
+/// Why the server could not start.
+#[derive(Debug, Error)]
+pub enum ServeError {
+    /// The scene's own run, which the page is built around, failed.
+    #[error("{}: {source}", scene.display())]
+    Run {
+        /// The scene file.
+        scene: PathBuf,
+        /// Why its run failed.
+        #[source]
+        source: RunDataError,
+    },
+    /// The port could not be listened on.
+    #[error("cannot listen on 127.0.0.1:{port}: {source}")]
+    Listen {
+        /// The port asked for.
+        port: u16,
+        /// What the server library said.
+        #[source]
+        source: Box<dyn std::error::Error + Send + Sync>,
+    },
+}
 
 /// Requests answered at once, each on its own thread; more are answered 503 at once.
 const MAX_ACTIVE: usize = 64;
@@ -26,8 +51,9 @@ const MAX_ACTIVE: usize = 64;
 const POLL: Duration = Duration::from_millis(200);
 
 /// The app for `scene`: its page, built around the scene's own run (an error when that run fails).
-pub fn app(scene: Scene, registry: Registry) -> Result<App, String> {
-    let data = run_data(&scene, &registry).map_err(|e| format!("{}: {e}", scene.path.display()))?;
+pub fn app(scene: Scene, registry: Registry) -> Result<App, ServeError> {
+    let data = run_data(&scene, &registry)
+        .map_err(|source| ServeError::Run { scene: scene.path.clone(), source })?;
     let page = page::page(&scene, &data);
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     Ok(App { scene, registry, page, runs: gate::Gate::new(cores) })
@@ -35,9 +61,9 @@ pub fn app(scene: Scene, registry: Registry) -> Result<App, String> {
 
 /// Serves `app` on 127.0.0.1:`port` (0: a free port) until a stop signal; `started` is told the
 /// address once it listens.
-pub fn serve(app: App, port: u16, started: impl FnOnce(&str)) -> Result<(), String> {
-    let server = tiny_http::Server::http(("127.0.0.1", port))
-        .map_err(|e| format!("cannot listen on 127.0.0.1:{port}: {e}"))?;
+pub fn serve(app: App, port: u16, started: impl FnOnce(&str)) -> Result<(), ServeError> {
+    let server =
+        tiny_http::Server::http(("127.0.0.1", port)).map_err(|source| ServeError::Listen { port, source })?;
     let address = server.server_addr().to_ip().map_or("127.0.0.1".into(), |a| a.to_string());
     started(&address);
     let app = Arc::new(app);

@@ -81,20 +81,34 @@ pub(super) fn build(libs: &Libraries, package: &Path, main: &Path, out: &Path) -
     }
     let name = out.file_name().and_then(|n| n.to_str()).unwrap_or("model").replace('-', "_");
     let built = crate::output::write_atomically(out, |partial| {
-        let mut messages = String::new();
+        let mut failed = RustcError::NotRun;
         for kane_model in &libs.kane_model {
             match rustc(libs, kane_model, package, main, &name, partial) {
                 Some(o) if o.status.success() => return Ok(()),
-                Some(o) => messages = String::from_utf8_lossy(&o.stderr).into_owned(),
-                None => messages = "rustc could not be run".into(),
+                Some(o) => failed = RustcError::Failed(String::from_utf8_lossy(&o.stderr).into_owned()),
+                None => failed = RustcError::NotRun,
             }
         }
-        Err(messages)
+        Err(failed)
     });
-    if let Err(messages) = &built {
-        eprint!("{messages}");
+    if let Err(e) = &built {
+        eprint!("{e}");
     }
     built.is_ok()
+}
+
+/// Why rustc did not build a binary.
+#[derive(Debug, thiserror::Error)]
+enum RustcError {
+    /// rustc could not be started.
+    #[error("rustc could not be run")]
+    NotRun,
+    /// rustc failed: its messages.
+    #[error("{0}")]
+    Failed(String),
+    /// The binary could not be put in place.
+    #[error("{0}\n")]
+    Write(#[from] crate::output::WriteError),
 }
 
 /// rustc on `main` with `kane_model` as the kane-model crate, the crate `name`, writing `out`.

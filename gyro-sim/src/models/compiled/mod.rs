@@ -23,16 +23,20 @@ pub enum CompileError {
     #[error("the compiled path needs a Rust toolchain, and `cargo` was not found: install Rust (https://rustup.rs), or run with --engine instant")]
     NoToolchain,
     /// The simulator's sources are not where this binary was built from.
-    #[error("the compiled path builds against the gyro-sim sources at {0}, which are not there: run from the project's checkout, or run with --engine instant")]
-    NoSources(String),
+    #[error("the compiled path builds against the gyro-sim sources at {}, which are not there: run from the project's checkout, or run with --engine instant", .0.display())]
+    NoSources(PathBuf),
     /// Writing the crate failed.
-    #[error("cannot write the compiled model's crate in {path}: {reason}")]
+    #[error("cannot write the compiled model's crate in {}: {source}", path.display())]
     Io {
         /// The folder it was written in.
-        path: String,
-        /// Why it failed.
-        reason: String,
+        path: PathBuf,
+        /// What the system said.
+        #[source]
+        source: std::io::Error,
     },
+    /// The built binary could not be put in the cache.
+    #[error("cannot put the compiled model in place: {0}")]
+    Place(#[from] crate::output::WriteError),
     /// cargo failed.
     #[error("building the compiled model failed (cargo exit {0}); its output is above; --engine instant runs without compiling")]
     Build(String),
@@ -156,7 +160,7 @@ pub fn ensure_binary(file: &ModelFile, taylor: bool) -> Result<(PathBuf, bool), 
     }
     let sources = workspace();
     if !sources.join("gyro-sim").join("Cargo.toml").is_file() {
-        return Err(CompileError::NoSources(sources.display().to_string()));
+        return Err(CompileError::NoSources(sources));
     }
     // One package for every model file (a binary each), so its dependencies build once.
     let dir = cache_dir().join("models").join(format!("gyro-models-{}", tool_id()));
@@ -187,12 +191,14 @@ pub fn ensure_binary(file: &ModelFile, taylor: bool) -> Result<(PathBuf, bool), 
 
 /// Copies the binary `built` to `binary`, whole or not at all.
 fn place(built: &Path, binary: &Path) -> Result<(), CompileError> {
-    let io = |reason: String| CompileError::Io { path: binary.display().to_string(), reason };
     if let Some(folder) = binary.parent() {
-        std::fs::create_dir_all(folder).map_err(|e| io(e.to_string()))?;
+        std::fs::create_dir_all(folder)
+            .map_err(|source| CompileError::Io { path: folder.to_path_buf(), source })?;
     }
-    let copy = |partial: &Path| std::fs::copy(built, partial).map(|_| ()).map_err(|e| e.to_string());
-    crate::output::write_atomically(binary, copy).map_err(io)
+    let copy = |partial: &Path| {
+        std::fs::copy(built, partial).map(|_| ()).map_err(|e| crate::output::WriteError::io(partial, e))
+    };
+    Ok(crate::output::write_atomically(binary, copy)?)
 }
 
 /// Writes one model into the models package at `dir`: the package's manifest against the
@@ -206,7 +212,7 @@ fn write_model(
     sources: &Path,
     taylor: bool,
 ) -> Result<(), CompileError> {
-    let io = |e: std::io::Error| CompileError::Io { path: dir.display().to_string(), reason: e.to_string() };
+    let io = |source: std::io::Error| CompileError::Io { path: dir.to_path_buf(), source };
     std::fs::create_dir_all(dir.join("src").join("bin")).map_err(io)?;
     // The file keeps its name (the model is named after it), in a folder of this binary's.
     std::fs::create_dir_all(dir.join("models").join(bin_name)).map_err(io)?;

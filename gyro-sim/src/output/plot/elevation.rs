@@ -5,12 +5,12 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::super::{write_atomically, Table};
+use super::super::{Table, WriteError};
 use super::panel::{self, Panel};
-use super::{pretty_unit, register_font};
+use super::{draw_atomically, pretty_unit, register_font};
 
 /// Writes the elevation plot when the table has the elevation columns; returns whether it did.
-pub fn write_elevation(table: &Table, path: &Path) -> Result<bool, String> {
+pub fn write_elevation(table: &Table, path: &Path) -> Result<bool, WriteError> {
     let find = |label: &str| table.columns.iter().position(|c| c.label.eq_ignore_ascii_case(label));
     let series: Vec<(String, usize)> = [("axle", "ELEVATION"), ("L", "L_ELEVATION")]
         .iter()
@@ -27,12 +27,12 @@ pub fn write_elevation(table: &Table, path: &Path) -> Result<bool, String> {
         x_title: "t (s)".to_string(),
         y_title: format!("elevation above the horizontal ({unit})"),
     };
-    write_atomically(path, |tmp| {
+    draw_atomically(path, |tmp| {
         let root = BitMapBackend::new(tmp, (800, 450)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let root = root.titled(&table.title, ("sans-serif", 22)).map_err(|e| e.to_string())?;
+        root.fill(&WHITE)?;
+        let root = root.titled(&table.title, ("sans-serif", 22))?;
         panel::draw(&root, &panel)?;
-        root.present().map_err(|e| e.to_string())
+        Ok(root.present()?)
     })?;
     Ok(true)
 }

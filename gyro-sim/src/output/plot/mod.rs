@@ -10,16 +10,38 @@ mod sweep_metric;
 mod trace;
 mod work_precision_figure;
 
+use std::path::Path;
 use std::sync::Once;
 
-use plotters::prelude::RGBColor;
+use plotters::backend::DrawingBackend;
+use plotters::drawing::DrawingAreaErrorKind;
+use plotters::prelude::{BitMapBackend, RGBColor};
 use plotters::style::FontStyle;
+use thiserror::Error;
+
+use super::{write_atomically, WriteError};
 
 pub use elevation::write_elevation;
 pub use series::write_plot;
 pub use sweep_metric::{write_sweep_metric, MemberPoint, MetricAxes};
 pub use trace::write_trace;
 pub use work_precision_figure::{write_work_precision, WorkPrecisionPoint};
+
+/// What the drawing library reports when a figure cannot be drawn or encoded.
+pub type DrawFailure = DrawingAreaErrorKind<<BitMapBackend<'static> as DrawingBackend>::ErrorType>;
+
+/// Why a figure could not be drawn.
+#[derive(Debug, Error)]
+#[error("{0}")]
+pub struct PlotError(#[from] pub DrawFailure);
+
+/// Draws the figure at `path` through a temporary file (`draw` is given its path) and a rename;
+/// a drawing error names `path`.
+fn draw_atomically(path: &Path, draw: impl FnOnce(&Path) -> Result<(), PlotError>) -> Result<(), WriteError> {
+    write_atomically(path, |tmp| {
+        draw(tmp).map_err(|source| WriteError::Plot { path: path.to_path_buf(), source })
+    })
+}
 
 static FONT: Once = Once::new();
 

@@ -5,7 +5,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::drawable::{clip, clipped, line_width, padded_range, tick_labels, DRAWABLE};
-use super::COLORS;
+use super::{PlotError, COLORS};
 
 /// What one panel shows.
 pub(super) struct Panel<'a> {
@@ -25,7 +25,7 @@ fn y_range(panel: &Panel<'_>) -> (f64, f64) {
 }
 
 /// Draws `panel` on `area`: the chart on the left, the legend in a strip on the right.
-pub(super) fn draw(area: &DrawingArea<BitMapBackend<'_>, Shift>, panel: &Panel<'_>) -> Result<(), String> {
+pub(super) fn draw(area: &DrawingArea<BitMapBackend<'_>, Shift>, panel: &Panel<'_>) -> Result<(), PlotError> {
     let legend_width = 30 + 9 * panel.series.iter().map(|s| s.0.chars().count()).max().unwrap_or(0) as u32;
     let (w, _) = area.dim_in_pixel();
     let (chart_area, legend_area) = area.split_horizontally(w.saturating_sub(legend_width));
@@ -41,8 +41,7 @@ pub(super) fn draw(area: &DrawingArea<BitMapBackend<'_>, Shift>, panel: &Panel<'
         .margin(12)
         .x_label_area_size(45)
         .y_label_area_size(80)
-        .build_cartesian_2d(x0..x1, lo..hi)
-        .map_err(|e| e.to_string())?;
+        .build_cartesian_2d(x0..x1, lo..hi)?;
     chart
         .configure_mesh()
         .x_desc(panel.x_title.as_str())
@@ -50,27 +49,20 @@ pub(super) fn draw(area: &DrawingArea<BitMapBackend<'_>, Shift>, panel: &Panel<'
         .x_label_formatter(&tick_labels(x0, x1))
         .y_label_formatter(&tick_labels(lo, hi))
         .axis_desc_style(("sans-serif", 16))
-        .draw()
-        .map_err(|e| e.to_string())?;
+        .draw()?;
     let width = line_width(panel.rows.len(), w);
     for (k, (_, c)) in panel.series.iter().enumerate() {
         let color = COLORS[k % COLORS.len()];
-        chart
-            .draw_series(LineSeries::new(
-                panel.rows.iter().map(|r| (r[0], clip(r[*c]))),
-                color.stroke_width(width),
-            ))
-            .map_err(|e| e.to_string())?;
+        chart.draw_series(LineSeries::new(
+            panel.rows.iter().map(|r| (r[0], clip(r[*c]))),
+            color.stroke_width(width),
+        ))?;
     }
     for (k, (label, _)) in panel.series.iter().enumerate() {
         let color = COLORS[k % COLORS.len()];
         let y = 30 + 22 * k as i32;
-        legend_area
-            .draw(&PathElement::new(vec![(4, y), (24, y)], color.stroke_width(3)))
-            .map_err(|e| e.to_string())?;
-        legend_area
-            .draw(&Text::new(label.clone(), (28, y - 8), ("sans-serif", 15)))
-            .map_err(|e| e.to_string())?;
+        legend_area.draw(&PathElement::new(vec![(4, y), (24, y)], color.stroke_width(3)))?;
+        legend_area.draw(&Text::new(label.clone(), (28, y - 8), ("sans-serif", 15)))?;
     }
     Ok(())
 }

@@ -7,9 +7,9 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::super::{write_atomically, Table};
+use super::super::{Table, WriteError};
 use super::panel::{self, Panel};
-use super::{pretty_unit, register_font, COLORS};
+use super::{draw_atomically, pretty_unit, register_font, COLORS};
 
 /// An angle whose range exceeds this many degrees gets a panel of its own.
 const SPIN_RANGE_DEG: f64 = 1800.0;
@@ -17,21 +17,21 @@ const SPIN_RANGE_DEG: f64 = 1800.0;
 const PER_ROW: usize = 3;
 
 /// Writes the time-series plot of `table` to `path` (atomically).
-pub fn write_plot(table: &Table, path: &Path) -> Result<(), String> {
+pub fn write_plot(table: &Table, path: &Path) -> Result<(), WriteError> {
     register_font();
     let panels = panels(table);
-    write_atomically(path, |tmp| {
+    draw_atomically(path, |tmp| {
         let n = panels.len().max(1);
         let (across, down) = (n.min(PER_ROW), n.div_ceil(PER_ROW));
         let size = (600 * across as u32, 450 * down as u32 + 30);
         let root = BitMapBackend::new(tmp, size).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let root = root.titled(&table.title, ("sans-serif", 22)).map_err(|e| e.to_string())?;
+        root.fill(&WHITE)?;
+        let root = root.titled(&table.title, ("sans-serif", 22))?;
         let areas = root.split_evenly((down, across));
         for (area, p) in areas.iter().zip(&panels) {
             panel::draw(area, p)?;
         }
-        root.present().map_err(|e| e.to_string())
+        Ok(root.present()?)
     })
 }
 

@@ -9,9 +9,9 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::super::write_atomically;
+use super::super::WriteError;
 use super::drawable::{padded_range, tick_labels};
-use super::register_font;
+use super::{draw_atomically, register_font, PlotError};
 
 /// One member: its varied values on the axes (`y` unused with one axis) and the metric (None
 /// when it failed or has no value).
@@ -39,18 +39,18 @@ pub fn write_sweep_metric(
     axes: &MetricAxes<'_>,
     title: &str,
     path: &Path,
-) -> Result<(), String> {
+) -> Result<(), WriteError> {
     register_font();
-    write_atomically(path, |tmp| {
+    draw_atomically(path, |tmp| {
         let root = BitMapBackend::new(tmp, (900, 640)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
-        let root = root.titled(title, ("sans-serif", 20)).map_err(|e| e.to_string())?;
+        root.fill(&WHITE)?;
+        let root = root.titled(title, ("sans-serif", 20))?;
         if axes.varied.len() == 1 {
             draw_line(&root, points, axes)?;
         } else {
             draw_map(&root, points, axes)?;
         }
-        root.present().map_err(|e| e.to_string())
+        Ok(root.present()?)
     })
 }
 
@@ -60,13 +60,12 @@ fn framed<'a, 'b>(
     x: (f64, f64),
     y: (f64, f64),
     titles: (&str, &str),
-) -> Result<ChartContext<'a, BitMapBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>, String> {
+) -> Result<ChartContext<'a, BitMapBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>, PlotError> {
     let mut chart = ChartBuilder::on(area)
         .margin(16)
         .x_label_area_size(45)
         .y_label_area_size(80)
-        .build_cartesian_2d(x.0..x.1, y.0..y.1)
-        .map_err(|e| e.to_string())?;
+        .build_cartesian_2d(x.0..x.1, y.0..y.1)?;
     chart
         .configure_mesh()
         .x_desc(titles.0)
@@ -74,8 +73,7 @@ fn framed<'a, 'b>(
         .x_label_formatter(&tick_labels(x.0, x.1))
         .y_label_formatter(&tick_labels(y.0, y.1))
         .axis_desc_style(("sans-serif", 16))
-        .draw()
-        .map_err(|e| e.to_string())?;
+        .draw()?;
     Ok(chart)
 }
 
@@ -84,7 +82,7 @@ fn draw_line(
     area: &DrawingArea<BitMapBackend<'_>, Shift>,
     points: &[MemberPoint],
     axes: &MetricAxes<'_>,
-) -> Result<(), String> {
+) -> Result<(), PlotError> {
     let mut ok: Vec<(f64, f64)> = points.iter().filter_map(|p| p.metric.map(|m| (p.x, m))).collect();
     ok.sort_by(|a, b| a.0.total_cmp(&b.0));
     let (x0, x1) = padded_range(points.iter().map(|p| p.x));
@@ -93,12 +91,12 @@ fn draw_line(
     let blue = RGBColor(31, 119, 180);
     // A line only through distinct x (a projection of a two-way sweep is markers alone).
     if ok.windows(2).all(|w| w[0].0 < w[1].0) {
-        chart.draw_series(LineSeries::new(ok.clone(), blue.stroke_width(2))).map_err(|e| e.to_string())?;
+        chart.draw_series(LineSeries::new(ok.clone(), blue.stroke_width(2)))?;
     }
-    chart.draw_series(ok.iter().map(|&p| Circle::new(p, 3, blue.filled()))).map_err(|e| e.to_string())?;
+    chart.draw_series(ok.iter().map(|&p| Circle::new(p, 3, blue.filled())))?;
     let failed =
         points.iter().filter(|p| p.metric.is_none()).map(|p| Cross::new((p.x, y0), 6, RED.stroke_width(2)));
-    chart.draw_series(failed).map_err(|e| e.to_string())?;
+    chart.draw_series(failed)?;
     Ok(())
 }
 
@@ -107,7 +105,7 @@ fn draw_map(
     area: &DrawingArea<BitMapBackend<'_>, Shift>,
     points: &[MemberPoint],
     axes: &MetricAxes<'_>,
-) -> Result<(), String> {
+) -> Result<(), PlotError> {
     let (w, _) = area.dim_in_pixel();
     let (chart_area, bar_area) = area.split_horizontally(w.saturating_sub(130));
     let (x0, x1) = padded_range(points.iter().map(|p| p.x));
@@ -117,10 +115,10 @@ fn draw_map(
     let shade = |m: f64| viridis(if hi > lo { (m - lo) / (hi - lo) } else { 0.5 });
     let mut chart = framed(&chart_area, (x0, x1), (y0, y1), (&axes.varied[0], &axes.varied[1]))?;
     let discs = points.iter().filter_map(|p| p.metric.map(|m| Circle::new((p.x, p.y), 5, shade(m).filled())));
-    chart.draw_series(discs).map_err(|e| e.to_string())?;
+    chart.draw_series(discs)?;
     let failed =
         points.iter().filter(|p| p.metric.is_none()).map(|p| Cross::new((p.x, p.y), 6, RED.stroke_width(2)));
-    chart.draw_series(failed).map_err(|e| e.to_string())?;
+    chart.draw_series(failed)?;
     draw_colour_bar(&bar_area, axes.metric, lo, hi, shade)
 }
 
@@ -142,10 +140,10 @@ fn draw_colour_bar(
     lo: f64,
     hi: f64,
     shade: impl Fn(f64) -> RGBColor,
-) -> Result<(), String> {
+) -> Result<(), PlotError> {
     let (top, bottom, steps) = (60, 520, 92);
     let font = ("sans-serif", 14);
-    area.draw(&Text::new(metric.to_string(), (4, top - 30), font)).map_err(|e| e.to_string())?;
+    area.draw(&Text::new(metric.to_string(), (4, top - 30), font))?;
     if !(lo.is_finite() && hi.is_finite()) {
         return Ok(());
     }
@@ -153,12 +151,12 @@ fn draw_colour_bar(
         let frac = k as f64 / (steps - 1) as f64;
         let y = bottom - ((bottom - top) as f64 * frac) as i32;
         let colour = shade(lo + frac * (hi - lo));
-        area.draw(&Rectangle::new([(10, y - 5), (34, y)], colour.filled())).map_err(|e| e.to_string())?;
+        area.draw(&Rectangle::new([(10, y - 5), (34, y)], colour.filled()))?;
     }
     for (v, y) in [(hi, top), (0.5 * (lo + hi), (top + bottom) / 2), (lo, bottom)] {
         let label =
             if v != 0.0 && !(1e-3..1e5).contains(&v.abs()) { format!("{v:.3e}") } else { format!("{v:.4}") };
-        area.draw(&Text::new(label, (40, y - 12), font)).map_err(|e| e.to_string())?;
+        area.draw(&Text::new(label, (40, y - 12), font))?;
     }
     Ok(())
 }

@@ -6,8 +6,8 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::super::write_atomically;
-use super::{register_font, COLORS};
+use super::super::WriteError;
+use super::{draw_atomically, register_font, COLORS};
 
 /// One configuration measured (by `gyro-sim bench`): a method at one tolerance or step.
 #[derive(Clone, Debug, PartialEq)]
@@ -30,7 +30,11 @@ pub struct WorkPrecisionPoint {
 }
 
 /// Writes the figure of `points` to `path` (atomically), titled `title`.
-pub fn write_work_precision(points: &[WorkPrecisionPoint], title: &str, path: &Path) -> Result<(), String> {
+pub fn write_work_precision(
+    points: &[WorkPrecisionPoint],
+    title: &str,
+    path: &Path,
+) -> Result<(), WriteError> {
     register_font();
     let finite: Vec<&WorkPrecisionPoint> =
         points.iter().filter(|p| p.error > 0.0 && p.median_ms > 0.0).collect();
@@ -50,43 +54,33 @@ pub fn write_work_precision(points: &[WorkPrecisionPoint], title: &str, path: &P
             methods.push(p.method);
         }
     }
-    write_atomically(path, |tmp| {
+    draw_atomically(path, |tmp| {
         let root = BitMapBackend::new(tmp, (900, 600)).into_drawing_area();
-        root.fill(&WHITE).map_err(|e| e.to_string())?;
+        root.fill(&WHITE)?;
         let (chart_area, legend) = root.split_horizontally(780);
         let mut chart = ChartBuilder::on(&chart_area)
             .caption(title, ("sans-serif", 20))
             .margin(12)
             .x_label_area_size(45)
             .y_label_area_size(80)
-            .build_cartesian_2d((e0..e1).log_scale(), (t0..t1).log_scale())
-            .map_err(|e| e.to_string())?;
+            .build_cartesian_2d((e0..e1).log_scale(), (t0..t1).log_scale())?;
         chart
             .configure_mesh()
             .x_desc("error (largest over states and output times, relative to max(1, |ref|))")
             .y_desc("median wall time (ms)")
             .x_label_formatter(&|x| format!("{x:.0e}"))
             .axis_desc_style(("sans-serif", 15))
-            .draw()
-            .map_err(|e| e.to_string())?;
+            .draw()?;
         for (k, m) in methods.iter().enumerate() {
             let colour = COLORS[k % COLORS.len()];
             let series: Vec<(f64, f64)> =
                 finite.iter().filter(|p| p.method == *m).map(|p| (p.error, p.median_ms)).collect();
-            chart
-                .draw_series(LineSeries::new(series.clone(), colour.stroke_width(2)))
-                .map_err(|e| e.to_string())?;
-            chart
-                .draw_series(series.iter().map(|&(x, y)| Circle::new((x, y), 4, colour.filled())))
-                .map_err(|e| e.to_string())?;
+            chart.draw_series(LineSeries::new(series.clone(), colour.stroke_width(2)))?;
+            chart.draw_series(series.iter().map(|&(x, y)| Circle::new((x, y), 4, colour.filled())))?;
             let y = 40 + 24 * k as i32;
-            legend
-                .draw(&PathElement::new(vec![(4, y), (24, y)], colour.stroke_width(3)))
-                .map_err(|e| e.to_string())?;
-            legend
-                .draw(&Text::new(m.to_string(), (28, y - 8), ("sans-serif", 15)))
-                .map_err(|e| e.to_string())?;
+            legend.draw(&PathElement::new(vec![(4, y), (24, y)], colour.stroke_width(3)))?;
+            legend.draw(&Text::new(m.to_string(), (28, y - 8), ("sans-serif", 15)))?;
         }
-        root.present().map_err(|e| e.to_string())
+        Ok(root.present()?)
     })
 }

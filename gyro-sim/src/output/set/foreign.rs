@@ -4,7 +4,8 @@
 use std::fs::{self, FileType};
 use std::path::Path;
 
-use super::names::{fail, SET_FILES};
+use super::names::SET_FILES;
+use super::SetError;
 
 /// What an entry of an output folder is to a commit.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -33,13 +34,13 @@ fn kind(name: &str, file_type: FileType) -> Kind {
 }
 
 /// The names and kinds of `dir`'s entries.
-fn entries(dir: &Path) -> Result<Vec<(String, Kind)>, String> {
-    let read = fs::read_dir(dir).map_err(|e| fail(dir, e))?;
+fn entries(dir: &Path) -> Result<Vec<(String, Kind)>, SetError> {
+    let read = fs::read_dir(dir).map_err(|e| SetError::io(dir, e))?;
     let mut out = Vec::new();
     for entry in read {
-        let entry = entry.map_err(|e| fail(dir, e))?;
+        let entry = entry.map_err(|e| SetError::io(dir, e))?;
         let name = entry.file_name().to_string_lossy().into_owned();
-        let file_type = entry.file_type().map_err(|e| fail(&entry.path(), e))?;
+        let file_type = entry.file_type().map_err(|e| SetError::io(entry.path(), e))?;
         let kind = kind(&name, file_type);
         out.push((name, kind));
     }
@@ -48,22 +49,18 @@ fn entries(dir: &Path) -> Result<Vec<(String, Kind)>, String> {
 
 /// An error naming the folders in `out` that are not a run's (a set replaces the folder whole and
 /// carries files only).
-pub(super) fn refuse_folders(out: &Path) -> Result<(), String> {
+pub(super) fn refuse_folders(out: &Path) -> Result<(), SetError> {
     let folders: Vec<String> =
         entries(out)?.into_iter().filter(|(_, k)| *k == Kind::Folder).map(|(name, _)| name).collect();
     if folders.is_empty() {
         return Ok(());
     }
-    Err(format!(
-        "{}: holds folders that are not part of a run's results ({}); a run replaces its output folder whole and keeps only the files in it: move them elsewhere or give another output folder",
-        out.display(),
-        folders.join(", ")
-    ))
+    Err(SetError::HoldsFolders { out: out.to_path_buf(), folders })
 }
 
 /// Hard-links the files of `out` that are not set files into the staging folder `stage`, so that
 /// they are in the folder before and after the exchange; refuses folders.
-pub(super) fn link_into(out: &Path, stage: &Path) -> Result<(), String> {
+pub(super) fn link_into(out: &Path, stage: &Path) -> Result<(), SetError> {
     refuse_folders(out)?;
     for (name, kind) in entries(out)? {
         if kind != Kind::File {
@@ -73,13 +70,7 @@ pub(super) fn link_into(out: &Path, stage: &Path) -> Result<(), String> {
         match fs::hard_link(&from, &to) {
             Ok(()) => {}
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {} // removed meanwhile
-            Err(e) => {
-                return Err(format!(
-                    "{}: not a run's file, and it could not be kept across the new set (a hard link as {} failed: {e}); move it out of the output folder or give another one",
-                    from.display(),
-                    to.display()
-                ))
-            }
+            Err(source) => return Err(SetError::Keep { from, to, source }),
         }
     }
     Ok(())

@@ -1,7 +1,5 @@
-//! The names in a set's folder and its work folder (the set's files, the commit lock), and the
-//! text of an error at a path, shared by the set's parts.
-
-use std::path::Path;
+//! The names in a set's folder and its work folder (the set's files, the commit lock), shared by
+//! the set's parts.
 
 /// The files a run may put in its folder.
 pub const SET_FILES: &[&str] = &[
@@ -19,8 +17,3 @@ pub const PARTIAL_CSV: &str = "trajectory.partial.csv";
 
 /// The file in the work folder whose lock serialises commits.
 pub(super) const COMMIT_LOCK: &str = "commit.lock";
-
-/// `path: what failed`.
-pub(super) fn fail(path: &Path, e: std::io::Error) -> String {
-    format!("{}: {e}", path.display())
-}

@@ -10,7 +10,8 @@ use std::io::{ErrorKind, Read, Write};
 use std::path::{Path, PathBuf};
 
 use super::foreign;
-use super::names::{fail, COMMIT_LOCK};
+use super::names::COMMIT_LOCK;
+use super::SetError;
 use crate::output::temporaries::random;
 
 /// A staging folder and the lock that says its run is alive.
@@ -27,29 +28,29 @@ pub(super) struct Owner {
 
 impl Owner {
     /// A new staging folder in `work` for the output folder `out`, its lock held.
-    pub(super) fn create(work: &Path, out: &Path) -> Result<Owner, String> {
+    pub(super) fn create(work: &Path, out: &Path) -> Result<Owner, SetError> {
         for _ in 0..16 {
             let id = format!("set-{}-{:016x}", std::process::id(), random());
             let lock_path = work.join(format!("{id}.lock"));
             let lock = match OpenOptions::new().read(true).write(true).create_new(true).open(&lock_path) {
                 Ok(lock) => lock,
                 Err(e) if e.kind() == ErrorKind::AlreadyExists => continue,
-                Err(e) => return Err(fail(&lock_path, e)),
+                Err(e) => return Err(SetError::io(&lock_path, e)),
             };
-            lock.lock().map_err(|e| fail(&lock_path, e))?;
+            lock.lock().map_err(|e| SetError::io(&lock_path, e))?;
             if !same_file(&lock, &lock_path) {
                 continue; // taken for abandoned and removed before it was locked
             }
             let dir = work.join(&id);
             let mut owner =
                 Owner { dir, lock_path, lock, staging: None, out: out.to_path_buf(), abandoned: false };
-            fs::create_dir(&owner.dir).map_err(|e| fail(&owner.dir, e))?;
-            let ino = inode(&owner.dir).ok_or_else(|| format!("{}: made, then gone", owner.dir.display()))?;
-            writeln!(&owner.lock, "{ino}").map_err(|e| fail(&owner.lock_path, e))?;
+            fs::create_dir(&owner.dir).map_err(|e| SetError::io(&owner.dir, e))?;
+            let ino = inode(&owner.dir).ok_or_else(|| SetError::Vanished { dir: owner.dir.clone() })?;
+            writeln!(&owner.lock, "{ino}").map_err(|e| SetError::io(&owner.lock_path, e))?;
             owner.staging = Some(ino);
             return Ok(owner);
         }
-        Err(format!("{}: every staging name tried was taken; remove the folder's leftovers", work.display()))
+        Err(SetError::NamesTaken { work: work.to_path_buf() })
     }
 
     /// The staging folder.

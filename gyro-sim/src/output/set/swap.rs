@@ -3,18 +3,18 @@
 use std::fs;
 use std::path::Path;
 
+use super::SetError;
+
 /// Puts the folder `stage` in the place of `out`: by one exchange, after which `stage` names the
 /// earlier set; where the filesystem cannot exchange, by renaming `out` to `old` and `stage` to
 /// `out`.
-pub(super) fn swap(stage: &Path, out: &Path, old: &Path) -> Result<(), String> {
+pub(super) fn swap(stage: &Path, out: &Path, old: &Path) -> Result<(), SetError> {
     match exchange(stage, out) {
         Ok(()) => Ok(()),
         Err(None) => by_renames(stage, out, old),
-        Err(Some(e)) => Err(format!(
-            "{}: the new set could not take this folder's place (exchanging it with {} failed: {e}); the earlier set is unchanged",
-            out.display(),
-            stage.display()
-        )),
+        Err(Some(source)) => {
+            Err(SetError::Exchange { out: out.to_path_buf(), stage: stage.to_path_buf(), source })
+        }
     }
 }
 
@@ -38,17 +38,13 @@ fn exchange(_: &Path, _: &Path) -> Result<(), Option<std::io::Error>> {
 
 /// The fallback: `out` renamed to `old`, then `stage` to `out`; a kill between the two leaves
 /// no `out` until the next commit renames `old` back.
-pub(super) fn by_renames(stage: &Path, out: &Path, old: &Path) -> Result<(), String> {
-    let failed = |what: &str, e: std::io::Error| {
-        format!("{}: the new set could not take this folder's place ({what} failed: {e})", out.display())
-    };
-    fs::rename(out, old).map_err(|e| failed(&format!("renaming it to {}", old.display()), e))?;
-    if let Err(e) = fs::rename(stage, out) {
-        let back = match fs::rename(old, out) {
-            Ok(()) => "the earlier set is unchanged".to_string(),
-            Err(b) => format!("the earlier set is in {} ({b}); rename it back", old.display()),
-        };
-        return Err(format!("{}; {back}", failed(&format!("renaming {} to it", stage.display()), e)));
+pub(super) fn by_renames(stage: &Path, out: &Path, old: &Path) -> Result<(), SetError> {
+    let set_aside = |source| SetError::SetAside { out: out.to_path_buf(), old: old.to_path_buf(), source };
+    fs::rename(out, old).map_err(set_aside)?;
+    if let Err(source) = fs::rename(stage, out) {
+        let back = fs::rename(old, out).err();
+        let (out, stage, old) = (out.to_path_buf(), stage.to_path_buf(), old.to_path_buf());
+        return Err(SetError::PutInPlace { out, stage, old, source, back });
     }
     Ok(())
 }

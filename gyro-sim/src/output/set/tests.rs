@@ -69,7 +69,7 @@ fn a_commit_replaces_the_set_whole_and_keeps_the_other_files() {
 fn a_folder_inside_the_output_folder_is_refused_by_name() {
     let (out, top) = fresh("refused");
     fs::create_dir(out.join("keep")).unwrap();
-    let error = Staging::new(&out).err().unwrap();
+    let error = Staging::new(&out).err().unwrap().to_string();
     assert!(error.contains("keep") && error.contains("move them elsewhere"), "{error}");
     fs::remove_dir_all(&top).unwrap();
 }

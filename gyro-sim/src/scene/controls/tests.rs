@@ -7,8 +7,8 @@ const HEAD: &str = "model = \"heavy_top\"\nt_final = 1.0\noutput_step = 0.1\n\
 [parameters]\nD = 1.0\nRR = 1\n\
 [axle]\ntilt = \"60 deg\"\nspin = \"10 rad/s\"\nquaternion = [\"E4\", \"E1\", \"E2\", \"E3\"]\nrates = [\"W1\", \"W2\", \"W3\"]\n";
 
-fn scene(controls: &str) -> Result<Scene, String> {
-    Scene::parse("top.toml", &format!("{HEAD}{controls}")).map_err(|e| e.to_string())
+fn scene(controls: &str) -> Result<Scene, SceneError> {
+    Scene::parse("top.toml", &format!("{HEAD}{controls}"))
 }
 
 #[test]
@@ -36,7 +36,7 @@ fn controls_bind_to_axle_entries_and_parameters_in_their_units() {
 
 #[test]
 fn control_errors_name_the_line_and_column() {
-    let at = |controls: &str| scene(controls).unwrap_err();
+    let at = |controls: &str| scene(controls).unwrap_err().to_string();
     let e = at("[[controls]]\nname = \"M\"\nmin = 0\nmax = 2\n");
     assert!(e.starts_with("top.toml:13:8: error: a control for `M`, which the scene does not give"), "{e}");
     let e = at("[[controls]]\nname = \"spin\"\nmin = 20\nmax = 40\n");

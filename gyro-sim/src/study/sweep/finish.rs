@@ -9,12 +9,12 @@ use std::path::Path;
 
 use super::sorted_runs::{SortedRuns, FAN_IN, RUN_BUDGET};
 use super::table::{record_bytes, RowLines};
-use super::JOURNAL_FILE;
+use super::{SweepError, JOURNAL_FILE};
 
 /// Writes `dir/sweep.csv` (columns `header`) and `dir/timing.csv`: the earlier rows and the
 /// lines of the journal of the sweep `fingerprint`, in member order, each member once (an
 /// earlier row wins, then the member's first line in the journal).
-pub fn finish(dir: &Path, fingerprint: &str, header: &[String]) -> Result<(), String> {
+pub fn finish(dir: &Path, fingerprint: &str, header: &[String]) -> Result<(), SweepError> {
     finish_within(dir, fingerprint, header, RUN_BUDGET, FAN_IN)
 }
 
@@ -25,14 +25,14 @@ fn finish_within(
     header: &[String],
     budget: usize,
     fan_in: usize,
-) -> Result<(), String> {
+) -> Result<(), SweepError> {
     let mut runs = SortedRuns::new(dir, budget, fan_in)?;
     super::journal::scan_lines(dir, fingerprint, header, &mut |m, line| runs.push(m, line))?;
     let journal = dir.join(JOURNAL_FILE);
     // The wall time is the first cell, a plain number.
     let split = |line: &[u8]| {
         let comma = line.iter().position(|b| *b == b',');
-        comma.ok_or_else(|| format!("{}: a journal line without cells", journal.display()))
+        comma.ok_or_else(|| SweepError::JournalLine { path: journal.clone() })
     };
     let row = |_: usize, line: &[u8], out: &mut Vec<u8>| {
         out.extend_from_slice(&line[split(line)? + 1..]);
@@ -50,25 +50,26 @@ fn finish_within(
 }
 
 /// How a journal line becomes a row of a rows file: appended to the buffer given.
-type RowOf<'a> = &'a dyn Fn(usize, &[u8], &mut Vec<u8>) -> Result<(), String>;
+type RowOf<'a> = &'a dyn Fn(usize, &[u8], &mut Vec<u8>) -> Result<(), SweepError>;
 
 /// Rewrites the rows file `path` as its rows merged with the rows `row` makes of the sorted
 /// journal lines `runs` (member order; an earlier row of a member wins), `header` first; an
 /// error when its columns are not `header`.
-fn write_merged(path: &Path, header: &[String], runs: &mut SortedRuns, row: RowOf<'_>) -> Result<(), String> {
+fn write_merged(
+    path: &Path,
+    header: &[String],
+    runs: &mut SortedRuns,
+    row: RowOf<'_>,
+) -> Result<(), SweepError> {
     let mut old = RowLines::open(path)?;
     if let Some(o) = &old {
         if o.header != header {
-            return Err(format!(
-                "{}: its columns are not this sweep's: give --new to start over",
-                path.display()
-            ));
+            return Err(SweepError::OtherColumns { path: path.to_path_buf(), journal: false });
         }
     }
     crate::output::write_atomically(path, |tmp| {
-        let file = File::create(tmp).map_err(|e| format!("{}: {e}", tmp.display()))?;
-        let mut w = BufWriter::new(file);
-        let io = |e: std::io::Error| format!("{}: {e}", tmp.display());
+        let io = |e: std::io::Error| SweepError::io(tmp, e);
+        let mut w = BufWriter::new(File::create(tmp).map_err(io)?);
         w.write_all(&record_bytes(header)?).map_err(io)?;
         let mut next_old = old.as_mut().map_or(Ok(None), RowLines::next_row)?;
         let mut bytes = Vec::new();
@@ -193,7 +194,7 @@ mod tests {
         assert!(leftovers(&dir).is_empty(), "{:?}", leftovers(&dir));
         // Another sweep's rows: refused once the runs are made, and they are removed.
         std::fs::write(dir.join("sweep.csv"), "member,Z,status\n").unwrap();
-        let e = finish_within(&dir, "fp", &header(), 1, 2).unwrap_err();
+        let e = finish_within(&dir, "fp", &header(), 1, 2).unwrap_err().to_string();
         assert!(e.contains("sweep.csv: its columns are not this sweep's"), "{e}");
         assert!(leftovers(&dir).is_empty(), "{:?}", leftovers(&dir));
         std::fs::remove_dir_all(&dir).unwrap();

@@ -6,6 +6,8 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
+use super::SweepError;
+
 /// The plan file's name in a sweep's folder.
 pub const PLAN_FILE: &str = "sweep.plan.toml";
 
@@ -80,60 +82,48 @@ impl SweepPlan {
     }
 
     /// The plan in `dir`, if it has one.
-    pub fn read(dir: &Path) -> Result<Option<SweepPlan>, String> {
+    pub fn read(dir: &Path) -> Result<Option<SweepPlan>, SweepError> {
         let path = dir.join(PLAN_FILE);
         let text = match std::fs::read_to_string(&path) {
             Ok(t) => t,
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
-            Err(e) => return Err(format!("{}: {e}", path.display())),
+            Err(e) => return Err(SweepError::io(&path, e)),
         };
-        toml::from_str(&text).map(Some).map_err(|e| {
-            format!("{}: not a sweep plan ({e}): give --new to start over, or another --out", path.display())
-        })
+        toml::from_str(&text).map(Some).map_err(|source| SweepError::NotAPlan { path, source })
     }
 
     /// Writes the plan into `dir` (a temporary file renamed into place).
-    pub fn write(&self, dir: &Path) -> Result<(), String> {
-        let text = toml::to_string(self).map_err(|e| e.to_string())?;
+    pub fn write(&self, dir: &Path) -> Result<(), SweepError> {
+        let text = toml::to_string(self).map_err(SweepError::PlanText)?;
         let text = format!("# The sweep whose rows this folder holds (gyro-sim sweep).\n{text}");
-        crate::output::write_atomically(&dir.join(PLAN_FILE), |tmp| {
-            std::fs::write(tmp, text.as_bytes()).map_err(|e| format!("{}: {e}", tmp.display()))
-        })
+        Ok(crate::output::write_file_atomically(&dir.join(PLAN_FILE), text.as_bytes())?)
     }
 }
 
 /// Binds `dir` to `plan`: nothing to do when it holds the same sweep; an error naming the
 /// difference when it holds another (or rows of an unknown one). With `new` it starts over
 /// whatever it holds: the old plan and rows are removed, then the new plan is written.
-pub fn bind(dir: &Path, plan: &SweepPlan, new: bool) -> Result<(), String> {
-    let old = SweepPlan::read(dir);
-    let has_rows = ROW_FILES.iter().any(|f| dir.join(f).exists());
-    match (&old, new) {
-        (Ok(Some(old)), false) if old.differences(plan, true).is_empty() => return Ok(()),
-        (Ok(Some(old)), false) => {
-            return Err(format!(
-                "{} holds another sweep: the folder's sweep {}: give another --out, or --new to start over (its rows are removed)",
-                dir.display(),
-                old.differences(plan, true).join("; the folder's sweep ")
-            ))
+pub fn bind(dir: &Path, plan: &SweepPlan, new: bool) -> Result<(), SweepError> {
+    if !new {
+        let has_rows = ROW_FILES.iter().any(|f| dir.join(f).exists());
+        match SweepPlan::read(dir)? {
+            Some(old) => {
+                let differences = old.differences(plan, true);
+                if differences.is_empty() {
+                    return Ok(());
+                }
+                return Err(SweepError::OtherSweep { dir: dir.to_path_buf(), differences });
+            }
+            None if has_rows => return Err(SweepError::UnknownRows { dir: dir.to_path_buf() }),
+            None => {}
         }
-        (Ok(None), false) if has_rows => {
-            return Err(format!(
-                "{} holds sweep rows without {PLAN_FILE} (written by hand or by an older gyro-sim), so which sweep they belong to is unknown: give another --out, or --new to start over (its rows are removed)",
-                dir.display()
-            ))
-        }
-        (Err(e), false) => return Err(e.clone()),
-        _ => {}
     }
     // Starting over: a folder without a plan is never resumed, so a stop between these steps
     // leaves no rows that could pass for the new sweep's.
     for name in std::iter::once(PLAN_FILE).chain(ROW_FILES) {
         let path = dir.join(name);
         match std::fs::remove_file(&path) {
-            Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
-                return Err(format!("{}: {e}", path.display()))
-            }
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => return Err(SweepError::io(&path, e)),
             _ => {}
         }
     }
@@ -188,7 +178,7 @@ mod tests {
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap();
         std::fs::write(dir.join("sweep.csv"), "member\n0\n").unwrap();
-        assert!(bind(&dir, &plan(), false).unwrap_err().contains("without sweep.plan.toml"));
+        assert!(bind(&dir, &plan(), false).unwrap_err().to_string().contains("without sweep.plan.toml"));
         bind(&dir, &plan(), true).unwrap();
         assert!(!dir.join("sweep.csv").exists());
         assert_eq!(SweepPlan::read(&dir).unwrap(), Some(plan()));
@@ -197,7 +187,7 @@ mod tests {
         bind(&dir, &plan(), true).unwrap();
         assert!(!dir.join("sweep.csv").exists(), "--new starts over even with the same plan");
         let other = SweepPlan { design: "Latin-hypercube sample of 5 from seed 1".into(), ..plan() };
-        let e = bind(&dir, &other, false).unwrap_err();
+        let e = bind(&dir, &other, false).unwrap_err().to_string();
         assert!(
             e.contains("was a grid; this one a Latin-hypercube sample of 5") && e.contains("--new"),
             "{e}"

@@ -10,6 +10,8 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
+use super::SweepError;
+
 /// The journal's file name in a sweep's folder.
 pub const JOURNAL_FILE: &str = "sweep.journal.csv";
 
@@ -20,7 +22,7 @@ pub struct Journal {
 }
 
 /// Called with a member's index and its line's bytes (newline included).
-pub type VisitLine<'a> = &'a mut dyn FnMut(usize, &[u8]) -> Result<(), String>;
+pub type VisitLine<'a> = &'a mut dyn FnMut(usize, &[u8]) -> Result<(), SweepError>;
 
 /// One journaled member: its index and where its line is in the file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -41,18 +43,15 @@ impl Journal {
         dir: &Path,
         fingerprint: &str,
         header: &[String],
-        visit: &mut dyn FnMut(Entry) -> Result<(), String>,
-    ) -> Result<Journal, String> {
+        visit: &mut dyn FnMut(Entry) -> Result<(), SweepError>,
+    ) -> Result<Journal, SweepError> {
         let path = dir.join(JOURNAL_FILE);
         let fresh = !has_header(&path)?;
         if !fresh {
             scan(dir, fingerprint, header, visit)?;
         }
-        let file = OpenOptions::new()
-            .create(true)
-            .append(true)
-            .open(&path)
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+        let file =
+            OpenOptions::new().create(true).append(true).open(&path).map_err(|e| SweepError::io(&path, e))?;
         let journal = Journal { path, file: Mutex::new(file) };
         if fresh {
             let mut line = vec!["wall_ms".to_string()];
@@ -65,32 +64,32 @@ impl Journal {
     }
 
     /// Appends one member's `cells` and wall time, flushed before returning.
-    pub fn record(&self, cells: &[String], wall_ms: f64) -> Result<(), String> {
+    pub fn record(&self, cells: &[String], wall_ms: f64) -> Result<(), SweepError> {
         let mut line = vec![format!("{wall_ms:.4}")];
         line.extend(cells.iter().cloned());
         self.append(&line)
     }
 
     /// Writes `line` as one CSV record in a single write.
-    fn append(&self, line: &[String]) -> Result<(), String> {
+    fn append(&self, line: &[String]) -> Result<(), SweepError> {
         self.write(&super::table::record_bytes(line)?)
     }
 
     /// Writes `bytes` in a single write, flushed.
-    fn write(&self, bytes: &[u8]) -> Result<(), String> {
-        let mut file = self.file.lock().map_err(|_| "the sweep journal's lock is poisoned".to_string())?;
-        file.write_all(bytes).and_then(|()| file.flush()).map_err(|e| format!("{}: {e}", self.path.display()))
+    fn write(&self, bytes: &[u8]) -> Result<(), SweepError> {
+        let mut file = self.file.lock().map_err(|_| SweepError::Poisoned)?;
+        file.write_all(bytes).and_then(|()| file.flush()).map_err(|e| SweepError::io(&self.path, e))
     }
 
     /// Removes the journal (its rows are in `sweep.csv`).
-    pub fn remove(self) -> Result<(), String> {
-        std::fs::remove_file(&self.path).map_err(|e| format!("{}: {e}", self.path.display()))
+    pub fn remove(self) -> Result<(), SweepError> {
+        std::fs::remove_file(&self.path).map_err(|e| SweepError::io(&self.path, e))
     }
 }
 
 /// Whether the journal at `path` has its two first lines (plan and header) whole: after
 /// cutting a half-written last line, a journal without them is emptied (a run killed as it began).
-fn has_header(path: &Path) -> Result<bool, String> {
+fn has_header(path: &Path) -> Result<bool, SweepError> {
     use std::io::BufRead;
     drop_cut_line(path)?;
     let Ok(file) = File::open(path) else { return Ok(false) };
@@ -98,16 +97,16 @@ fn has_header(path: &Path) -> Result<bool, String> {
     if lines.next().is_some() && lines.next().is_some() {
         return Ok(true);
     }
-    let file = OpenOptions::new().write(true).open(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    file.set_len(0).map_err(|e| format!("{}: {e}", path.display()))?;
+    let file = OpenOptions::new().write(true).open(path).map_err(|e| SweepError::io(path, e))?;
+    file.set_len(0).map_err(|e| SweepError::io(path, e))?;
     Ok(false)
 }
 
 /// Cuts the journal at `path` back to its last complete line (a killed run's half-written line).
-fn drop_cut_line(path: &Path) -> Result<(), String> {
+fn drop_cut_line(path: &Path) -> Result<(), SweepError> {
     use std::io::{Read, Seek, SeekFrom};
     let Ok(mut file) = OpenOptions::new().read(true).write(true).open(path) else { return Ok(()) };
-    let fail = |e: std::io::Error| format!("{}: {e}", path.display());
+    let fail = |e: std::io::Error| SweepError::io(path, e);
     let len = file.metadata().map_err(fail)?.len();
     let mut end = len;
     let mut chunk = vec![0u8; 1 << 16];
@@ -152,31 +151,30 @@ pub fn scan(
     dir: &Path,
     fingerprint: &str,
     header: &[String],
-    visit: &mut dyn FnMut(Entry) -> Result<(), String>,
-) -> Result<usize, String> {
+    visit: &mut dyn FnMut(Entry) -> Result<(), SweepError>,
+) -> Result<usize, SweepError> {
     let path = dir.join(JOURNAL_FILE);
     let file = match File::open(&path) {
         Ok(f) => f,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(0),
-        Err(e) => return Err(format!("{}: {e}", path.display())),
+        Err(e) => return Err(SweepError::io(&path, e)),
     };
-    let complete = complete_length(&file).map_err(|e| format!("{}: {e}", path.display()))?;
+    let complete = complete_length(&file).map_err(|e| SweepError::io(&path, e))?;
     let mut r = csv::ReaderBuilder::new()
         .has_headers(false)
         .flexible(true)
         .from_reader(std::io::BufReader::new(file));
-    let bad = |what: &str| format!("{}: {what}: give --new to start over, or another --out", path.display());
     let mut rec = csv::ByteRecord::new();
     let read = |r: &mut csv::Reader<std::io::BufReader<File>>, rec: &mut csv::ByteRecord| {
-        r.read_byte_record(rec).map_err(|e| bad(&e.to_string()))
+        r.read_byte_record(rec).map_err(|source| SweepError::JournalRead { path: path.clone(), source })
     };
     let plan_line = [b"plan".as_slice(), fingerprint.as_bytes()];
     if read(&mut r, &mut rec)? && !rec.iter().eq(plan_line) {
-        return Err(bad("it is another sweep's journal (its first line is not this sweep's plan)"));
+        return Err(SweepError::OtherJournal { path: path.clone() });
     }
     let wanted = std::iter::once("wall_ms").chain(header.iter().map(String::as_str)).map(str::as_bytes);
     if read(&mut r, &mut rec)? && !rec.iter().eq(wanted) {
-        return Err(bad("its columns are not this sweep's"));
+        return Err(SweepError::OtherColumns { path: path.clone(), journal: true });
     }
     let mut count = 0;
     loop {
@@ -192,7 +190,9 @@ pub fn scan(
                 count += 1;
             }
             _ if end >= complete => break, // a line still being written
-            _ => return Err(bad(&format!("a damaged line ({} cells) at byte {start}", rec.len()))),
+            _ => {
+                return Err(SweepError::DamagedJournal { path: path.clone(), cells: rec.len(), byte: start })
+            }
         }
     }
     Ok(count)
@@ -205,20 +205,20 @@ pub fn scan_lines(
     fingerprint: &str,
     header: &[String],
     visit: VisitLine<'_>,
-) -> Result<usize, String> {
+) -> Result<usize, SweepError> {
     use std::io::Read;
     let path = dir.join(JOURNAL_FILE);
-    let fail = |e: std::io::Error| format!("{}: {e}", path.display());
+    let fail = |e: std::io::Error| SweepError::io(&path, e);
     // The journal read forward a second time, and the byte it is at.
     let mut second: Option<(std::io::BufReader<File>, u64)> = None;
     let mut line = Vec::new();
     scan(dir, fingerprint, header, &mut |e| {
-        if second.is_none() {
-            second = Some((std::io::BufReader::new(File::open(&path).map_err(fail)?), 0));
-        }
-        let (reader, at) = second.as_mut().ok_or("the journal is not open")?;
+        let (reader, at) = match &mut second {
+            Some(open) => open,
+            None => second.insert((std::io::BufReader::new(File::open(&path).map_err(fail)?), 0)),
+        };
         let skip = e.start.checked_sub(*at).and_then(|n| i64::try_from(n).ok());
-        let skip = skip.ok_or_else(|| format!("{}: lines out of order", path.display()))?;
+        let skip = skip.ok_or_else(|| SweepError::JournalOrder { path: path.clone() })?;
         reader.seek_relative(skip).map_err(fail)?;
         line.resize(usize::try_from(e.end - e.start).unwrap_or(0), 0);
         reader.read_exact(&mut line).map_err(fail)?;
@@ -236,7 +236,7 @@ mod tests {
     }
 
     /// The journal's member lines as `scan` finds them.
-    fn entries(dir: &Path, header: &[String]) -> Result<Vec<Entry>, String> {
+    fn entries(dir: &Path, header: &[String]) -> Result<Vec<Entry>, SweepError> {
         let mut out = Vec::new();
         let n = scan(dir, "fp", header, &mut |e| {
             out.push(e);
@@ -268,16 +268,16 @@ mod tests {
             lines.push((m, l.to_vec()));
             Ok(())
         });
-        assert_eq!(n, Ok(2));
+        assert_eq!(n.unwrap(), 2);
         let want: Vec<(usize, Vec<u8>)> = found
             .iter()
             .map(|e| (e.member, text.as_bytes()[e.start as usize..e.end as usize].to_vec()))
             .collect();
         assert_eq!(lines, want);
         let other = ["member", "Z", "status"].map(String::from);
-        assert!(entries(&dir, &other).unwrap_err().contains("columns are not this sweep's"));
+        assert!(entries(&dir, &other).unwrap_err().to_string().contains("columns are not this sweep's"));
         let refused = Journal::open(&dir, "other", &header(), &mut |_| Ok(()));
-        assert!(refused.is_err_and(|e| e.contains("another sweep's journal")));
+        assert!(refused.is_err_and(|e| e.to_string().contains("another sweep's journal")));
         // Reopening drops the cut line, so the next record starts a line of its own.
         let mut held = 0;
         let j = Journal::open(&dir, "fp", &header(), &mut |_| {

@@ -6,6 +6,8 @@
 use std::fs::{File, OpenOptions, TryLockError};
 use std::path::Path;
 
+use super::SweepError;
+
 /// The lock file's name in a sweep's folder (left in place: removing it would race).
 pub const LOCK_FILE: &str = "sweep.lock";
 
@@ -17,26 +19,22 @@ pub struct FolderLock {
 
 impl FolderLock {
     /// Takes the lock on `dir` (which must exist), or says which folder is busy.
-    pub fn take(dir: &Path) -> Result<FolderLock, String> {
+    pub fn take(dir: &Path) -> Result<FolderLock, SweepError> {
         let path = dir.join(LOCK_FILE);
         let file = OpenOptions::new()
             .create(true)
             .truncate(false)
             .write(true)
             .open(&path)
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+            .map_err(|e| SweepError::io(&path, e))?;
         match file.try_lock() {
             Ok(()) => {
                 let own = ["sweep.csv", "timing.csv", super::PLAN_FILE, super::sorted_runs::RUN_NAME];
                 crate::output::remove_temporaries(dir, &own)?;
                 Ok(FolderLock { _file: file })
             }
-            Err(TryLockError::WouldBlock) => Err(format!(
-                "another sweep is running in {} (it holds {}): wait for it to end, or give another --out",
-                dir.display(),
-                path.display()
-            )),
-            Err(TryLockError::Error(e)) => Err(format!("{}: cannot be locked: {e}", path.display())),
+            Err(TryLockError::WouldBlock) => Err(SweepError::Busy { dir: dir.to_path_buf(), lock: path }),
+            Err(TryLockError::Error(source)) => Err(SweepError::Lock { path, source }),
         }
     }
 }
@@ -50,7 +48,7 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("lock-test-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let first = FolderLock::take(&dir).unwrap();
-        let e = FolderLock::take(&dir).unwrap_err();
+        let e = FolderLock::take(&dir).unwrap_err().to_string();
         assert!(e.contains(&format!("another sweep is running in {}", dir.display())), "{e}");
         drop(first);
         FolderLock::take(&dir).unwrap();

@@ -9,13 +9,14 @@ use std::path::Path;
 use super::identity::{bind, SweepPlan};
 use super::member_set::MemberSet;
 use super::table::{record_bytes, RowLines};
+use super::SweepError;
 
 /// Joins the shards' `sweep.csv` into `out/sweep.csv` (and `out/sweep.plan.toml`, the whole
 /// sweep's plan); the members merged. An error naming what is wrong otherwise, nothing written.
-pub fn merge(shards: &[&Path], out: &Path) -> Result<usize, String> {
+pub fn merge(shards: &[&Path], out: &Path) -> Result<usize, SweepError> {
     let slots = shard_slots(shards)?;
     let (plan, header) = check_members(&slots)?;
-    std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    std::fs::create_dir_all(out).map_err(|e| SweepError::io(out, e))?;
     let _lock = super::lock::FolderLock::take(out)?;
     let whole = SweepPlan { shard: 1, shards: 1, ..plan.clone() };
     bind(out, &whole, false)?;
@@ -24,13 +25,13 @@ pub fn merge(shards: &[&Path], out: &Path) -> Result<usize, String> {
         readers.push(RowLines::open(&dir.join("sweep.csv"))?.ok_or_else(|| no_rows(dir))?);
     }
     crate::output::write_atomically(&out.join("sweep.csv"), |tmp| {
-        let io = |e: std::io::Error| format!("{}: {e}", tmp.display());
+        let io = |e: std::io::Error| SweepError::io(tmp, e);
         let mut w = BufWriter::new(File::create(tmp).map_err(io)?);
         w.write_all(&record_bytes(&header)?).map_err(io)?;
         for m in 0..plan.members {
             match readers[m % slots.len()].next_row()? {
                 Some((n, line)) if n == m => w.write_all(&line).map_err(io)?,
-                _ => return Err(format!("{}: changed while being merged", slots[m % slots.len()].display())),
+                _ => return Err(SweepError::Changed { dir: slots[m % slots.len()].to_path_buf() }),
             }
         }
         w.flush().map_err(io)
@@ -39,44 +40,33 @@ pub fn merge(shards: &[&Path], out: &Path) -> Result<usize, String> {
 }
 
 /// The shards' folders by shard index, checked to be one plan's, each shard once.
-fn shard_slots<'a>(shards: &[&'a Path]) -> Result<Vec<&'a Path>, String> {
+fn shard_slots<'a>(shards: &[&'a Path]) -> Result<Vec<&'a Path>, SweepError> {
     let mut plans = Vec::with_capacity(shards.len());
     for dir in shards {
-        let plan = SweepPlan::read(dir)?.ok_or_else(|| {
-            format!("{}: no sweep.plan.toml: not a finished shard of a gyro-sim sweep (run it again to finish it)", dir.display())
-        })?;
+        let plan = SweepPlan::read(dir)?.ok_or_else(|| SweepError::NotAShard { dir: dir.to_path_buf() })?;
         plans.push(plan);
     }
-    let Some(first) = plans.first() else { return Err("give the shards' folders to merge".into()) };
+    let Some(first) = plans.first() else { return Err(SweepError::NoShards) };
     if first.shards == 0 || first.shards > super::MAX_MEMBERS {
-        return Err(format!("{}: {} shards is not a plausible split", shards[0].display(), first.shards));
+        return Err(SweepError::Split { dir: shards[0].to_path_buf(), shards: first.shards });
     }
     let mut slots: Vec<Option<&Path>> = vec![None; first.shards];
     for (dir, plan) in shards.iter().zip(&plans) {
         let differ = first.differences(plan, false);
         if !differ.is_empty() || plan.shards != first.shards {
             let split = format!("was cut into {} shards; this one into {}", first.shards, plan.shards);
-            let what = if differ.is_empty() { split } else { differ.join("; the first ") };
-            return Err(format!(
-                "{} is another sweep's shard than {}: the first {what}: refusing to merge",
-                dir.display(),
-                shards[0].display()
-            ));
+            let differences = if differ.is_empty() { vec![split] } else { differ };
+            let (dir, first) = (dir.to_path_buf(), shards[0].to_path_buf());
+            return Err(SweepError::OtherShard { dir, first, differences });
         }
+        let (shard, count) = (plan.shard, plan.shards);
         match plan.shard.checked_sub(1).and_then(|k| slots.get_mut(k)) {
             Some(Some(other)) => {
-                return Err(format!(
-                    "{} and {} are both shard {}/{}: give each shard once",
-                    other.display(),
-                    dir.display(),
-                    plan.shard,
-                    plan.shards
-                ))
+                let (first, dir) = (other.to_path_buf(), dir.to_path_buf());
+                return Err(SweepError::ShardTwice { first, dir, shard, shards: count });
             }
             Some(slot) => *slot = Some(*dir),
-            None => {
-                return Err(format!("{}: shard {}/{} is not a shard", dir.display(), plan.shard, plan.shards))
-            }
+            None => return Err(SweepError::NotInSplit { dir: dir.to_path_buf(), shard, shards: count }),
         }
     }
     let missing: Vec<String> = (0..slots.len())
@@ -84,14 +74,7 @@ fn shard_slots<'a>(shards: &[&'a Path]) -> Result<Vec<&'a Path>, String> {
         .map(|k| format!("{}/{} ({})", k + 1, first.shards, shard_members(k, first.shards, first.members)))
         .collect();
     if !missing.is_empty() {
-        return Err(format!(
-            "shard{} {} of the {} missing ({} of {} shards given): give their folders, or run them (gyro-sim sweep ... --shard K/N); refusing to merge",
-            if missing.len() > 1 { "s" } else { "" },
-            missing.join(", "),
-            if missing.len() > 1 { "sweep are" } else { "sweep is" },
-            shards.len(),
-            first.shards
-        ));
+        return Err(SweepError::MissingShards { missing, given: shards.len(), shards: first.shards });
     }
     Ok(slots.into_iter().flatten().collect())
 }
@@ -111,7 +94,7 @@ fn shard_members(k: usize, count: usize, total: usize) -> String {
 
 /// The shards' plan and columns, once every member of the plan is in its shard's rows exactly
 /// once; else an error naming the missing and doubled members.
-fn check_members(slots: &[&Path]) -> Result<(SweepPlan, Vec<String>), String> {
+fn check_members(slots: &[&Path]) -> Result<(SweepPlan, Vec<String>), SweepError> {
     let plan = SweepPlan::read(slots[0])?.ok_or_else(|| no_rows(slots[0]))?;
     let mut seen = MemberSet::new(plan.members);
     let mut header: Option<Vec<String>> = None;
@@ -119,9 +102,7 @@ fn check_members(slots: &[&Path]) -> Result<(SweepPlan, Vec<String>), String> {
     for (k, dir) in slots.iter().enumerate() {
         let mut rows = RowLines::open(&dir.join("sweep.csv"))?.ok_or_else(|| no_rows(dir))?;
         match &header {
-            Some(h) if *h != rows.header => {
-                return Err(format!("{}: its columns differ from the first shard's", dir.display()))
-            }
+            Some(h) if *h != rows.header => return Err(SweepError::ShardColumns { dir: dir.to_path_buf() }),
             _ => header = Some(rows.header.clone()),
         }
         while let Some((m, _)) = rows.next_row()? {
@@ -137,34 +118,13 @@ fn check_members(slots: &[&Path]) -> Result<(SweepPlan, Vec<String>), String> {
     if missing.is_empty() && stray_count == 0 {
         return Ok((plan, header.unwrap_or_default()));
     }
-    let mut why = Vec::new();
-    if !missing.is_empty() {
-        why.push(format!(
-            "{} of {} members are missing: {} (their shards did not finish: run them again)",
-            plan.members - seen.len(),
-            plan.members,
-            listed(&missing.iter().map(usize::to_string).collect::<Vec<_>>(), plan.members - seen.len())
-        ));
-    }
-    if stray_count > 0 {
-        why.push(format!("members not of their shard or given twice: {}", listed(&strays, stray_count)));
-    }
-    Err(format!("refusing to merge: {}", why.join("; ")))
-}
-
-/// Up to 20 of `items`, then how many more of `total`.
-fn listed(items: &[String], total: usize) -> String {
-    let shown = items.iter().take(20).cloned().collect::<Vec<_>>().join(", ");
-    if total > 20 {
-        format!("{shown} and {} more", total - 20)
-    } else {
-        shown
-    }
+    let (missing_count, members) = (plan.members - seen.len(), plan.members);
+    Err(SweepError::Members { missing_count, members, missing, strays, stray_count })
 }
 
 /// The error for a shard folder without rows.
-fn no_rows(dir: &Path) -> String {
-    format!("{}: no sweep.csv (is it a finished shard's --out folder?)", dir.display())
+fn no_rows(dir: &Path) -> SweepError {
+    SweepError::NoRows { dir: dir.to_path_buf() }
 }
 
 #[cfg(test)]

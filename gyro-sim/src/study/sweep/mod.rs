@@ -8,6 +8,7 @@
 //! journal and from it, by an external sort, into `sweep.csv` ([`finish`](mod@finish)), so memory does not
 //! grow with the members beyond one bit each (which are done).
 
+mod error;
 mod finish;
 pub mod identity;
 mod journal;
@@ -24,6 +25,7 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
+pub use error::{DesignError, ShardError, SweepError};
 pub use finish::finish;
 pub use identity::{SweepPlan, PLAN_FILE};
 pub use journal::{scan as scan_journal, Journal, JOURNAL_FILE};
@@ -34,7 +36,7 @@ pub use shard::Shard;
 pub use table::{read_rows, SweepRow};
 
 use crate::models::Registry;
-use crate::scene::{Scene, Value};
+use crate::scene::{Scene, SceneError, Value};
 
 /// The indices below `count` of `shard`'s members not in `done`, in order.
 pub fn todo(count: usize, shard: Shard, done: &MemberSet) -> impl Iterator<Item = usize> + Send + '_ {
@@ -43,8 +45,8 @@ pub fn todo(count: usize, shard: Shard, done: &MemberSet) -> impl Iterator<Item 
 
 /// The column names of a sweep's rows after the member index and the varied names: the
 /// written columns' final, min and max values, in display units.
-pub fn value_columns(scene: &Scene, registry: &Registry) -> Result<Vec<String>, String> {
-    let problem = crate::resolve::resolve(scene, registry).map_err(|e| e.to_string())?;
+pub fn value_columns(scene: &Scene, registry: &Registry) -> Result<Vec<String>, SceneError> {
+    let problem = crate::resolve::resolve(scene, registry)?;
     let shown: Vec<String> = crate::solve::columns(&problem)
         .iter()
         .filter(|c| !c.hidden)

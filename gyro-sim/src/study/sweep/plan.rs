@@ -2,6 +2,7 @@
 //! grid or a Latin-hypercube sample; out go the members, each an index and one value per range,
 //! made from its index when asked, in a fixed order (so a member's index names it in every shard and every re-run).
 
+use super::DesignError;
 use crate::scene::Value;
 
 /// One quantity to vary.
@@ -43,9 +44,8 @@ impl std::fmt::Display for Range {
 }
 
 /// Reads `NAME=START:STOP[:N] [UNIT]` (`U3=10:100:10 rad/s`).
-pub fn parse_range(text: &str) -> Result<Range, String> {
-    let bad =
-        || format!("`{text}` is not NAME=START:STOP[:N] [UNIT] (for example --vary \"U3=10:100:10 rad/s\")");
+pub fn parse_range(text: &str) -> Result<Range, DesignError> {
+    let bad = || DesignError::Range { text: text.to_string() };
     let (name, rest) = text.split_once('=').ok_or_else(bad)?;
     let (numbers, unit) = match rest.trim().split_once(char::is_whitespace) {
         Some((n, u)) => (n, Some(u.trim().to_string())),
@@ -108,21 +108,20 @@ enum Points {
 impl Members {
     /// The members of `design` over `ranges`; an error naming the limit when there would be
     /// more than [`MAX_MEMBERS`] (or none).
-    pub fn new(ranges: &[Range], design: &Design) -> Result<Members, String> {
+    pub fn new(ranges: &[Range], design: &Design) -> Result<Members, DesignError> {
         for (k, r) in ranges.iter().enumerate() {
             if let Some(first) = ranges[..k].iter().find(|o| o.name.eq_ignore_ascii_case(&r.name)) {
-                return Err(format!(
-                    "--vary {r} and --vary {first} vary the same quantity (names are case-insensitive): give one range for it"
-                ));
+                return Err(DesignError::Twice {
+                    range: Box::new(r.clone()),
+                    first: Box::new(first.clone()),
+                });
             }
         }
         let how = match design {
             Design::Grid => Points::Grid(grid_points(ranges)?),
             Design::Samples { count, seed } => {
                 if *count == 0 || *count > MAX_MEMBERS {
-                    return Err(format!(
-                        "--samples {count}: give 1 to {MAX_MEMBERS} samples (the most members one sweep may have)"
-                    ));
+                    return Err(DesignError::Samples { count: *count });
                 }
                 Points::Sample { count: *count, seed: *seed }
             }
@@ -161,22 +160,14 @@ impl Members {
 
 /// The points of each range of a grid, checked: each range needs N and their product may not
 /// pass [`MAX_MEMBERS`].
-fn grid_points(ranges: &[Range]) -> Result<Vec<usize>, String> {
+fn grid_points(ranges: &[Range]) -> Result<Vec<usize>, DesignError> {
     let mut points = Vec::with_capacity(ranges.len());
     for r in ranges {
-        points.push(
-            r.points.ok_or_else(|| {
-                format!("--vary {}: a grid needs the number of points, START:STOP:N", r.name)
-            })?,
-        );
+        points.push(r.points.ok_or_else(|| DesignError::GridPoints { name: r.name.clone() })?);
     }
     let total = points.iter().try_fold(1u128, |acc, n| acc.checked_mul(*n as u128));
     if total.is_none_or(|t| t > MAX_MEMBERS as u128) {
-        let counts = points.iter().map(usize::to_string).collect::<Vec<_>>().join(" x ");
-        let total = total.map_or_else(|| "more than 2^128".to_string(), |t| t.to_string());
-        return Err(format!(
-            "the grid has {counts} = {total} members, more than the {MAX_MEMBERS} one sweep may have: use fewer points per range (or a --samples design)"
-        ));
+        return Err(DesignError::GridTooLarge { counts: points, total });
     }
     Ok(points)
 }
@@ -197,7 +188,7 @@ mod tests {
         assert_eq!(r.unit.as_deref(), Some("rad/s"));
         assert_eq!(parse_range("Y=0:5").unwrap().points, None);
         for bad in ["Y", "Y=1", "Y=a:2:3", "=1:2:3", "Y=1:2:0", "Y=1:2:3:4"] {
-            assert!(parse_range(bad).unwrap_err().contains("NAME=START:STOP[:N]"), "{bad}");
+            assert!(parse_range(bad).unwrap_err().to_string().contains("NAME=START:STOP[:N]"), "{bad}");
         }
     }
 
@@ -214,11 +205,11 @@ mod tests {
     #[test]
     fn sizes_past_the_limit_are_refused_naming_it() {
         let huge: Vec<Range> = (0..6).map(|i| parse_range(&format!("A{i}=0:1:2048")).unwrap()).collect();
-        let e = Members::new(&huge, &Design::Grid).unwrap_err();
+        let e = Members::new(&huge, &Design::Grid).unwrap_err().to_string();
         assert!(e.contains("= 73786976294838206464 members") && e.contains("10000000"), "{e}");
         let one = [parse_range("A=0:1").unwrap()];
         for count in [0, usize::MAX, MAX_MEMBERS + 1] {
-            let e = Members::new(&one, &Design::Samples { count, seed: 1 }).unwrap_err();
+            let e = Members::new(&one, &Design::Samples { count, seed: 1 }).unwrap_err().to_string();
             assert!(e.contains(&format!("--samples {count}: give 1 to 10000000")), "{e}");
         }
         assert_eq!(parse_range("U3=5:50:8 rad/s").unwrap().to_string(), "U3=5:50:8 rad/s");
@@ -227,7 +218,7 @@ mod tests {
     #[test]
     fn a_quantity_varied_twice_is_an_error_naming_both_ranges() {
         let ranges = [parse_range("Y=0:1:2").unwrap(), parse_range("y=5:6:3").unwrap()];
-        let e = Members::new(&ranges, &Design::Grid).err().unwrap();
+        let e = Members::new(&ranges, &Design::Grid).err().unwrap().to_string();
         assert!(e.starts_with("--vary y=5:6:3 and --vary Y=0:1:2 vary the same quantity"), "{e}");
     }
 

@@ -7,6 +7,8 @@
 //! (ID - MIN) / STEP of COUNT. For other sparse arrays (`--array=1,3,8`) the environment does not
 //! say a task's rank among the ids, so the run is refused and asks for `--shard`.
 
+use super::ShardError;
+
 /// One slice of a sweep: members whose index is `index` modulo `count`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Shard {
@@ -22,7 +24,7 @@ impl Shard {
 
     /// `--shard K/N` when given, else the Slurm array task described by `env` (a variable's
     /// value by name), else the whole sweep.
-    pub fn resolve(arg: Option<&str>, env: &dyn Fn(&str) -> Option<String>) -> Result<Shard, String> {
+    pub fn resolve(arg: Option<&str>, env: &dyn Fn(&str) -> Option<String>) -> Result<Shard, ShardError> {
         match arg {
             Some(text) => Shard::parse(text),
             None => Shard::from_slurm(env).map(|s| s.unwrap_or(Shard::WHOLE)),
@@ -30,8 +32,8 @@ impl Shard {
     }
 
     /// Reads `K/N` (K from 1).
-    pub fn parse(text: &str) -> Result<Shard, String> {
-        let bad = || format!("--shard {text}: write K/N with 1 <= K <= N, e.g. --shard 2/4");
+    pub fn parse(text: &str) -> Result<Shard, ShardError> {
+        let bad = || ShardError::Form { text: text.to_string() };
         let (k, n) = text.split_once('/').ok_or_else(bad)?;
         let (k, n): (usize, usize) =
             (k.trim().parse().map_err(|_| bad())?, n.trim().parse().map_err(|_| bad())?);
@@ -43,15 +45,15 @@ impl Shard {
 
     /// The Slurm array task's shard, `None` outside an array; an error when the array's ids are
     /// not evenly spaced (the rank is then unknown) or a variable is not a number.
-    pub fn from_slurm(env: &dyn Fn(&str) -> Option<String>) -> Result<Option<Shard>, String> {
-        let number = |name: &str| -> Result<Option<usize>, String> {
+    pub fn from_slurm(env: &dyn Fn(&str) -> Option<String>) -> Result<Option<Shard>, ShardError> {
+        let number = |name: &str| -> Result<Option<usize>, ShardError> {
             match env(name) {
                 None => Ok(None),
-                Some(v) => v
+                Some(value) => value
                     .trim()
                     .parse()
                     .map(Some)
-                    .map_err(|_| format!("{name}={v} is not a whole number: pass --shard K/N")),
+                    .map_err(|_| ShardError::NotANumber { name: name.to_string(), value }),
             }
         };
         let Some(id) = number("SLURM_ARRAY_TASK_ID")? else { return Ok(None) };
@@ -67,11 +69,7 @@ impl Shard {
             && (id - min) % step == 0
             && (count - 1).checked_mul(step).and_then(|s| s.checked_add(min)) == Some(max);
         if !spaced {
-            return Err(format!(
-                "this Slurm array's task ids are not evenly spaced (SLURM_ARRAY_TASK_ID={id}, MIN={min}, MAX={max}, STEP={step}, COUNT={count}), so this task's rank among them is unknown: submit an evenly spaced array (--array=0-{last}, or START-END:STEP), or pass the shard yourself, e.g. --shard $((SLURM_ARRAY_TASK_ID+1))/{all} to make each id its own shard (then every id 0..={max} must run)",
-                last = count.saturating_sub(1),
-                all = max.saturating_add(1),
-            ));
+            return Err(ShardError::Uneven { id, min, max, step, count });
         }
         Ok(Some(Shard { index: (id - min) / step, count }))
     }
@@ -88,7 +86,13 @@ impl std::fmt::Display for Shard {
 mod tests {
     use super::*;
 
-    fn slurm(id: usize, min: usize, max: usize, step: usize, count: usize) -> Result<Option<Shard>, String> {
+    fn slurm(
+        id: usize,
+        min: usize,
+        max: usize,
+        step: usize,
+        count: usize,
+    ) -> Result<Option<Shard>, ShardError> {
         let vars = [
             ("SLURM_ARRAY_TASK_ID", id),
             ("SLURM_ARRAY_TASK_MIN", min),
@@ -108,14 +112,15 @@ mod tests {
         assert_eq!(slurm(5, 3, 6, 1, 4).unwrap(), Some(Shard { index: 2, count: 4 }));
         // --array=1,3,8 (whatever step Slurm reports).
         for step in [1, 2, 7] {
-            let e = slurm(3, 1, 8, step, 3).unwrap_err();
+            let e = slurm(3, 1, 8, step, 3).unwrap_err().to_string();
             assert!(
                 e.contains("not evenly spaced") && e.contains("--shard $((SLURM_ARRAY_TASK_ID+1))/9"),
                 "{e}"
             );
         }
         assert_eq!(Shard::from_slurm(&|_| None).unwrap(), None);
-        let e = Shard::from_slurm(&|n| (n == "SLURM_ARRAY_TASK_ID").then(|| "x".into())).unwrap_err();
+        let e =
+            Shard::from_slurm(&|n| (n == "SLURM_ARRAY_TASK_ID").then(|| "x".into())).unwrap_err().to_string();
         assert!(e.contains("SLURM_ARRAY_TASK_ID=x is not a whole number"), "{e}");
     }
 
@@ -124,7 +129,7 @@ mod tests {
         let env = |n: &str| (n == "SLURM_ARRAY_TASK_ID").then(|| "3".to_string());
         assert_eq!(Shard::resolve(Some("2/4"), &env).unwrap(), Shard { index: 1, count: 4 });
         for bad in ["0/4", "5/4", "4", "a/b"] {
-            assert!(Shard::parse(bad).unwrap_err().contains("K/N"), "{bad}");
+            assert!(Shard::parse(bad).unwrap_err().to_string().contains("K/N"), "{bad}");
         }
         assert_eq!(Shard::resolve(None, &|_| None).unwrap().to_string(), "1/1");
     }

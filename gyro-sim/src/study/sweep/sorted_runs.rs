@@ -11,6 +11,7 @@ use std::io::{BufReader, BufWriter, Read, Write};
 use std::path::{Path, PathBuf};
 
 use super::journal::VisitLine;
+use super::SweepError;
 
 /// The name run files are temporaries of (`.partial-{pid}-{random}-sweep.run`).
 pub(crate) const RUN_NAME: &str = "sweep.run";
@@ -38,7 +39,7 @@ pub struct SortedRuns {
 impl SortedRuns {
     /// Sorting into `dir` with a buffer of `budget` bytes, merging `fan_in` runs at once; run
     /// files left there by an earlier, killed sort are removed (the folder's lock is held).
-    pub fn new(dir: &Path, budget: usize, fan_in: usize) -> Result<SortedRuns, String> {
+    pub fn new(dir: &Path, budget: usize, fan_in: usize) -> Result<SortedRuns, SweepError> {
         crate::output::remove_temporaries(dir, &[RUN_NAME])?;
         Ok(SortedRuns {
             dir: dir.to_path_buf(),
@@ -52,7 +53,7 @@ impl SortedRuns {
     }
 
     /// Takes member `member`'s `line` (the next in journal order).
-    pub fn push(&mut self, member: usize, line: &[u8]) -> Result<(), String> {
+    pub fn push(&mut self, member: usize, line: &[u8]) -> Result<(), SweepError> {
         self.lines.push((member, self.bytes.len(), line.len()));
         self.bytes.extend_from_slice(line);
         if self.bytes.len() + self.lines.len() * LINE_COST >= self.budget {
@@ -63,7 +64,7 @@ impl SortedRuns {
 
     /// Passes each member's first line to `visit`, in member order, once all are pushed (as
     /// often as asked).
-    pub fn merge(&mut self, visit: VisitLine<'_>) -> Result<(), String> {
+    pub fn merge(&mut self, visit: VisitLine<'_>) -> Result<(), SweepError> {
         self.spill()?;
         self.bytes = Vec::new();
         self.lines = Vec::new();
@@ -76,7 +77,7 @@ impl SortedRuns {
                 w.finish()?;
                 self.runs.push(path);
                 for done in group {
-                    std::fs::remove_file(done).map_err(|e| format!("{}: {e}", done.display()))?;
+                    std::fs::remove_file(done).map_err(|e| SweepError::io(done, e))?;
                 }
             }
         }
@@ -84,7 +85,7 @@ impl SortedRuns {
     }
 
     /// Writes the buffered lines as a run, sorted by member, each member's first line once.
-    fn spill(&mut self) -> Result<(), String> {
+    fn spill(&mut self) -> Result<(), SweepError> {
         if self.lines.is_empty() {
             return Ok(());
         }
@@ -125,7 +126,7 @@ impl Drop for SortedRuns {
 
 /// Passes the lines of the sorted `runs` to `visit` in member order, each member once: of equal
 /// members, the one in the earliest run (runs are in journal order).
-fn merge_runs(runs: &[PathBuf], visit: VisitLine<'_>) -> Result<(), String> {
+fn merge_runs(runs: &[PathBuf], visit: VisitLine<'_>) -> Result<(), SweepError> {
     let mut readers = runs.iter().map(|p| RunReader::open(p)).collect::<Result<Vec<_>, _>>()?;
     let mut heads: Vec<Vec<u8>> = vec![Vec::new(); readers.len()];
     let mut heap = BinaryHeap::with_capacity(readers.len());
@@ -156,23 +157,23 @@ struct RunWriter {
 
 impl RunWriter {
     /// A new run file at `path` (never one that exists).
-    fn create(path: &Path) -> Result<RunWriter, String> {
+    fn create(path: &Path) -> Result<RunWriter, SweepError> {
         let file = File::options().write(true).create_new(true).open(path);
-        let file = file.map_err(|e| format!("{}: {e}", path.display()))?;
+        let file = file.map_err(|e| SweepError::io(path, e))?;
         Ok(RunWriter { path: path.to_path_buf(), out: BufWriter::new(file) })
     }
 
     /// Appends member `member`'s `line`.
-    fn write(&mut self, member: usize, line: &[u8]) -> Result<(), String> {
-        let fail = |e: std::io::Error| format!("{}: {e}", self.path.display());
+    fn write(&mut self, member: usize, line: &[u8]) -> Result<(), SweepError> {
+        let fail = |e: std::io::Error| SweepError::io(&self.path, e);
         self.out.write_all(&(member as u64).to_le_bytes()).map_err(fail)?;
         self.out.write_all(&(line.len() as u64).to_le_bytes()).map_err(fail)?;
         self.out.write_all(line).map_err(fail)
     }
 
     /// Writes out what is buffered.
-    fn finish(mut self) -> Result<(), String> {
-        self.out.flush().map_err(|e| format!("{}: {e}", self.path.display()))
+    fn finish(mut self) -> Result<(), SweepError> {
+        self.out.flush().map_err(|e| SweepError::io(&self.path, e))
     }
 }
 
@@ -185,27 +186,28 @@ struct RunReader {
 
 impl RunReader {
     /// Opens the run file at `path`.
-    fn open(path: &Path) -> Result<RunReader, String> {
-        let file = File::open(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    fn open(path: &Path) -> Result<RunReader, SweepError> {
+        let file = File::open(path).map_err(|e| SweepError::io(path, e))?;
         Ok(RunReader { path: path.to_path_buf(), input: BufReader::new(file), last: None })
     }
 
     /// The next record's member, its line put in `line`; `None` at the end.
-    fn next(&mut self, line: &mut Vec<u8>) -> Result<Option<usize>, String> {
+    fn next(&mut self, line: &mut Vec<u8>) -> Result<Option<usize>, SweepError> {
         use std::io::BufRead;
-        let fail = |what: String| format!("{}: {what}", self.path.display());
-        if self.input.fill_buf().map_err(|e| fail(e.to_string()))?.is_empty() {
+        let fail = |e: std::io::Error| SweepError::io(&self.path, e);
+        let damaged = || SweepError::DamagedRun { path: self.path.clone() };
+        if self.input.fill_buf().map_err(fail)?.is_empty() {
             return Ok(None);
         }
         let mut word = [0u8; 8];
-        self.input.read_exact(&mut word).map_err(|e| fail(e.to_string()))?;
-        let member = usize::try_from(u64::from_le_bytes(word)).map_err(|e| fail(e.to_string()))?;
-        self.input.read_exact(&mut word).map_err(|e| fail(e.to_string()))?;
-        let len = usize::try_from(u64::from_le_bytes(word)).map_err(|e| fail(e.to_string()))?;
+        self.input.read_exact(&mut word).map_err(fail)?;
+        let member = usize::try_from(u64::from_le_bytes(word)).map_err(|_| damaged())?;
+        self.input.read_exact(&mut word).map_err(fail)?;
+        let len = usize::try_from(u64::from_le_bytes(word)).map_err(|_| damaged())?;
         line.clear();
-        let read = (&mut self.input).take(len as u64).read_to_end(line).map_err(|e| fail(e.to_string()))?;
+        let read = (&mut self.input).take(len as u64).read_to_end(line).map_err(fail)?;
         if read != len || self.last.is_some_and(|last| member < last) {
-            return Err(fail("a damaged run file (cut short or out of order)".to_string()));
+            return Err(damaged());
         }
         self.last = Some(member);
         Ok(Some(member))

@@ -4,6 +4,8 @@
 
 use std::path::Path;
 
+use super::SweepError;
+
 /// One member's row.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SweepRow {
@@ -44,16 +46,16 @@ pub fn cells(row: &SweepRow, n_values: usize) -> Vec<String> {
 }
 
 /// The header and rows of a `sweep.csv` (empty when the file does not exist).
-pub fn read_rows(path: &Path) -> Result<(Vec<String>, Vec<Vec<String>>), String> {
+pub fn read_rows(path: &Path) -> Result<(Vec<String>, Vec<Vec<String>>), SweepError> {
     if !path.exists() {
         return Ok((Vec::new(), Vec::new()));
     }
-    let mut r = csv::Reader::from_path(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let header: Vec<String> =
-        r.headers().map_err(|e| format!("{}: {e}", path.display()))?.iter().map(String::from).collect();
+    let fail = |e: csv::Error| SweepError::csv(path, e);
+    let mut r = csv::Reader::from_path(path).map_err(fail)?;
+    let header: Vec<String> = r.headers().map_err(fail)?.iter().map(String::from).collect();
     let mut rows = Vec::new();
     for rec in r.records() {
-        let rec = rec.map_err(|e| format!("{}: {e}", path.display()))?;
+        let rec = rec.map_err(fail)?;
         rows.push(rec.iter().map(String::from).collect());
     }
     Ok((header, rows))
@@ -71,32 +73,29 @@ pub struct RowLines {
 
 impl RowLines {
     /// Opens `path` and reads its header; `None` when there is no such file.
-    pub fn open(path: &Path) -> Result<Option<RowLines>, String> {
+    pub fn open(path: &Path) -> Result<Option<RowLines>, SweepError> {
         use std::io::BufRead;
         let file = match std::fs::File::open(path) {
             Ok(f) => f,
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
-            Err(e) => return Err(format!("{}: {e}", path.display())),
+            Err(e) => return Err(SweepError::io(path, e)),
         };
         let mut reader = std::io::BufReader::new(file);
         let mut first = Vec::new();
-        reader.read_until(b'\n', &mut first).map_err(|e| format!("{}: {e}", path.display()))?;
+        reader.read_until(b'\n', &mut first).map_err(|e| SweepError::io(path, e))?;
         let mut r = csv::ReaderBuilder::new().has_headers(false).from_reader(first.as_slice());
         let header = match r.records().next() {
-            Some(rec) => {
-                rec.map_err(|e| format!("{}: {e}", path.display()))?.iter().map(String::from).collect()
-            }
+            Some(rec) => rec.map_err(|e| SweepError::csv(path, e))?.iter().map(String::from).collect(),
             None => Vec::new(),
         };
         Ok(Some(RowLines { path: path.to_path_buf(), reader, header, last: None }))
     }
 
     /// The next row's member and line; an error when rows are out of member order.
-    pub fn next_row(&mut self) -> Result<Option<(usize, Vec<u8>)>, String> {
+    pub fn next_row(&mut self) -> Result<Option<(usize, Vec<u8>)>, SweepError> {
         use std::io::BufRead;
         let mut line = Vec::new();
-        let n =
-            self.reader.read_until(b'\n', &mut line).map_err(|e| format!("{}: {e}", self.path.display()))?;
+        let n = self.reader.read_until(b'\n', &mut line).map_err(|e| SweepError::io(&self.path, e))?;
         if n == 0 {
             return Ok(None);
         }
@@ -110,23 +109,22 @@ impl RowLines {
                 self.last = Some(m);
                 Ok(Some((m, line)))
             }
-            Some(m) => Err(format!(
-                "{}: member {m} comes after member {}: rows must be in member order, each once",
-                self.path.display(),
-                self.last.unwrap_or_default()
-            )),
-            None => Err(format!(
-                "{}: a row without a member index: {}",
-                self.path.display(),
-                String::from_utf8_lossy(&line).trim_end()
-            )),
+            Some(member) => Err(SweepError::RowOrder {
+                path: self.path.clone(),
+                member,
+                after: self.last.unwrap_or_default(),
+            }),
+            None => Err(SweepError::NoMember {
+                path: self.path.clone(),
+                line: String::from_utf8_lossy(&line).trim_end().to_string(),
+            }),
         }
     }
 }
 
 /// One CSV record's bytes (newline included), as the rows files write it.
-pub fn record_bytes(cells: &[String]) -> Result<Vec<u8>, String> {
+pub fn record_bytes(cells: &[String]) -> Result<Vec<u8>, SweepError> {
     let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record(cells).map_err(|e| e.to_string())?;
-    w.into_inner().map_err(|e| e.to_string())
+    w.write_record(cells).map_err(SweepError::Record)?;
+    w.into_inner().map_err(|e| SweepError::Record(e.into_error().into()))
 }
