@@ -55,6 +55,7 @@ mod study;
 // The front door: everything outside the crate names these, and nothing else.
 pub use cli::{main_with, CompiledModel};
 pub use models::{content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, ModelFile, Registry};
+pub use ode::test_problems;
 pub use ode::{
     by_name, integrate, integrate_limited, tableau, DenseOutput, ErkStepper, Method, OdeError, Stats,
     StopReason, System, Tolerances, METHODS,

@@ -4,22 +4,15 @@
 
 use std::ops::ControlFlow;
 
+use gyro_sim::test_problems::{BlowUp, ClosedForm, Gaussian, Oscillator};
 use gyro_sim::{
-    by_name, integrate, integrate_limited, tableau, ErkStepper, Method, OdeError, StopReason, System,
-    Tolerances,
+    by_name, integrate, integrate_limited, tableau, ErkStepper, Method, OdeError, StopReason, Tolerances,
 };
 
-/// y1' = y2, y2' = -y1: y = (sin t, cos t).
-struct Oscillator;
-
-impl System for Oscillator {
-    fn dim(&self) -> usize {
-        2
-    }
-    fn rhs(&self, _: f64, y: &[f64], dy: &mut [f64]) {
-        dy[0] = y[1];
-        dy[1] = -y[0];
-    }
+/// The distance of `y` from the oscillator's solution through `(0, [0, 1])` at `t`.
+fn oscillator_error(t: f64, y: &[f64]) -> f64 {
+    let exact = Oscillator.solution(0.0, &[0.0, 1.0], t);
+    ((y[0] - exact[0]).powi(2) + (y[1] - exact[1]).powi(2)).sqrt()
 }
 
 fn error_at_one(method: Method) -> f64 {
@@ -29,7 +22,7 @@ fn error_at_one(method: Method) -> f64 {
         ControlFlow::Continue(())
     })
     .unwrap();
-    ((last[0] - 1f64.sin()).powi(2) + (last[1] - 1f64.cos()).powi(2)).sqrt()
+    oscillator_error(1.0, &last)
 }
 
 #[test]
@@ -68,18 +61,6 @@ fn each_tableau_is_consistent() {
             assert!((row.iter().sum::<f64>() - tab.c[i]).abs() < 1e-12, "{} row {i}", tab.name);
         }
         assert!((tab.b.iter().sum::<f64>() - 1.0).abs() < 1e-12, "{}", tab.name);
-    }
-}
-
-/// y' = y^2, y(0) = 1: y = 1 / (1 - t) blows up at t = 1.
-struct BlowUp;
-
-impl System for BlowUp {
-    fn dim(&self) -> usize {
-        1
-    }
-    fn rhs(&self, _: f64, y: &[f64], dy: &mut [f64]) {
-        dy[0] = y[0] * y[0];
     }
 }
 
@@ -132,18 +113,6 @@ fn dense_output_is_accurate_between_steps_and_saves_steps() {
     assert!(stats8.steps < 150, "dop853: {} steps for 1000 outputs", stats8.steps);
 }
 
-/// `y' = -2 t y`, `y = exp(-t^2)`: time enters the right-hand side, so every stage node counts.
-struct Gaussian;
-
-impl System for Gaussian {
-    fn dim(&self) -> usize {
-        1
-    }
-    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        dy[0] = -2.0 * t * y[0];
-    }
-}
-
 #[test]
 fn dop853_dense_output_converges_with_its_order() {
     // Interpolation error at 0.013-spaced output times shrinks with the tolerance like the
@@ -153,7 +122,7 @@ fn dop853_dense_output_converges_with_its_order() {
         let mut worst: f64 = 0.0;
         let m = Method::Adaptive(&tableau::DOP853, Tolerances { rtol: tol, atol: tol });
         let stats = integrate(&Gaussian, 0.0, &[1.0], &times, m, |t, y| {
-            worst = worst.max((y[0] - (-t * t).exp()).abs());
+            worst = worst.max((y[0] - Gaussian.solution(0.0, &[1.0], t)[0]).abs());
             ControlFlow::Continue(())
         })
         .unwrap();
@@ -405,7 +374,7 @@ fn error_at_ten(method: Method) -> f64 {
         ControlFlow::Continue(())
     })
     .unwrap();
-    ((last[0] - 10f64.sin()).powi(2) + (last[1] - 10f64.cos()).powi(2)).sqrt()
+    oscillator_error(10.0, &last)
 }
 
 #[test]
@@ -446,7 +415,7 @@ fn verner_dense_output_is_accurate_between_steps() {
             let mut worst: f64 = 0.0;
             let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
             let stats = integrate(&Gaussian, 0.0, &[1.0], &times, m, |t, y| {
-                worst = worst.max((y[0] - (-t * t).exp()).abs());
+                worst = worst.max((y[0] - Gaussian.solution(0.0, &[1.0], t)[0]).abs());
                 ControlFlow::Continue(())
             })
             .unwrap();

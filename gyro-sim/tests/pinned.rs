@@ -36,42 +36,14 @@ fn paper_cases_are_pinned() {
     insta::assert_snapshot!(lines.join("\n"));
 }
 
-mod problems {
-    use gyro_sim::System;
-
-    /// y1' = y2, y2' = -y1.
-    pub struct Oscillator;
-
-    impl System for Oscillator {
-        fn dim(&self) -> usize {
-            2
-        }
-        fn rhs(&self, _: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = y[1];
-            dy[1] = -y[0];
-        }
-    }
-
-    /// y' = -2 t y.
-    pub struct Gaussian;
-
-    impl System for Gaussian {
-        fn dim(&self) -> usize {
-            1
-        }
-        fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = -2.0 * t * y[0];
-        }
-    }
-}
-
 #[test]
 fn integrator_statistics_are_pinned() {
+    use gyro_sim::test_problems::{Gaussian, Oscillator};
     use gyro_sim::{integrate, tableau, Method, System, Tolerances};
     let times: Vec<f64> = (0..=100).map(|i| f64::from(i) * 0.1).collect();
     let mut lines = Vec::new();
     let problems: [(&str, &dyn System, &[f64]); 2] =
-        [("oscillator", &problems::Oscillator, &[0.0, 1.0]), ("gaussian", &problems::Gaussian, &[1.0])];
+        [("oscillator", &Oscillator, &[0.0, 1.0]), ("gaussian", &Gaussian, &[1.0])];
     for (name, sys, y0) in problems {
         for tab in [&tableau::DOPRI5, &tableau::DOP853] {
             for tol in [1e-6, 1e-9, 1e-12] {

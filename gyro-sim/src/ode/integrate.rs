@@ -85,20 +85,7 @@ fn integrate_n<S: System + ?Sized, const N: usize>(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A damped, driven pendulum pair: nonlinear, time-dependent, two components.
-    struct Pendulums;
-    impl System for Pendulums {
-        fn dim(&self) -> usize {
-            4
-        }
-        fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = y[2];
-            dy[1] = y[3];
-            dy[2] = -y[0].sin() - 0.1 * y[2] + 0.3 * (y[1] - y[0]) + 0.2 * t.cos();
-            dy[3] = -2.0 * y[1].sin() - 0.3 * (y[1] - y[0]);
-        }
-    }
+    use crate::ode::test_problems::Pendulums;
 
     #[test]
     fn unrolled_and_general_steps_give_identical_numbers() {

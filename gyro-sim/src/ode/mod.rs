@@ -21,6 +21,7 @@ mod stages;
 mod stepper;
 pub mod tableau;
 mod taylor;
+pub mod test_problems;
 mod unit_norm;
 mod watched;
 

@@ -275,57 +275,14 @@ fn check_finite(t: f64, y: &[f64]) -> Result<(), OdeError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ode::test_problems::{ClosedForm, NoStraightLine, Oscillator, WithoutTaylor};
     use crate::ode::{integrate, Method};
     use std::ops::ControlFlow;
 
-    /// `x' = v`, `v' = -x`: coefficients `c_{k+1} = A c_k / (k + 1)`; `x = x0 cos t + v0 sin t`.
-    struct Oscillator;
-    impl System for Oscillator {
-        fn dim(&self) -> usize {
-            2
-        }
-        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = y[1];
-            dy[1] = -y[0];
-        }
-        fn taylor(&self, _t: f64, y: &[f64], order: usize, out: &mut [f64], _w: &mut TaylorWork) -> bool {
-            let n1 = order + 1;
-            (out[0], out[n1]) = (y[0], y[1]);
-            for k in 0..order {
-                let kk = (k + 1) as f64;
-                (out[k + 1], out[n1 + k + 1]) = (out[n1 + k] / kk, -out[k] / kk);
-            }
-            true
-        }
-        fn taylor_straight_line(&self) -> &[usize] {
-            kane_model::runtime::TAYLOR_UNROLLED_ORDERS
-        }
-    }
-
     /// The oscillator computing every order alike (no straight-line orders).
-    struct LoopOnly;
-    impl System for LoopOnly {
-        fn dim(&self) -> usize {
-            2
-        }
-        fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-            Oscillator.rhs(t, y, dy)
-        }
-        fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], w: &mut TaylorWork) -> bool {
-            Oscillator.taylor(t, y, order, out, w)
-        }
-    }
-
+    const LOOP_ONLY: NoStraightLine<Oscillator> = NoStraightLine(Oscillator);
     /// The same equations without Taylor coefficients.
-    struct Plain;
-    impl System for Plain {
-        fn dim(&self) -> usize {
-            2
-        }
-        fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-            Oscillator.rhs(t, y, dy)
-        }
-    }
+    const PLAIN: WithoutTaylor<Oscillator> = WithoutTaylor(Oscillator);
 
     fn run(tol: f64, times: &[f64]) -> (Vec<Vec<f64>>, Stats) {
         let mut rows = Vec::new();
@@ -344,7 +301,7 @@ mod tests {
         for tol in [1e-6, 1e-9, 1e-12, 1e-15] {
             let (rows, stats) = run(tol, &times);
             let worst = times.iter().zip(&rows).fold(0.0f64, |m, (t, y)| {
-                let x = t.cos() + 0.5 * t.sin();
+                let x = Oscillator.solution(0.0, &[1.0, 0.5], *t)[0];
                 m.max((y[0] - x).abs())
             });
             // 20 time units: the global error is a few steps' local errors.
@@ -393,7 +350,7 @@ mod tests {
     #[test]
     fn a_system_without_straight_line_orders_takes_the_order_it_needs() {
         let tol = Tolerances { rtol: 1e-12, atol: 1e-12 };
-        let mut s = TaylorStepper::new(&LoopOnly, 0.0, &[1.0, 0.0], tol).unwrap();
+        let mut s = TaylorStepper::new(&LOOP_ONLY, 0.0, &[1.0, 0.0], tol).unwrap();
         // -ln(1e-12) / 2 + 1 + ORDER_LEAD = 18.8, rounded.
         assert_eq!(s.order, 19);
         s.set_stop_time(2.0);
@@ -406,11 +363,11 @@ mod tests {
     #[test]
     fn a_system_without_coefficients_is_a_clear_error() {
         let method = Method::Taylor(Tolerances { rtol: 1e-9, atol: 1e-9 });
-        let err = integrate(&Plain, 0.0, &[1.0, 0.0], &[1.0], method, |_, _| ControlFlow::Continue(()))
+        let err = integrate(&PLAIN, 0.0, &[1.0, 0.0], &[1.0], method, |_, _| ControlFlow::Continue(()))
             .unwrap_err();
         assert_eq!(err, OdeError::NoTaylorCoefficients);
         assert!(err.to_string().contains("use another method"), "{err}");
-        let erk = crate::ode::ErkStepper::new(&Plain, 0.0, &[1.0, 0.0], method);
+        let erk = crate::ode::ErkStepper::new(&PLAIN, 0.0, &[1.0, 0.0], method);
         assert!(matches!(erk, Err(OdeError::NotRungeKutta)));
     }
 }

@@ -53,19 +53,8 @@ pub fn integrate_watched<S: System + ?Sized>(
 mod tests {
     use super::*;
     use crate::ode::tableau::DOP853;
+    use crate::ode::test_problems::Oscillator as Spring;
     use crate::ode::{integrate, Tolerances};
-
-    /// `y'' = -y`: a harmonic oscillator.
-    struct Spring;
-    impl System for Spring {
-        fn dim(&self) -> usize {
-            2
-        }
-        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = y[1];
-            dy[1] = -y[0];
-        }
-    }
 
     #[test]
     fn watching_changes_neither_steps_nor_outputs_and_a_stop_ends_the_run() {
