@@ -5,7 +5,11 @@
 use std::path::Path;
 use std::process::Command;
 
+use std::ops::ControlFlow;
+
 use gyro_sim::content_hash as fnv1a;
+use gyro_sim::test_problems::{Gaussian, Oscillator};
+use gyro_sim::{integrate, integrate_watched, tableau, Method, Stats, Stepping, System, Tolerances};
 
 /// Runs a scene with the command; returns its statistics line and the CSV's hash.
 fn run_scene(scene: &str) -> String {
@@ -36,41 +40,101 @@ fn paper_cases_are_pinned() {
     insta::assert_snapshot!(lines.join("\n"));
 }
 
+/// The integrator pins' problems: a name, the system and its start (at `t = 0`).
+fn problems() -> [(&'static str, &'static dyn System, &'static [f64]); 2] {
+    [("oscillator", &Oscillator, &[0.0, 1.0]), ("gaussian", &Gaussian, &[1.0])]
+}
+
+/// Integrates `sys` from `(0, y0)` through `0, 0.1, ..., 10` with `method`: the cost and a hash
+/// of every output value's bits.
+fn pinned_run(sys: &dyn System, y0: &[f64], method: Method) -> (Stats, String) {
+    let times: Vec<f64> = (0..=100).map(|i| f64::from(i) * 0.1).collect();
+    let mut bits = Vec::new();
+    let s = integrate(sys, 0.0, y0, &times, method, |_, y| {
+        bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
+        ControlFlow::Continue(())
+    })
+    .unwrap();
+    (s, fnv1a(&bits))
+}
+
+/// The pin of an adaptive run: its name, steps, rejections, evaluations and values' hash.
+fn adaptive_line(label: &str, sys: &dyn System, y0: &[f64], method: Method) -> String {
+    let (s, hash) = pinned_run(sys, y0, method);
+    format!("{label}: {} steps, {} rejected, {} evaluations, fnv1a {hash}", s.steps, s.rejected, s.rhs_evals)
+}
+
+/// Tolerances with `rtol = atol = tol`.
+fn tolerances(tol: f64) -> Tolerances {
+    Tolerances { rtol: tol, atol: tol }
+}
+
 #[test]
 fn integrator_statistics_are_pinned() {
-    use gyro_sim::test_problems::{Gaussian, Oscillator};
-    use gyro_sim::{integrate, tableau, Method, System, Tolerances};
-    let times: Vec<f64> = (0..=100).map(|i| f64::from(i) * 0.1).collect();
     let mut lines = Vec::new();
-    let problems: [(&str, &dyn System, &[f64]); 2] =
-        [("oscillator", &Oscillator, &[0.0, 1.0]), ("gaussian", &Gaussian, &[1.0])];
-    for (name, sys, y0) in problems {
+    for (name, sys, y0) in problems() {
         for tab in [&tableau::DOPRI5, &tableau::DOP853] {
             for tol in [1e-6, 1e-9, 1e-12] {
-                let mut bits = Vec::new();
-                let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
-                let s = integrate(sys, 0.0, y0, &times, m, |_, y| {
-                    bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
-                    std::ops::ControlFlow::Continue(())
-                })
-                .unwrap();
-                lines.push(format!(
-                    "{name} {} {tol:e}: {} steps, {} rejected, {} evaluations, fnv1a {}",
-                    tab.name,
-                    s.steps,
-                    s.rejected,
-                    s.rhs_evals,
-                    fnv1a(&bits)
-                ));
+                let m = Method::Adaptive(tab, tolerances(tol));
+                lines.push(adaptive_line(&format!("{name} {} {tol:e}", tab.name), sys, y0, m));
             }
         }
-        let mut bits = Vec::new();
-        let s = integrate(sys, 0.0, y0, &times, Method::Fixed(&tableau::RK4, 0.03), |_, y| {
+        let (s, hash) = pinned_run(sys, y0, Method::Fixed(&tableau::RK4, 0.03));
+        lines.push(format!("{name} rk4 0.03: {} steps, fnv1a {hash}", s.steps));
+    }
+    insta::assert_snapshot!(lines.join("\n"));
+}
+
+#[test]
+fn verner_and_taylor_statistics_are_pinned() {
+    let mut lines = Vec::new();
+    for (name, sys, y0) in problems() {
+        for tol in [1e-6, 1e-9, 1e-12] {
+            for tab in [&tableau::VERN7, &tableau::VERN9] {
+                let m = Method::Adaptive(tab, tolerances(tol));
+                lines.push(adaptive_line(&format!("{name} {} {tol:e}", tab.name), sys, y0, m));
+            }
+            let m = Method::Taylor(tolerances(tol));
+            lines.push(adaptive_line(&format!("{name} taylor {tol:e}"), sys, y0, m));
+        }
+    }
+    insta::assert_snapshot!(lines.join("\n"));
+}
+
+/// A watched run of the oscillator stopped by its watcher at `t = 5` (the first step past it):
+/// the steps the watcher saw (their ends' and midpoints' bits hashed), the outputs, the cost and
+/// where it stopped.
+#[test]
+fn watched_runs_are_pinned() {
+    let times: Vec<f64> = (0..=100).map(|i| f64::from(i) * 0.1).collect();
+    let mut lines = Vec::new();
+    let methods = [
+        ("dop853", Method::Adaptive(&tableau::DOP853, tolerances(1e-9))),
+        ("taylor", Method::Taylor(tolerances(1e-9))),
+    ];
+    for (label, m) in methods {
+        let (mut seen, mut bits) = (Vec::new(), Vec::new());
+        let mut mid = [0.0; 2];
+        let watch = |s: &dyn Stepping| {
+            s.interpolate(0.5 * (s.step_start() + s.t()), &mut mid).unwrap();
+            seen.extend([s.t(), mid[0], mid[1]].iter().flat_map(|v| v.to_bits().to_le_bytes()));
+            (s.t() > 5.0).then_some(5.0)
+        };
+        let out = |_: f64, y: &[f64]| {
             bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
-            std::ops::ControlFlow::Continue(())
-        })
-        .unwrap();
-        lines.push(format!("{name} rk4 0.03: {} steps, fnv1a {}", s.steps, fnv1a(&bits)));
+            ControlFlow::Continue(())
+        };
+        let run = integrate_watched(&Oscillator, 0.0, &[0.0, 1.0], &times, m, 1000, watch, out).unwrap();
+        let (s, stop) = (run.stats, run.stopped_at);
+        lines.push(format!(
+            "{label} 1e-9: {} steps, {} rejected, {} evaluations, stopped at {stop:?}, {} outputs, fnv1a {} steps {}",
+            s.steps,
+            s.rejected,
+            s.rhs_evals,
+            bits.len() / 16,
+            fnv1a(&bits),
+            fnv1a(&seen)
+        ));
     }
     insta::assert_snapshot!(lines.join("\n"));
 }
