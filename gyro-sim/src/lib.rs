@@ -57,8 +57,8 @@ pub use cli::{main_with, CompiledModel};
 pub use models::{content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, ModelFile, Registry};
 pub use ode::test_problems;
 pub use ode::{
-    by_name, integrate, integrate_limited, integrate_watched, tableau, DenseOutput, ErkStepper, Method,
-    OdeError, Stats, Stepping, StopReason, System, Tolerances, METHODS,
+    by_name, tableau, DenseOutput, ErkStepper, Integration, Method, OdeError, Outcome, Stats, Stepper,
+    StopReason, System, TaylorStepper, Tolerances, Unwatched, METHODS,
 };
 pub use output::{write, write_view};
 pub use problem::{Column, Engine, ModelEntry, Pick, Problem, Trajectory, MAX_KEPT_ROWS};

@@ -9,7 +9,7 @@ use std::ops::ControlFlow;
 
 use gyro_sim::content_hash as fnv1a;
 use gyro_sim::test_problems::{Gaussian, Oscillator};
-use gyro_sim::{integrate, integrate_watched, tableau, Method, Stats, Stepping, System, Tolerances};
+use gyro_sim::{tableau, Integration, Method, Stats, Stepper, StopReason, System, Tolerances};
 
 /// Runs a scene with the command; returns its statistics line and the CSV's hash.
 fn run_scene(scene: &str) -> String {
@@ -50,11 +50,13 @@ fn problems() -> [(&'static str, &'static dyn System, &'static [f64]); 2] {
 fn pinned_run(sys: &dyn System, y0: &[f64], method: Method) -> (Stats, String) {
     let times: Vec<f64> = (0..=100).map(|i| f64::from(i) * 0.1).collect();
     let mut bits = Vec::new();
-    let s = integrate(sys, 0.0, y0, &times, method, |_, y| {
-        bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
-        ControlFlow::Continue(())
-    })
-    .unwrap();
+    let s = Integration::new(sys, 0.0, y0, method)
+        .run(&times, |_, y| {
+            bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
+            ControlFlow::Continue(())
+        })
+        .unwrap()
+        .stats;
     (s, fnv1a(&bits))
 }
 
@@ -115,17 +117,27 @@ fn watched_runs_are_pinned() {
     for (label, m) in methods {
         let (mut seen, mut bits) = (Vec::new(), Vec::new());
         let mut mid = [0.0; 2];
-        let watch = |s: &dyn Stepping| {
+        let watch = |s: &dyn Stepper| {
             s.interpolate(0.5 * (s.step_start() + s.t()), &mut mid).unwrap();
             seen.extend([s.t(), mid[0], mid[1]].iter().flat_map(|v| v.to_bits().to_le_bytes()));
-            (s.t() > 5.0).then_some(5.0)
+            if s.t() > 5.0 {
+                ControlFlow::Break(5.0)
+            } else {
+                ControlFlow::Continue(())
+            }
         };
         let out = |_: f64, y: &[f64]| {
             bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
             ControlFlow::Continue(())
         };
-        let run = integrate_watched(&Oscillator, 0.0, &[0.0, 1.0], &times, m, 1000, watch, out).unwrap();
-        let (s, stop) = (run.stats, run.stopped_at);
+        let run =
+            Integration::new(&Oscillator, 0.0, &[0.0, 1.0], m).max_steps(1000).watch(watch).run(&times, out);
+        let (s, reason) = run.map(|run| (run.stats, run.reason)).unwrap();
+        // The pin says where it stopped as the event's time.
+        let stop = match reason {
+            StopReason::Event { time } => Some(time),
+            _ => None,
+        };
         lines.push(format!(
             "{label} 1e-9: {} steps, {} rejected, {} evaluations, stopped at {stop:?}, {} outputs, fnv1a {} steps {}",
             s.steps,
