@@ -15,7 +15,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use gyro_sim::final_states;
 use gyro_sim::gimbal_gyroscope as gimbal;
 use gyro_sim::ModelSystem;
-use gyro_sim::{integrate, tableau, Method, Tolerances};
+use gyro_sim::{tableau, Integration, Method, Tolerances};
 use kane_model::runtime::GeneratedModel;
 
 const MEMBERS: usize = 256;
@@ -53,11 +53,13 @@ fn scalar(members: &[(gimbal::Params, Vec<f64>)], tol: f64) -> (Vec<Vec<f64>>, u
         .map(|(p, y0)| {
             let sys = ModelSystem::<gimbal::Model>::new(p.clone());
             let mut end = Vec::new();
-            let stats = integrate(&sys, 0.0, y0, &[T_END], method, |_, y| {
-                end = y.to_vec();
-                ControlFlow::Continue(())
-            })
-            .unwrap();
+            let stats = Integration::new(&sys, 0.0, y0, method)
+                .run(&[T_END], |_, y| {
+                    end = y.to_vec();
+                    ControlFlow::Continue(())
+                })
+                .unwrap()
+                .stats;
             evals += stats.rhs_evals;
             end
         })

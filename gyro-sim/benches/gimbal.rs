@@ -11,7 +11,7 @@ use std::ops::ControlFlow;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use gyro_sim::gimbal_gyroscope as gimbal;
-use gyro_sim::{integrate, tableau, Method, Tolerances};
+use gyro_sim::{tableau, Integration, Method, Tolerances};
 use gyro_sim::{ModelSystem, Reduced};
 use kane_model::runtime::GeneratedModel;
 
@@ -37,15 +37,17 @@ fn run(method: Method, reference: &[Vec<f64>]) -> (usize, f64) {
     let (sys, y0, times) = trial3();
     let mut worst: f64 = 0.0;
     let mut k = 0;
-    let stats = integrate(&sys, 0.0, &y0, &times, method, |_, y| {
-        for i in 0..6 {
-            let want = reference[k][i + 1];
-            worst = worst.max((y[i] - want).abs() / want.abs().max(1.0));
-        }
-        k += 1;
-        ControlFlow::Continue(())
-    })
-    .unwrap();
+    let stats = Integration::new(&sys, 0.0, &y0, method)
+        .run(&times, |_, y| {
+            for i in 0..6 {
+                let want = reference[k][i + 1];
+                worst = worst.max((y[i] - want).abs() / want.abs().max(1.0));
+            }
+            k += 1;
+            ControlFlow::Continue(())
+        })
+        .unwrap()
+        .stats;
     (stats.rhs_evals, worst)
 }
 
@@ -129,15 +131,17 @@ fn run_reduced<S: gyro_sim::System>(sys: &S, tol: f64, reference: &[Vec<f64>]) -
     let mut worst: f64 = 0.0;
     let mut row = 0;
     let m = Method::Adaptive(&tableau::DOP853, Tolerances { rtol: tol, atol: tol });
-    let stats = integrate(sys, 0.0, &y_red, &times, m, |_, y| {
-        for (i, k) in keep.iter().enumerate() {
-            let want = reference[row][k + 1];
-            worst = worst.max((y[i] - want).abs() / want.abs().max(1.0));
-        }
-        row += 1;
-        ControlFlow::Continue(())
-    })
-    .unwrap();
+    let stats = Integration::new(sys, 0.0, &y_red, m)
+        .run(&times, |_, y| {
+            for (i, k) in keep.iter().enumerate() {
+                let want = reference[row][k + 1];
+                worst = worst.max((y[i] - want).abs() / want.abs().max(1.0));
+            }
+            row += 1;
+            ControlFlow::Continue(())
+        })
+        .unwrap()
+        .stats;
     (stats.rhs_evals, worst)
 }
 
@@ -233,12 +237,13 @@ fn trajectory(method: Method) -> Vec<Vec<f64>> {
     let (sys, y0, times) = trial3();
     let mut rows = Vec::new();
     let mut k = 0;
-    integrate(&sys, 0.0, &y0, &times, method, |_, y| {
-        rows.push([&[times[k]][..], y].concat());
-        k += 1;
-        ControlFlow::Continue(())
-    })
-    .unwrap();
+    Integration::new(&sys, 0.0, &y0, method)
+        .run(&times, |_, y| {
+            rows.push([&[times[k]][..], y].concat());
+            k += 1;
+            ControlFlow::Continue(())
+        })
+        .unwrap();
     rows
 }
 

@@ -56,9 +56,10 @@ pub use cli::{main_with, CompiledModel};
 pub use models::{
     content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, ModelFile, ModelFileError, Registry,
 };
+pub use ode::test_problems;
 pub use ode::{
-    by_name, integrate, integrate_limited, tableau, DenseOutput, ErkStepper, Method, OdeError, Stats,
-    StopReason, System, Tolerances, METHODS,
+    by_name, tableau, DenseOutput, ErkStepper, Integration, Method, OdeError, Outcome, Stats, Stepper,
+    StopReason, System, TaylorStepper, TaylorWork, Tolerances, Unwatched, METHODS,
 };
 pub use output::{write, write_view, PlotError, SetError, WriteError};
 pub use problem::{

@@ -6,7 +6,7 @@ use std::ops::ControlFlow;
 use gyro_sim::final_states;
 use gyro_sim::gimbal_gyroscope as gimbal;
 use gyro_sim::ModelSystem;
-use gyro_sim::{integrate, tableau, Method, OdeError, Tolerances};
+use gyro_sim::{tableau, Integration, Method, OdeError, Tolerances};
 use kane_model::runtime::GeneratedModel;
 
 fn members() -> Vec<(gimbal::Params, Vec<f64>)> {
@@ -24,11 +24,12 @@ fn alone(p: &gimbal::Params, y0: &[f64], tol: f64) -> Vec<f64> {
     let sys = ModelSystem::<gimbal::Model>::new(p.clone());
     let mut end = Vec::new();
     let method = Method::Adaptive(&tableau::DOP853, Tolerances { rtol: tol, atol: tol });
-    integrate(&sys, 0.0, y0, &[2.0], method, |_, y| {
-        end = y.to_vec();
-        ControlFlow::Continue(())
-    })
-    .unwrap();
+    Integration::new(&sys, 0.0, y0, method)
+        .run(&[2.0], |_, y| {
+            end = y.to_vec();
+            ControlFlow::Continue(())
+        })
+        .unwrap();
     end
 }
 

@@ -4,32 +4,26 @@
 
 use std::ops::ControlFlow;
 
+use gyro_sim::test_problems::{BlowUp, ClosedForm, Gaussian, Oscillator};
 use gyro_sim::{
-    by_name, integrate, integrate_limited, tableau, ErkStepper, Method, OdeError, StopReason, System,
-    Tolerances,
+    by_name, tableau, ErkStepper, Integration, Method, OdeError, Stepper, StopReason, Tolerances,
 };
 
-/// y1' = y2, y2' = -y1: y = (sin t, cos t).
-struct Oscillator;
-
-impl System for Oscillator {
-    fn dim(&self) -> usize {
-        2
-    }
-    fn rhs(&self, _: f64, y: &[f64], dy: &mut [f64]) {
-        dy[0] = y[1];
-        dy[1] = -y[0];
-    }
+/// The distance of `y` from the oscillator's solution through `(0, [0, 1])` at `t`.
+fn oscillator_error(t: f64, y: &[f64]) -> f64 {
+    let exact = Oscillator.solution(0.0, &[0.0, 1.0], t);
+    ((y[0] - exact[0]).powi(2) + (y[1] - exact[1]).powi(2)).sqrt()
 }
 
 fn error_at_one(method: Method) -> f64 {
     let mut last = [0.0; 2];
-    integrate(&Oscillator, 0.0, &[0.0, 1.0], &[1.0], method, |_, y| {
-        last.copy_from_slice(y);
-        ControlFlow::Continue(())
-    })
-    .unwrap();
-    ((last[0] - 1f64.sin()).powi(2) + (last[1] - 1f64.cos()).powi(2)).sqrt()
+    Integration::new(&Oscillator, 0.0, &[0.0, 1.0], method)
+        .run(&[1.0], |_, y| {
+            last.copy_from_slice(y);
+            ControlFlow::Continue(())
+        })
+        .unwrap();
+    oscillator_error(1.0, &last)
 }
 
 #[test]
@@ -71,37 +65,23 @@ fn each_tableau_is_consistent() {
     }
 }
 
-/// y' = y^2, y(0) = 1: y = 1 / (1 - t) blows up at t = 1.
-struct BlowUp;
-
-impl System for BlowUp {
-    fn dim(&self) -> usize {
-        1
-    }
-    fn rhs(&self, _: f64, y: &[f64], dy: &mut [f64]) {
-        dy[0] = y[0] * y[0];
-    }
-}
-
 #[test]
 fn blow_up_is_an_error_not_a_hang() {
-    let r = integrate(
+    let r = Integration::new(
         &BlowUp,
         0.0,
         &[1.0],
-        &[2.0],
         Method::Adaptive(&tableau::DOPRI5, Tolerances { rtol: 1e-8, atol: 1e-8 }),
-        |_, _| ControlFlow::Continue(()),
-    );
+    )
+    .run(&[2.0], |_, _| ControlFlow::Continue(()));
     match r {
         Err(OdeError::StepSizeUnderflow { time, .. }) | Err(OdeError::NonFinite { time, .. }) => {
             assert!((time - 1.0).abs() < 1e-2, "stopped at {time}")
         }
         other => panic!("expected an error near t = 1, got {other:?}"),
     }
-    let r = integrate(&BlowUp, 0.0, &[1.0], &[2.0], Method::Fixed(&tableau::RK4, 0.01), |_, _| {
-        ControlFlow::Continue(())
-    });
+    let r = Integration::new(&BlowUp, 0.0, &[1.0], Method::Fixed(&tableau::RK4, 0.01))
+        .run(&[2.0], |_, _| ControlFlow::Continue(()));
     assert!(matches!(r, Err(OdeError::NonFinite { .. })), "{r:?}");
 }
 
@@ -112,36 +92,26 @@ fn dense_output_is_accurate_between_steps_and_saves_steps() {
     let times: Vec<f64> = (0..=1000).map(|i| i as f64 * 0.01).collect();
     let tol = Tolerances { rtol: 1e-9, atol: 1e-9 };
     let mut worst: f64 = 0.0;
-    let stats =
-        integrate(&Oscillator, 0.0, &[0.0, 1.0], &times, Method::Adaptive(&tableau::DOPRI5, tol), |t, y| {
+    let stats = Integration::new(&Oscillator, 0.0, &[0.0, 1.0], Method::Adaptive(&tableau::DOPRI5, tol))
+        .run(&times, |t, y| {
             worst = worst.max((y[0] - t.sin()).abs()).max((y[1] - t.cos()).abs());
             ControlFlow::Continue(())
         })
-        .unwrap();
+        .unwrap()
+        .stats;
     assert!(worst < 1e-7, "largest error {worst:e}");
     assert!(stats.steps < 400, "{} steps for 1000 outputs", stats.steps);
     // DOP853's septic interpolant: as accurate between steps as at them, in a few dozen steps.
     let mut worst8: f64 = 0.0;
-    let stats8 =
-        integrate(&Oscillator, 0.0, &[0.0, 1.0], &times, Method::Adaptive(&tableau::DOP853, tol), |t, y| {
+    let stats8 = Integration::new(&Oscillator, 0.0, &[0.0, 1.0], Method::Adaptive(&tableau::DOP853, tol))
+        .run(&times, |t, y| {
             worst8 = worst8.max((y[0] - t.sin()).abs()).max((y[1] - t.cos()).abs());
             ControlFlow::Continue(())
         })
-        .unwrap();
+        .unwrap()
+        .stats;
     assert!(worst8 < 1e-8, "dop853 largest error {worst8:e}");
     assert!(stats8.steps < 150, "dop853: {} steps for 1000 outputs", stats8.steps);
-}
-
-/// `y' = -2 t y`, `y = exp(-t^2)`: time enters the right-hand side, so every stage node counts.
-struct Gaussian;
-
-impl System for Gaussian {
-    fn dim(&self) -> usize {
-        1
-    }
-    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        dy[0] = -2.0 * t * y[0];
-    }
 }
 
 #[test]
@@ -152,11 +122,13 @@ fn dop853_dense_output_converges_with_its_order() {
     let run = |tol: f64| {
         let mut worst: f64 = 0.0;
         let m = Method::Adaptive(&tableau::DOP853, Tolerances { rtol: tol, atol: tol });
-        let stats = integrate(&Gaussian, 0.0, &[1.0], &times, m, |t, y| {
-            worst = worst.max((y[0] - (-t * t).exp()).abs());
-            ControlFlow::Continue(())
-        })
-        .unwrap();
+        let stats = Integration::new(&Gaussian, 0.0, &[1.0], m)
+            .run(&times, |t, y| {
+                worst = worst.max((y[0] - Gaussian.solution(0.0, &[1.0], t)[0]).abs());
+                ControlFlow::Continue(())
+            })
+            .unwrap()
+            .stats;
         (worst, stats.steps)
     };
     let (e6, s6) = run(1e-6);
@@ -166,18 +138,20 @@ fn dop853_dense_output_converges_with_its_order() {
     assert!(e10 < 2e-9 && e10 < e6 * 1e-2, "tol 1e-10: error {e10:e} (tol 1e-6: {e6:e})");
 }
 
-/// Output times through `integrate`: the values and the cost, stopping after `limit` outputs.
-fn through_integrate(method: Method, times: &[f64], limit: usize) -> (Vec<[f64; 2]>, gyro_sim::Stats) {
+/// Output times through an `Integration`: the values and the cost, stopping after `limit` outputs.
+fn through_integration(method: Method, times: &[f64], limit: usize) -> (Vec<[f64; 2]>, gyro_sim::Stats) {
     let mut rows = Vec::new();
-    let stats = integrate(&Oscillator, 0.0, &[0.0, 1.0], times, method, |_, y| {
-        rows.push([y[0], y[1]]);
-        if rows.len() == limit {
-            ControlFlow::Break(())
-        } else {
-            ControlFlow::Continue(())
-        }
-    })
-    .unwrap();
+    let stats = Integration::new(&Oscillator, 0.0, &[0.0, 1.0], method)
+        .run(times, |_, y| {
+            rows.push([y[0], y[1]]);
+            if rows.len() == limit {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        })
+        .unwrap()
+        .stats;
     (rows, stats)
 }
 
@@ -208,17 +182,17 @@ fn through_stepper(method: Method, times: &[f64], limit: usize) -> (Vec<[f64; 2]
 }
 
 #[test]
-fn the_stepper_by_hand_gives_integrate_s_numbers() {
+fn the_stepper_by_hand_gives_the_integration_s_numbers() {
     let times: Vec<f64> = (0..=500).map(|i| f64::from(i) * 0.02).collect();
     let tol = Tolerances { rtol: 1e-9, atol: 1e-9 };
     for tab in [&tableau::DOPRI5, &tableau::DOP853, &tableau::VERN7, &tableau::VERN9] {
         let m = Method::Adaptive(tab, tol);
-        let (by_integrate, stats) = through_integrate(m, &times, usize::MAX);
+        let (by_integration, stats) = through_integration(m, &times, usize::MAX);
         let (by_hand, hand_stats) = through_stepper(m, &times, usize::MAX);
-        assert_eq!(by_integrate.len(), times.len());
+        assert_eq!(by_integration.len(), times.len());
         assert_eq!(stats, hand_stats, "{}", tab.name);
         let bits = |rows: &[[f64; 2]]| rows.iter().flatten().map(|v| v.to_bits()).collect::<Vec<_>>();
-        assert_eq!(bits(&by_integrate), bits(&by_hand), "{}", tab.name);
+        assert_eq!(bits(&by_integration), bits(&by_hand), "{}", tab.name);
         // Most outputs fall inside steps: the interpolant did the work.
         assert!(stats.steps < times.len(), "{}: {} steps", tab.name, stats.steps);
     }
@@ -263,14 +237,14 @@ fn the_stepper_lands_on_its_stop_time() {
 fn breaking_early_is_ok_with_the_cost_so_far() {
     let times: Vec<f64> = (0..=50).map(|i| f64::from(i) * 0.2).collect();
     let m = Method::Adaptive(&tableau::DOP853, Tolerances { rtol: 1e-9, atol: 1e-9 });
-    let (all, full) = through_integrate(m, &times, usize::MAX);
-    let (some, partial) = through_integrate(m, &times, 10);
+    let (all, full) = through_integration(m, &times, usize::MAX);
+    let (some, partial) = through_integration(m, &times, 10);
     assert_eq!(some.len(), 10);
     assert_eq!(some[..], all[..10]);
     assert!(0 < partial.steps && partial.steps < full.steps, "{partial:?} vs {full:?}");
     assert_eq!(partial, through_stepper(m, &times, 10).1);
     // Landing on every output time (fixed steps) stops as early.
-    let (rows, stats) = through_integrate(Method::Fixed(&tableau::RK4, 0.05), &times, 3);
+    let (rows, stats) = through_integration(Method::Fixed(&tableau::RK4, 0.05), &times, 3);
     assert_eq!((rows.len(), stats.steps), (3, 8));
 }
 
@@ -347,7 +321,7 @@ fn steppers_check_dimensions_and_the_start() {
 fn the_step_limit_stops_inside_an_output_interval() {
     let never = |_: f64, _: &[f64]| -> ControlFlow<()> { panic!("no output time is reached") };
     let rk4 = Method::Fixed(&tableau::RK4, 1e-9);
-    let r = integrate_limited(&Oscillator, 0.0, &[0.0, 1.0], &[1.0], rk4, 1000, never);
+    let r = Integration::new(&Oscillator, 0.0, &[0.0, 1.0], rk4).max_steps(1000).run(&[1.0], never);
     match r {
         Err(e @ OdeError::TooManySteps { time, max: 1000 }) => {
             assert!((time - 1e-6).abs() < 1e-12, "stopped at {time}");
@@ -358,7 +332,7 @@ fn the_step_limit_stops_inside_an_output_interval() {
         other => panic!("expected the step limit, got {other:?}"),
     }
     let tight = Method::Adaptive(&tableau::DOPRI5, Tolerances { rtol: 1e-12, atol: 1e-12 });
-    let r = integrate_limited(&Oscillator, 0.0, &[0.0, 1.0], &[100.0], tight, 50, never);
+    let r = Integration::new(&Oscillator, 0.0, &[0.0, 1.0], tight).max_steps(50).run(&[100.0], never);
     assert!(matches!(r, Err(OdeError::TooManySteps { max: 50, .. })), "{r:?}");
     // The stepper alone: exactly the limit is allowed, one more is not.
     let mut stepper =
@@ -374,7 +348,8 @@ fn the_step_limit_stops_inside_an_output_interval() {
 #[test]
 fn a_fixed_step_below_the_time_resolution_underflows() {
     let rk4 = Method::Fixed(&tableau::RK4, 1e-30);
-    let r = integrate(&Oscillator, 1.0, &[0.0, 1.0], &[2.0], rk4, |_, _| ControlFlow::Continue(()));
+    let r =
+        Integration::new(&Oscillator, 1.0, &[0.0, 1.0], rk4).run(&[2.0], |_, _| ControlFlow::Continue(()));
     assert!(matches!(r, Err(OdeError::StepSizeUnderflow { time, .. }) if time == 1.0), "{r:?}");
 }
 
@@ -400,12 +375,13 @@ fn one_step_errors(tab: &'static tableau::Tableau, h: f64) -> (f64, f64) {
 /// The error at `t = 10` of [`Oscillator`] (ten periods' worth of steps more than at 1).
 fn error_at_ten(method: Method) -> f64 {
     let mut last = [0.0; 2];
-    integrate(&Oscillator, 0.0, &[0.0, 1.0], &[10.0], method, |_, y| {
-        last.copy_from_slice(y);
-        ControlFlow::Continue(())
-    })
-    .unwrap();
-    ((last[0] - 10f64.sin()).powi(2) + (last[1] - 10f64.cos()).powi(2)).sqrt()
+    Integration::new(&Oscillator, 0.0, &[0.0, 1.0], method)
+        .run(&[10.0], |_, y| {
+            last.copy_from_slice(y);
+            ControlFlow::Continue(())
+        })
+        .unwrap();
+    oscillator_error(10.0, &last)
 }
 
 #[test]
@@ -445,11 +421,13 @@ fn verner_dense_output_is_accurate_between_steps() {
         let run = |tol: f64| {
             let mut worst: f64 = 0.0;
             let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
-            let stats = integrate(&Gaussian, 0.0, &[1.0], &times, m, |t, y| {
-                worst = worst.max((y[0] - (-t * t).exp()).abs());
-                ControlFlow::Continue(())
-            })
-            .unwrap();
+            let stats = Integration::new(&Gaussian, 0.0, &[1.0], m)
+                .run(&times, |t, y| {
+                    worst = worst.max((y[0] - Gaussian.solution(0.0, &[1.0], t)[0]).abs());
+                    ControlFlow::Continue(())
+                })
+                .unwrap()
+                .stats;
             (worst, stats.steps)
         };
         let mut first = None;

@@ -5,7 +5,11 @@
 use std::path::Path;
 use std::process::Command;
 
+use std::ops::ControlFlow;
+
 use gyro_sim::content_hash as fnv1a;
+use gyro_sim::test_problems::{Gaussian, Oscillator};
+use gyro_sim::{tableau, Integration, Method, Stats, Stepper, StopReason, System, TaylorWork, Tolerances};
 
 /// Runs a scene with the command; returns its statistics line and the CSV's hash.
 fn run_scene(scene: &str) -> String {
@@ -36,72 +40,167 @@ fn paper_cases_are_pinned() {
     insta::assert_snapshot!(lines.join("\n"));
 }
 
-mod problems {
-    use gyro_sim::System;
+/// The integrator pins' problems as one system type, so one loop runs them all.
+enum Pinned {
+    Oscillator,
+    Gaussian,
+}
 
-    /// y1' = y2, y2' = -y1.
-    pub struct Oscillator;
-
-    impl System for Oscillator {
-        fn dim(&self) -> usize {
-            2
-        }
-        fn rhs(&self, _: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = y[1];
-            dy[1] = -y[0];
-        }
-    }
-
-    /// y' = -2 t y.
-    pub struct Gaussian;
-
-    impl System for Gaussian {
-        fn dim(&self) -> usize {
-            1
-        }
-        fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = -2.0 * t * y[0];
+impl Pinned {
+    /// The system it is.
+    fn sys(&self) -> &dyn PinnedSystem {
+        match self {
+            Pinned::Oscillator => &Oscillator,
+            Pinned::Gaussian => &Gaussian,
         }
     }
+}
+
+/// What the pins call of a test problem (`System` itself is not object-safe).
+trait PinnedSystem {
+    fn dim(&self) -> usize;
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]);
+    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool;
+    fn taylor_straight_line(&self) -> &[usize];
+}
+
+impl<S: System> PinnedSystem for S {
+    fn dim(&self) -> usize {
+        System::dim(self)
+    }
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        System::rhs(self, t, y, dy)
+    }
+    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
+        System::taylor(self, t, y, order, out, work)
+    }
+    fn taylor_straight_line(&self) -> &[usize] {
+        System::taylor_straight_line(self)
+    }
+}
+
+impl System for Pinned {
+    fn dim(&self) -> usize {
+        self.sys().dim()
+    }
+    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
+        self.sys().rhs(t, y, dy)
+    }
+    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
+        self.sys().taylor(t, y, order, out, work)
+    }
+    fn taylor_straight_line(&self) -> &[usize] {
+        self.sys().taylor_straight_line()
+    }
+}
+
+/// The integrator pins' problems: a name, the system and its start (at `t = 0`).
+fn problems() -> [(&'static str, &'static Pinned, &'static [f64]); 2] {
+    [("oscillator", &Pinned::Oscillator, &[0.0, 1.0]), ("gaussian", &Pinned::Gaussian, &[1.0])]
+}
+
+/// Integrates `sys` from `(0, y0)` through `0, 0.1, ..., 10` with `method`: the cost and a hash
+/// of every output value's bits.
+fn pinned_run(sys: &Pinned, y0: &[f64], method: Method) -> (Stats, String) {
+    let times: Vec<f64> = (0..=100).map(|i| f64::from(i) * 0.1).collect();
+    let mut bits = Vec::new();
+    let s = Integration::new(sys, 0.0, y0, method)
+        .run(&times, |_, y| {
+            bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
+            ControlFlow::Continue(())
+        })
+        .unwrap()
+        .stats;
+    (s, fnv1a(&bits))
+}
+
+/// The pin of an adaptive run: its name, steps, rejections, evaluations and values' hash.
+fn adaptive_line(label: &str, sys: &Pinned, y0: &[f64], method: Method) -> String {
+    let (s, hash) = pinned_run(sys, y0, method);
+    format!("{label}: {} steps, {} rejected, {} evaluations, fnv1a {hash}", s.steps, s.rejected, s.rhs_evals)
+}
+
+/// Tolerances with `rtol = atol = tol`.
+fn tolerances(tol: f64) -> Tolerances {
+    Tolerances { rtol: tol, atol: tol }
 }
 
 #[test]
 fn integrator_statistics_are_pinned() {
-    let times: Vec<f64> = (0..=100).map(|i| f64::from(i) * 0.1).collect();
     let mut lines = Vec::new();
-    pin_problem("oscillator", &problems::Oscillator, &[0.0, 1.0], &times, &mut lines);
-    pin_problem("gaussian", &problems::Gaussian, &[1.0], &times, &mut lines);
+    for (name, sys, y0) in problems() {
+        for tab in [&tableau::DOPRI5, &tableau::DOP853] {
+            for tol in [1e-6, 1e-9, 1e-12] {
+                let m = Method::Adaptive(tab, tolerances(tol));
+                lines.push(adaptive_line(&format!("{name} {} {tol:e}", tab.name), sys, y0, m));
+            }
+        }
+        let (s, hash) = pinned_run(sys, y0, Method::Fixed(&tableau::RK4, 0.03));
+        lines.push(format!("{name} rk4 0.03: {} steps, fnv1a {hash}", s.steps));
+    }
     insta::assert_snapshot!(lines.join("\n"));
 }
 
-/// The statistics and a hash of the outputs' bits of `sys` with dopri5 and dop853 at three
-/// tolerances and rk4 at one step, a line each.
-fn pin_problem<S: gyro_sim::System>(name: &str, sys: &S, y0: &[f64], times: &[f64], lines: &mut Vec<String>) {
-    use gyro_sim::{integrate, tableau, Method, Tolerances};
-    for tab in [&tableau::DOPRI5, &tableau::DOP853] {
+#[test]
+fn verner_and_taylor_statistics_are_pinned() {
+    let mut lines = Vec::new();
+    for (name, sys, y0) in problems() {
         for tol in [1e-6, 1e-9, 1e-12] {
-            let mut bits = Vec::new();
-            let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
-            let s = integrate(sys, 0.0, y0, times, m, |_, y| {
-                bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
-                std::ops::ControlFlow::Continue(())
-            })
-            .unwrap();
-            lines.push(format!(
-                "{name} {} {tol:e}: {} steps, {} rejected, {} evaluations, fnv1a {}",
-                tab.name,
-                s.steps,
-                s.rejected,
-                s.rhs_evals,
-                fnv1a(&bits)
-            ));
+            for tab in [&tableau::VERN7, &tableau::VERN9] {
+                let m = Method::Adaptive(tab, tolerances(tol));
+                lines.push(adaptive_line(&format!("{name} {} {tol:e}", tab.name), sys, y0, m));
+            }
+            let m = Method::Taylor(tolerances(tol));
+            lines.push(adaptive_line(&format!("{name} taylor {tol:e}"), sys, y0, m));
         }
     }
-    let mut bits = Vec::new();
-    let s = integrate(sys, 0.0, y0, times, Method::Fixed(&tableau::RK4, 0.03), |_, y| {
-        bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
-        std::ops::ControlFlow::Continue(())
-    })
-    .unwrap();
-    lines.push(format!("{name} rk4 0.03: {} steps, fnv1a {}", s.steps, fnv1a(&bits)));
+    insta::assert_snapshot!(lines.join("\n"));
+}
+
+/// A watched run of the oscillator stopped by its watcher at `t = 5` (the first step past it):
+/// the steps the watcher saw (their ends' and midpoints' bits hashed), the outputs, the cost and
+/// where it stopped.
+#[test]
+fn watched_runs_are_pinned() {
+    let times: Vec<f64> = (0..=100).map(|i| f64::from(i) * 0.1).collect();
+    let mut lines = Vec::new();
+    let methods = [
+        ("dop853", Method::Adaptive(&tableau::DOP853, tolerances(1e-9))),
+        ("taylor", Method::Taylor(tolerances(1e-9))),
+    ];
+    for (label, m) in methods {
+        let (mut seen, mut bits) = (Vec::new(), Vec::new());
+        let mut mid = [0.0; 2];
+        let watch = |s: &dyn Stepper| {
+            s.interpolate(0.5 * (s.step_start() + s.t()), &mut mid).unwrap();
+            seen.extend([s.t(), mid[0], mid[1]].iter().flat_map(|v| v.to_bits().to_le_bytes()));
+            if s.t() > 5.0 {
+                ControlFlow::Break(5.0)
+            } else {
+                ControlFlow::Continue(())
+            }
+        };
+        let out = |_: f64, y: &[f64]| {
+            bits.extend(y.iter().flat_map(|v| v.to_bits().to_le_bytes()));
+            ControlFlow::Continue(())
+        };
+        let run =
+            Integration::new(&Oscillator, 0.0, &[0.0, 1.0], m).max_steps(1000).watch(watch).run(&times, out);
+        let (s, reason) = run.map(|run| (run.stats, run.reason)).unwrap();
+        // The pin says where it stopped as the event's time.
+        let stop = match reason {
+            StopReason::Event { time } => Some(time),
+            _ => None,
+        };
+        lines.push(format!(
+            "{label} 1e-9: {} steps, {} rejected, {} evaluations, stopped at {stop:?}, {} outputs, fnv1a {} steps {}",
+            s.steps,
+            s.rejected,
+            s.rhs_evals,
+            bits.len() / 16,
+            fnv1a(&bits),
+            fnv1a(&seen)
+        ));
+    }
+    insta::assert_snapshot!(lines.join("\n"));
 }

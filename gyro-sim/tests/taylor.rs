@@ -10,7 +10,7 @@ use gyro_sim::run;
 use gyro_sim::ModelSystem;
 use gyro_sim::Scene;
 use gyro_sim::{gimbal_gyroscope as gimbal, heavy_top as top};
-use gyro_sim::{integrate, tableau::DOP853, Method, Tolerances};
+use gyro_sim::{tableau::DOP853, Integration, Method, Tolerances};
 use kane_model::runtime::dual::Dual;
 use kane_model::runtime::GeneratedModel;
 
@@ -111,11 +111,12 @@ fn trial3() -> (ModelSystem<gimbal::Model>, Vec<f64>) {
 /// The states at `times` from `method`.
 fn states_at(sys: &ModelSystem<gimbal::Model>, y0: &[f64], times: &[f64], method: Method) -> Vec<Vec<f64>> {
     let mut rows = Vec::new();
-    integrate(sys, 0.0, y0, times, method, |_, y| {
-        rows.push(y.to_vec());
-        ControlFlow::Continue(())
-    })
-    .unwrap();
+    Integration::new(sys, 0.0, y0, method)
+        .run(times, |_, y| {
+            rows.push(y.to_vec());
+            ControlFlow::Continue(())
+        })
+        .unwrap();
     rows
 }
 
@@ -157,11 +158,13 @@ fn the_stepper_follows_the_tolerance_with_dense_output_between_steps() {
         let method = Method::Taylor(Tolerances { rtol: tol, atol: tol });
         let mut steps = 0;
         let mut rows = Vec::new();
-        let stats = integrate(&sys, 0.0, &y0, &times, method, |_, y| {
-            rows.push(y.to_vec());
-            ControlFlow::Continue(())
-        })
-        .unwrap();
+        let stats = Integration::new(&sys, 0.0, &y0, method)
+            .run(&times, |_, y| {
+                rows.push(y.to_vec());
+                ControlFlow::Continue(())
+            })
+            .unwrap()
+            .stats;
         steps += stats.steps;
         let error = largest_difference(&rows, &reference);
         // Most output times fall inside steps: they come from the series.

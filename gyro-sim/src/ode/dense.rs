@@ -268,17 +268,10 @@ fn accumulate<const N: usize>(step: &StepData<'_, N>, extra: &[f64], scale: f64,
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ode::test_problems::Exponential;
 
     /// `y' = y`: every stage is known in closed form for a given step.
-    struct Growth;
-    impl System for Growth {
-        fn dim(&self) -> usize {
-            1
-        }
-        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = y[0];
-        }
-    }
+    const GROWTH: Exponential<1> = Exponential([1.0]);
 
     #[test]
     fn the_hermite_part_alone_matches_ends_and_slopes() {
@@ -292,7 +285,7 @@ mod tests {
         let step = StepData::<0> { t: t0, h, y0: &y0, y1: &y1, k: &f0, s: 1, f1: &f1, n_dyn: 1 };
         let mut cache = DenseCache::new(1, Some(&CUBIC));
         let mut out = [0.0];
-        assert_eq!(cache.interpolate(&Growth, &CUBIC, &step, 0.3, &mut out), 0);
+        assert_eq!(cache.interpolate(&GROWTH, &CUBIC, &step, 0.3, &mut out), 0);
         assert!((out[0] - p(t0 + 0.3 * h)).abs() < 1e-15, "{} vs {}", out[0], p(t0 + 0.3 * h));
     }
 
@@ -308,10 +301,10 @@ mod tests {
         let step = StepData::<1> { t: 0.0, h: 0.1, y0: &y0, y1: &y1, k: &k, s: 1, f1: &f1, n_dyn: 1 };
         let mut cache = DenseCache::new(1, Some(&ONE_EXTRA));
         let mut out = [0.0];
-        assert_eq!(cache.interpolate(&Growth, &ONE_EXTRA, &step, 0.5, &mut out), 1);
+        assert_eq!(cache.interpolate(&GROWTH, &ONE_EXTRA, &step, 0.5, &mut out), 1);
         assert_eq!(cache.extra, [1.05]);
-        assert_eq!(cache.interpolate(&Growth, &ONE_EXTRA, &step, 0.7, &mut out), 0);
+        assert_eq!(cache.interpolate(&GROWTH, &ONE_EXTRA, &step, 0.7, &mut out), 0);
         cache.invalidate();
-        assert_eq!(cache.interpolate(&Growth, &ONE_EXTRA, &step, 0.7, &mut out), 1);
+        assert_eq!(cache.interpolate(&GROWTH, &ONE_EXTRA, &step, 0.7, &mut out), 1);
     }
 }

@@ -251,16 +251,10 @@ mod tests {
     use super::*;
     use crate::ode::dense::{DenseOutput, DenseRounding};
     use crate::ode::tableau::{DOP853, RK4};
+    use crate::ode::test_problems::Exponential;
 
-    struct Decay;
-    impl System for Decay {
-        fn dim(&self) -> usize {
-            1
-        }
-        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = -y[0];
-        }
-    }
+    /// `y' = -y`.
+    const DECAY: Exponential<1> = Exponential([-1.0]);
 
     #[test]
     fn the_next_first_stage_is_the_end_slope_every_way() {
@@ -270,7 +264,7 @@ mod tests {
             ..RK4
         };
         for tab in [&DOP853, &RK4, &RK4_DENSE] {
-            let mut w = Work::<Decay, 0>::new(&Decay, tab);
+            let mut w = Work::<Exponential<1>, 0>::new(&DECAY, tab);
             let y = [1.0];
             w.k[0] = -1.0;
             w.step(0.0, &y, 0.1);

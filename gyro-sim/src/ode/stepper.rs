@@ -1,6 +1,7 @@
-//! The stepper. In: a system, `(t0, y0)`, a [`Method`] and optionally a stop time; out: one
-//! accepted step per [`ErkStepper::step`] (its state, why it stopped there), values inside the
-//! last step from [`ErkStepper::interpolate`], and the cost so far in [`Stats`].
+//! Steppers. The [`Stepper`] trait every stepper implements, and the explicit Runge-Kutta one.
+//! In: a system, `(t0, y0)`, a [`Method`] and optionally a stop time; out: one accepted step
+//! per [`Stepper::step`] (its state, why it stopped there), values inside the last step from
+//! [`Stepper::interpolate`], and the cost so far in [`Stats`].
 //!
 //! Adaptive methods choose each step by PI error control; fixed-step methods take the given
 //! step, shortened evenly to land on the stop time. The step that reaches the stop time ends on
@@ -13,17 +14,52 @@ use super::dense::{DenseCache, StepData};
 use super::stages::{Stats, Work};
 use super::{Method, OdeError, System, Tolerances};
 
-/// Most accepted steps a stepper takes unless told otherwise ([`ErkStepper::set_max_steps`]).
+/// Most accepted steps a stepper takes unless told otherwise ([`Stepper::set_max_steps`]).
 pub const DEFAULT_MAX_STEPS: usize = 10_000_000;
 
-/// Why [`ErkStepper::step`] returned.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Why a stepper's step ([`Stepper::step`]) or a whole run ([`super::Integration`]) returned.
+#[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum StopReason {
     /// An accepted step short of the stop time (or without one).
     StepTaken,
-    /// The stepper is at the stop time: the step just taken ended on it, or it already was.
+    /// At the stop time: the step just taken ended on it, or the stepper already was there; for
+    /// a run, it reached its last output time.
     StopTimeReached,
+    /// A run's watcher ended it at `time`, inside the last step: an event.
+    Event {
+        /// Where the run ended.
+        time: f64,
+    },
+    /// A run's output callback ended it (`ControlFlow::Break`) at the output time `time`.
+    OutputBreak {
+        /// The output time it broke at.
+        time: f64,
+    },
+}
+
+/// A stepper: one accepted step at a time, values inside the last step, the cost so far. What
+/// every stepper does (the Runge-Kutta [`ErkStepper`], the Taylor [`super::TaylorStepper`]) and
+/// all a run ([`super::Integration`]) asks of one.
+pub trait Stepper {
+    /// The current time.
+    fn t(&self) -> f64;
+    /// The current state.
+    fn y(&self) -> &[f64];
+    /// Where the last accepted step began (`t0` before the first).
+    fn step_start(&self) -> f64;
+    /// Takes one accepted step, or none when the stepper is at the stop time already.
+    fn step(&mut self) -> Result<StopReason, OdeError>;
+    /// The state at `t` inside the last accepted step into `out` (at its end, the step's own
+    /// value). An error outside the step or for `out` of the wrong length.
+    fn interpolate(&self, t: f64, out: &mut [f64]) -> Result<(), OdeError>;
+    /// Steps never pass `t_stop`; the one that reaches it ends on it exactly.
+    fn set_stop_time(&mut self, t_stop: f64);
+    /// At most `max` accepted steps in all: [`Stepper::step`] fails with
+    /// [`OdeError::TooManySteps`] before taking one more.
+    fn set_max_steps(&mut self, max: usize);
+    /// The cost so far.
+    fn stats(&self) -> Stats;
 }
 
 /// Fixed steps still to take toward the stop time: the rest of the way in `left` equal steps.
@@ -112,111 +148,10 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
         })
     }
 
-    /// Steps never pass `t_stop`; the one that reaches it ends on it exactly.
-    pub fn set_stop_time(&mut self, t_stop: f64) {
-        if self.stop.map(f64::to_bits) != Some(t_stop.to_bits()) {
-            self.stop = Some(t_stop);
-            self.plan = FixedPlan::default();
-        }
-    }
-
     /// Where the whole integration ends: an adaptive method's first step is no longer than the
     /// way there (without a horizon, than the way to the stop time). No effect after that step.
     pub fn set_horizon(&mut self, t_end: f64) {
         self.horizon = Some(t_end);
-    }
-
-    /// At most `max` accepted steps in all: [`ErkStepper::step`] fails with
-    /// [`OdeError::TooManySteps`] before taking one more.
-    pub fn set_max_steps(&mut self, max: usize) {
-        self.max_steps = max;
-    }
-
-    /// The current time.
-    pub fn t(&self) -> f64 {
-        self.t
-    }
-
-    /// The current state.
-    pub fn y(&self) -> &[f64] {
-        &self.y
-    }
-
-    /// Where the last accepted step began (`t0` before the first).
-    pub fn step_start(&self) -> f64 {
-        self.t_prev
-    }
-
-    /// The cost so far, the interpolants' extra stages included.
-    pub fn stats(&self) -> Stats {
-        let mut stats = self.work.stats;
-        stats.rhs_evals += self.dense_evals.get();
-        stats
-    }
-
-    /// Takes one accepted step, or none when the stepper is at the stop time already; first the
-    /// system may project the state (then the last step can no longer be interpolated). After an
-    /// error the state is the last accepted one, and only it can be interpolated (the failed
-    /// attempt overwrote the stages).
-    #[inline(always)]
-    pub fn step(&mut self) -> Result<StopReason, OdeError> {
-        if self.stop.is_some_and(|stop| self.t >= stop) {
-            return Ok(StopReason::StopTimeReached);
-        }
-        self.check_step_limit()?;
-        if self.work.sys.project(&mut self.y) {
-            check_finite(self.t, &self.y)?;
-            self.work.restart(self.t, &self.y);
-            self.t_prev = self.t;
-        }
-        let result = match self.method {
-            Method::Adaptive(_, tol) => self.adaptive_step(tol),
-            Method::Fixed(_, step) => self.fixed_step(step),
-            Method::Taylor(_) => Err(OdeError::NotRungeKutta),
-        };
-        if result.is_err() {
-            self.t_prev = self.t;
-        }
-        result
-    }
-
-    /// The state at `t` in the last accepted step into `out`: at its end the step's own value;
-    /// before that (its start included) from the tableau's continuous extension, exact at the
-    /// start. An error outside the step, before its end without an extension, or for `out` of
-    /// the wrong length.
-    #[inline]
-    pub fn interpolate(&self, t: f64, out: &mut [f64]) -> Result<(), OdeError> {
-        let n = self.work.n();
-        if out.len() != n {
-            return Err(OdeError::DimensionMismatch { expected: n, found: out.len() });
-        }
-        if t == self.t {
-            out.copy_from_slice(&self.y);
-            return Ok(());
-        }
-        if !(self.t_prev <= t && t < self.t) {
-            return Err(OdeError::OutsideStep { t, start: self.t_prev, end: self.t });
-        }
-        let tab = self.work.tab;
-        let dense = tab.dense.as_ref().ok_or(OdeError::NoDenseOutput { method: tab.name })?;
-        if t == self.t_prev {
-            out.copy_from_slice(&self.y_prev);
-            return Ok(());
-        }
-        let step = StepData::<N> {
-            t: self.t_prev,
-            h: self.h_prev,
-            y0: &self.y_prev,
-            y1: &self.y,
-            k: &self.work.k,
-            s: tab.c.len(),
-            f1: self.work.end_slope(),
-            n_dyn: n,
-        };
-        let theta = (t - self.t_prev) / self.h_prev;
-        let evals = self.dense.borrow_mut().interpolate(self.work.sys, dense, &step, theta, out);
-        self.dense_evals.set(self.dense_evals.get() + evals);
-        Ok(())
     }
 
     /// An adaptive step toward the stop time (if any), of the size the control proposes or
@@ -291,6 +226,103 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
         std::mem::swap(&mut self.y, &mut self.work.ynew);
         (self.t_prev, self.t, self.h_prev) = (self.t, t_new, h);
         self.dense.get_mut().invalidate();
+        Ok(())
+    }
+}
+
+impl<S: System + ?Sized, const N: usize> Stepper for ErkStepper<'_, S, N> {
+    fn set_stop_time(&mut self, t_stop: f64) {
+        if self.stop.map(f64::to_bits) != Some(t_stop.to_bits()) {
+            self.stop = Some(t_stop);
+            self.plan = FixedPlan::default();
+        }
+    }
+
+    fn set_max_steps(&mut self, max: usize) {
+        self.max_steps = max;
+    }
+
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    fn y(&self) -> &[f64] {
+        &self.y
+    }
+
+    fn step_start(&self) -> f64 {
+        self.t_prev
+    }
+
+    /// The cost so far, the interpolants' extra stages included.
+    fn stats(&self) -> Stats {
+        let mut stats = self.work.stats;
+        stats.rhs_evals += self.dense_evals.get();
+        stats
+    }
+
+    /// Takes one accepted step, or none when the stepper is at the stop time already; first the
+    /// system may project the state (then the last step can no longer be interpolated). After an
+    /// error the state is the last accepted one, and only it can be interpolated (the failed
+    /// attempt overwrote the stages).
+    #[inline(always)]
+    fn step(&mut self) -> Result<StopReason, OdeError> {
+        if self.stop.is_some_and(|stop| self.t >= stop) {
+            return Ok(StopReason::StopTimeReached);
+        }
+        self.check_step_limit()?;
+        if self.work.sys.project(&mut self.y) {
+            check_finite(self.t, &self.y)?;
+            self.work.restart(self.t, &self.y);
+            self.t_prev = self.t;
+        }
+        let result = match self.method {
+            Method::Adaptive(_, tol) => self.adaptive_step(tol),
+            Method::Fixed(_, step) => self.fixed_step(step),
+            Method::Taylor(_) => Err(OdeError::NotRungeKutta),
+        };
+        if result.is_err() {
+            self.t_prev = self.t;
+        }
+        result
+    }
+
+    /// The state at `t` in the last accepted step into `out`: at its end the step's own value;
+    /// before that (its start included) from the tableau's continuous extension, exact at the
+    /// start. An error outside the step, before its end without an extension, or for `out` of
+    /// the wrong length.
+    #[inline]
+    fn interpolate(&self, t: f64, out: &mut [f64]) -> Result<(), OdeError> {
+        let n = self.work.n();
+        if out.len() != n {
+            return Err(OdeError::DimensionMismatch { expected: n, found: out.len() });
+        }
+        if t == self.t {
+            out.copy_from_slice(&self.y);
+            return Ok(());
+        }
+        if !(self.t_prev <= t && t < self.t) {
+            return Err(OdeError::OutsideStep { t, start: self.t_prev, end: self.t });
+        }
+        let tab = self.work.tab;
+        let dense = tab.dense.as_ref().ok_or(OdeError::NoDenseOutput { method: tab.name })?;
+        if t == self.t_prev {
+            out.copy_from_slice(&self.y_prev);
+            return Ok(());
+        }
+        let step = StepData::<N> {
+            t: self.t_prev,
+            h: self.h_prev,
+            y0: &self.y_prev,
+            y1: &self.y,
+            k: &self.work.k,
+            s: tab.c.len(),
+            f1: self.work.end_slope(),
+            n_dyn: n,
+        };
+        let theta = (t - self.t_prev) / self.h_prev;
+        let evals = self.dense.borrow_mut().interpolate(self.work.sys, dense, &step, theta, out);
+        self.dense_evals.set(self.dense_evals.get() + evals);
         Ok(())
     }
 }

@@ -1,7 +1,7 @@
 //! The Taylor method. In: a [`System`] that gives its own Taylor coefficients
 //! ([`System::taylor`], generated from the model's equations), `(t0, y0)` and tolerances; out:
-//! one step per [`TaylorStepper::step`], values anywhere in the last step from the Taylor
-//! polynomial itself ([`TaylorStepper::interpolate`]), and the cost in [`Stats`].
+//! one step per [`Stepper::step`], values anywhere in the last step from the Taylor polynomial
+//! itself ([`Stepper::interpolate`]), and the cost in [`Stats`].
 //!
 //! Order and step follow Jorba and Zou (2005), per component, for any order. Each component's
 //! tolerance is `tol_i = atol + rtol |y_i|` (as the Runge-Kutta pairs weigh it) and
@@ -15,7 +15,7 @@
 //! estimate is made before the step, from the series itself.
 
 use super::stages::Stats;
-use super::stepper::{StopReason, DEFAULT_MAX_STEPS};
+use super::stepper::{Stepper, StopReason, DEFAULT_MAX_STEPS};
 use super::{OdeError, System, TaylorWork, Tolerances};
 /// The lowest order a step takes (the step-size rule reads orders `p - 1` and `p`).
 const MIN_ORDER: usize = 2;
@@ -92,37 +92,6 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
         Ok(stepper)
     }
 
-    /// Steps never pass `t_stop`; the one that reaches it ends on it exactly.
-    pub fn set_stop_time(&mut self, t_stop: f64) {
-        self.stop = Some(t_stop);
-    }
-
-    /// At most `max` steps in all ([`OdeError::TooManySteps`] before one more).
-    pub fn set_max_steps(&mut self, max: usize) {
-        self.max_steps = max;
-    }
-
-    /// The current time.
-    pub fn t(&self) -> f64 {
-        self.t
-    }
-
-    /// The current state.
-    pub fn y(&self) -> &[f64] {
-        &self.y
-    }
-
-    /// Where the last step began (`t0` before the first).
-    pub fn step_start(&self) -> f64 {
-        self.t_prev
-    }
-
-    /// The cost so far: steps, and in `rhs_evals` the coefficient passes (order `p` takes `p`;
-    /// pass 0 is one evaluation of the right-hand side, pass `k` up to `k` times its products).
-    pub fn stats(&self) -> Stats {
-        self.stats
-    }
-
     /// The order for the tolerances at the current state: `eps` the smallest of the components'
     /// tolerances `atol + rtol |y_i|` relative to `max(1, |y_i|)`, each component's
     /// `eps / (atol + rtol |y_i|)` into `inverse_scales`; the order Jorba and Zou give `eps`,
@@ -187,9 +156,44 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
         (ln_rho_m + (self.ln_eps - 2.0) / pf - 0.7 / (pf - 1.0)).exp()
     }
 
+    /// The Taylor polynomial of the last expansion at `tau` past its start, into `out`.
+    fn evaluate(&self, tau: f64, out: &mut [f64]) {
+        for (o, c) in out.iter_mut().zip(self.coeffs.chunks_exact(self.order + 1)) {
+            *o = polynomial(c, tau);
+        }
+    }
+}
+
+impl<S: System + ?Sized> Stepper for TaylorStepper<'_, S> {
+    fn set_stop_time(&mut self, t_stop: f64) {
+        self.stop = Some(t_stop);
+    }
+
+    fn set_max_steps(&mut self, max: usize) {
+        self.max_steps = max;
+    }
+
+    fn t(&self) -> f64 {
+        self.t
+    }
+
+    fn y(&self) -> &[f64] {
+        &self.y
+    }
+
+    fn step_start(&self) -> f64 {
+        self.t_prev
+    }
+
+    /// The cost so far: steps, and in `rhs_evals` the coefficient passes (order `p` takes `p`;
+    /// pass 0 is one evaluation of the right-hand side, pass `k` up to `k` times its products).
+    fn stats(&self) -> Stats {
+        self.stats
+    }
+
     /// Takes one step, or none when the stepper is at the stop time already; first the system
     /// may project the state.
-    pub fn step(&mut self) -> Result<StopReason, OdeError> {
+    fn step(&mut self) -> Result<StopReason, OdeError> {
         if self.stop.is_some_and(|stop| self.t >= stop) {
             return Ok(StopReason::StopTimeReached);
         }
@@ -226,16 +230,9 @@ impl<'a, S: System + ?Sized> TaylorStepper<'a, S> {
         Ok(if reached { StopReason::StopTimeReached } else { StopReason::StepTaken })
     }
 
-    /// The Taylor polynomial of the last expansion at `tau` past its start, into `out`.
-    fn evaluate(&self, tau: f64, out: &mut [f64]) {
-        for (o, c) in out.iter_mut().zip(self.coeffs.chunks_exact(self.order + 1)) {
-            *o = polynomial(c, tau);
-        }
-    }
-
     /// The state at `t` in the last step into `out`, from its Taylor polynomial (at its end,
     /// the step's own value). An error outside the step or for `out` of the wrong length.
-    pub fn interpolate(&self, t: f64, out: &mut [f64]) -> Result<(), OdeError> {
+    fn interpolate(&self, t: f64, out: &mut [f64]) -> Result<(), OdeError> {
         if out.len() != self.y.len() {
             return Err(OdeError::DimensionMismatch { expected: self.y.len(), found: out.len() });
         }
@@ -275,66 +272,25 @@ fn check_finite(t: f64, y: &[f64]) -> Result<(), OdeError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ode::{integrate, Method};
+    use crate::ode::test_problems::{ClosedForm, NoStraightLine, Oscillator, WithoutTaylor};
+    use crate::ode::{Integration, Method, Stepper};
     use std::ops::ControlFlow;
 
-    /// `x' = v`, `v' = -x`: coefficients `c_{k+1} = A c_k / (k + 1)`; `x = x0 cos t + v0 sin t`.
-    struct Oscillator;
-    impl System for Oscillator {
-        fn dim(&self) -> usize {
-            2
-        }
-        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = y[1];
-            dy[1] = -y[0];
-        }
-        fn taylor(&self, _t: f64, y: &[f64], order: usize, out: &mut [f64], _w: &mut TaylorWork) -> bool {
-            let n1 = order + 1;
-            (out[0], out[n1]) = (y[0], y[1]);
-            for k in 0..order {
-                let kk = (k + 1) as f64;
-                (out[k + 1], out[n1 + k + 1]) = (out[n1 + k] / kk, -out[k] / kk);
-            }
-            true
-        }
-        fn taylor_straight_line(&self) -> &[usize] {
-            kane_model::runtime::TAYLOR_UNROLLED_ORDERS
-        }
-    }
-
     /// The oscillator computing every order alike (no straight-line orders).
-    struct LoopOnly;
-    impl System for LoopOnly {
-        fn dim(&self) -> usize {
-            2
-        }
-        fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-            Oscillator.rhs(t, y, dy)
-        }
-        fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], w: &mut TaylorWork) -> bool {
-            Oscillator.taylor(t, y, order, out, w)
-        }
-    }
-
+    const LOOP_ONLY: NoStraightLine<Oscillator> = NoStraightLine(Oscillator);
     /// The same equations without Taylor coefficients.
-    struct Plain;
-    impl System for Plain {
-        fn dim(&self) -> usize {
-            2
-        }
-        fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-            Oscillator.rhs(t, y, dy)
-        }
-    }
+    const PLAIN: WithoutTaylor<Oscillator> = WithoutTaylor(Oscillator);
 
     fn run(tol: f64, times: &[f64]) -> (Vec<Vec<f64>>, Stats) {
         let mut rows = Vec::new();
         let method = Method::Taylor(Tolerances { rtol: tol, atol: tol });
-        let stats = integrate(&Oscillator, 0.0, &[1.0, 0.5], times, method, |_, y| {
-            rows.push(y.to_vec());
-            ControlFlow::Continue(())
-        })
-        .unwrap();
+        let stats = Integration::new(&Oscillator, 0.0, &[1.0, 0.5], method)
+            .run(times, |_, y| {
+                rows.push(y.to_vec());
+                ControlFlow::Continue(())
+            })
+            .unwrap()
+            .stats;
         (rows, stats)
     }
 
@@ -344,7 +300,7 @@ mod tests {
         for tol in [1e-6, 1e-9, 1e-12, 1e-15] {
             let (rows, stats) = run(tol, &times);
             let worst = times.iter().zip(&rows).fold(0.0f64, |m, (t, y)| {
-                let x = t.cos() + 0.5 * t.sin();
+                let x = Oscillator.solution(0.0, &[1.0, 0.5], *t)[0];
                 m.max((y[0] - x).abs())
             });
             // 20 time units: the global error is a few steps' local errors.
@@ -393,7 +349,7 @@ mod tests {
     #[test]
     fn a_system_without_straight_line_orders_takes_the_order_it_needs() {
         let tol = Tolerances { rtol: 1e-12, atol: 1e-12 };
-        let mut s = TaylorStepper::new(&LoopOnly, 0.0, &[1.0, 0.0], tol).unwrap();
+        let mut s = TaylorStepper::new(&LOOP_ONLY, 0.0, &[1.0, 0.0], tol).unwrap();
         // -ln(1e-12) / 2 + 1 + ORDER_LEAD = 18.8, rounded.
         assert_eq!(s.order, 19);
         s.set_stop_time(2.0);
@@ -406,11 +362,12 @@ mod tests {
     #[test]
     fn a_system_without_coefficients_is_a_clear_error() {
         let method = Method::Taylor(Tolerances { rtol: 1e-9, atol: 1e-9 });
-        let err = integrate(&Plain, 0.0, &[1.0, 0.0], &[1.0], method, |_, _| ControlFlow::Continue(()))
+        let err = Integration::new(&PLAIN, 0.0, &[1.0, 0.0], method)
+            .run(&[1.0], |_, _| ControlFlow::Continue(()))
             .unwrap_err();
         assert_eq!(err, OdeError::NoTaylorCoefficients);
         assert!(err.to_string().contains("use another method"), "{err}");
-        let erk = crate::ode::ErkStepper::new(&Plain, 0.0, &[1.0, 0.0], method);
+        let erk = crate::ode::ErkStepper::new(&PLAIN, 0.0, &[1.0, 0.0], method);
         assert!(matches!(erk, Err(OdeError::NotRungeKutta)));
     }
 }

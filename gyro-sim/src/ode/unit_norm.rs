@@ -93,21 +93,15 @@ pub fn normalise(groups: &[Vec<usize>], y: &mut [f64]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ode::test_problems::Exponential;
 
-    struct Still;
-    impl System for Still {
-        fn dim(&self) -> usize {
-            5
-        }
-        fn rhs(&self, _t: f64, _y: &[f64], dy: &mut [f64]) {
-            dy.fill(0.0);
-        }
-    }
+    /// Five states at rest.
+    const STILL: Exponential<5> = Exponential([0.0; 5]);
 
     #[test]
     fn projects_only_past_the_threshold_and_counts() {
         let groups = vec![vec![1, 2, 3, 4]];
-        let sys = UnitNorm::new(&Still, &groups, 1e-8);
+        let sys = UnitNorm::new(&STILL, &groups, 1e-8);
         let mut y = [7.0, 0.5, 0.5, 0.5, 0.5 * (1.0 + 1e-9)];
         assert!(!sys.project(&mut y));
         assert_eq!(y[0], 7.0);

@@ -80,21 +80,13 @@ pub(crate) fn integrate<B: BoundModel>(
         ControlFlow::Continue(())
     };
     let mut events = EventLog::default();
+    let integration = ode::Integration::new(&held, 0.0, &y_start, method).max_steps(problem.max_steps);
     let result = if problem.events.is_empty() {
-        ode::integrate_limited(&held, 0.0, &y_start, &all_times, method, problem.max_steps, on_output)
+        integration.run(&all_times, on_output)
     } else {
         let mut watch = Watch::new(problem, sys, sys.inner());
         let row = |t: f64, y: &[f64]| row_at(problem, sys.inner(), columns, t, y, &mut vec![0.0; n]);
-        let run = ode::integrate_watched(
-            &held,
-            0.0,
-            &y_start,
-            &all_times,
-            method,
-            problem.max_steps,
-            |s| watch.observe(s, &row),
-            on_output,
-        );
+        let run = integration.watch(|s| watch.observe(s, &row)).run(&all_times, on_output);
         if let Some(e) = watch.error.take() {
             return Err(e);
         }
@@ -106,9 +98,9 @@ pub(crate) fn integrate<B: BoundModel>(
             y_end = state;
         }
         events = watch.log;
-        run.map(|w| w.stats)
+        run
     };
-    let outcome = match (result, bad) {
+    let outcome = match (result.map(|run| run.stats), bad) {
         (Ok(stats), None) => Ok(stats),
         (Ok(_), Some(e)) => Err(e),
         (Err(OdeError::NonFinite { time, index, value }), _) => Err(SolveError::NonFiniteState {

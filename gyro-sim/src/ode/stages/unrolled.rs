@@ -149,34 +149,28 @@ impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
 mod tests {
     use super::*;
 
+    use crate::ode::test_problems::Exponential;
+
     const TOL: Tolerances = Tolerances { rtol: 1e-6, atol: 1e-6 };
 
-    struct Decay;
-    impl System for Decay {
-        fn dim(&self) -> usize {
-            2
-        }
-        fn rhs(&self, _t: f64, y: &[f64], dy: &mut [f64]) {
-            dy[0] = -y[0];
-            dy[1] = -2.0 * y[1];
-        }
-    }
+    /// `y1' = -y1`, `y2' = -2 y2`.
+    const DECAY: Exponential<2> = Exponential([-1.0, -2.0]);
 
     #[test]
     fn every_table_row_takes_the_unrolled_step_when_the_dimension_is_fixed() {
         let y = [1.0, 1.0];
         for tab in METHODS.iter().filter_map(|m| m.tableau) {
-            let mut fixed = Work::<Decay, 2>::new(&Decay, tab);
-            Decay.rhs(0.0, &y, &mut fixed.k[..2]);
+            let mut fixed = Work::<Exponential<2>, 2>::new(&DECAY, tab);
+            DECAY.rhs(0.0, &y, &mut fixed.k[..2]);
             assert!(fixed.step_unrolled(0.0, &y, 0.1), "{}", tab.name);
             assert!((fixed.ynew[0] - (-0.1f64).exp()).abs() < 1e-6, "{}: {:?}", tab.name, fixed.ynew);
-            let mut general = Work::<Decay, 0>::new(&Decay, tab);
+            let mut general = Work::<Exponential<2>, 0>::new(&DECAY, tab);
             assert!(!general.step_unrolled(0.0, &y, 0.1));
             assert_eq!(fixed.error_unrolled(&y, 0.1, TOL).is_some(), tab.e.is_some(), "{}", tab.name);
         }
         // A tableau with the same coefficients elsewhere in memory takes the general step.
         static COPY: Tableau = Tableau { name: "copy", dense: None, ..crate::ode::tableau::RK4 };
-        let mut other = Work::<Decay, 2>::new(&Decay, &COPY);
+        let mut other = Work::<Exponential<2>, 2>::new(&DECAY, &COPY);
         assert!(!other.step_unrolled(0.0, &y, 0.1));
     }
 }

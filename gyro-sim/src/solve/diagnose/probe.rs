@@ -7,7 +7,7 @@
 use std::cell::RefCell;
 use std::ops::ControlFlow;
 
-use crate::ode::{self, Method, Stepping, System, TaylorWork};
+use crate::ode::{Integration, Method, Stepper, System, TaylorWork};
 
 /// A system that remembers the first finite state whose rates are not.
 struct Watched<'a, S: System + ?Sized> {
@@ -58,23 +58,21 @@ pub(crate) fn probe<S: System + ?Sized>(
     max_steps: usize,
 ) -> Option<(f64, Vec<f64>)> {
     let watched = Watched { inner: sys, first_bad: RefCell::new(None) };
+    let integration = Integration::new(&watched, t0, y0, method).max_steps(max_steps);
+    let ignore = |_: f64, _: &[f64]| ControlFlow::Continue(());
     if method.tableau().is_some_and(|t| t.dense.is_none()) {
         // Without a continuous extension steps cannot be watched; the rates still are.
-        let _ = ode::integrate_limited(&watched, t0, y0, &[t_end], method, max_steps, |_, _| {
-            ControlFlow::Continue(())
-        });
+        let _ = integration.run(&[t_end], ignore);
         return watched.first_bad.into_inner();
     }
     let mut last: Option<(f64, Vec<f64>)> = None;
-    let watch = |s: &dyn Stepping| {
+    let watch = |s: &dyn Stepper| {
         if s.y().iter().all(|v| v.is_finite()) {
             last = Some((s.t(), s.y().to_vec()));
         }
-        None
+        ControlFlow::Continue(())
     };
     // The run fails again (that is why it is probed); what it met on the way is the answer.
-    let _ = ode::integrate_watched(&watched, t0, y0, &[t_end], method, max_steps, watch, |_, _| {
-        ControlFlow::Continue(())
-    });
+    let _ = integration.watch(watch).run(&[t_end], ignore);
     watched.first_bad.into_inner().or(last)
 }

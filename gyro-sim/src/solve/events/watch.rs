@@ -3,8 +3,10 @@
 //! trajectory row, built by the caller's row function) and, for one that stops the run, the
 //! time to stop at.
 
+use std::ops::ControlFlow;
+
 use crate::ode::normalise;
-use crate::ode::{Stepping, System};
+use crate::ode::{Stepper, System};
 use crate::problem::{EventLog, EventRecord, Problem, SolveError};
 use crate::solve::bound::{BoundModel, Reduced};
 
@@ -59,8 +61,8 @@ impl<'a, B: BoundModel> Watch<'a, B> {
     }
 
     /// After an accepted step of `stepper`: the crossings in it recorded (rows from `row`);
-    /// the time to stop at when one ends the run (or a row failed).
-    pub fn observe(&mut self, stepper: &dyn Stepping, row: &RowFn<'_>) -> Option<f64> {
+    /// a break at the time to stop at when one ends the run (or a row failed).
+    pub fn observe(&mut self, stepper: &dyn Stepper, row: &RowFn<'_>) -> ControlFlow<f64> {
         let (t_prev, t) = (stepper.step_start(), stepper.t());
         let Watch { problem, sys, fns, reduced, full, values, .. } = self;
         let mut at = |s: f64, full: &mut [f64]| {
@@ -77,7 +79,7 @@ impl<'a, B: BoundModel> Watch<'a, B> {
             let rules = problem.events.iter().map(|e| e.rule).collect();
             self.detector = Some(Detector::new(rules, t_prev, values));
         }
-        let detector = self.detector.as_mut()?;
+        let Some(detector) = self.detector.as_mut() else { return ControlFlow::Continue(()) };
         let found = detector.step(t_prev, t, |i, s| {
             at(s, full);
             fns.value(i, s, full)
@@ -95,7 +97,7 @@ impl<'a, B: BoundModel> Watch<'a, B> {
                 Ok(r) => r,
                 Err(e) => {
                     self.error = Some(e);
-                    return Some(c.t);
+                    return ControlFlow::Break(c.t);
                 }
             };
             let name = problem.events[c.event].name.clone();
@@ -109,9 +111,9 @@ impl<'a, B: BoundModel> Watch<'a, B> {
                 self.log.stopped = Some((name, c.t));
                 self.stop_state = Some(full.clone());
                 self.stop_row = Some(r);
-                return Some(c.t);
+                return ControlFlow::Break(c.t);
             }
         }
-        None
+        ControlFlow::Continue(())
     }
 }
