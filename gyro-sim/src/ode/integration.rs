@@ -124,8 +124,8 @@ impl<S: System + ?Sized, W> Integration<'_, S, W>
 where
     W: FnMut(&dyn Stepper) -> ControlFlow<f64>,
 {
-    /// [`Integration::run`] watched: through the output `times`, calling `out(t, y)` at each
-    /// and the watcher after each accepted step, until the last time, an event or a break. A
+    /// The run, watched: through the output `times`, calling `out(t, y)` at each and the
+    /// watcher after each accepted step, until the last time, an event or a break. A
     /// Runge-Kutta method steps with any dimension (the watcher sees the stepper as
     /// `dyn Stepper`, so one stepper type serves).
     pub fn run(
