@@ -63,7 +63,7 @@ pub struct Outcome {
 pub struct Unwatched;
 
 impl<'a, S: System + ?Sized> Integration<'a, S> {
-    /// An integration of `sys` from `(t0, y0)` by `method`, of at most [`DEFAULT_MAX_STEPS`]
+    /// An integration of `sys` from `(t0, y0)` by `method`, of at most `DEFAULT_MAX_STEPS` (10^7)
     /// accepted steps, unwatched.
     pub fn new(sys: &'a S, t0: f64, y0: &'a [f64], method: Method) -> Self {
         Integration { start: Start { sys, t0, y0, method, max_steps: DEFAULT_MAX_STEPS }, watch: Unwatched }

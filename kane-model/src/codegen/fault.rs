@@ -101,7 +101,7 @@ pub fn first_fault(
 }
 
 /// The quotient of `section` at the inputs `read` whose divisor is a sum or difference that
-/// cancels most nearly to zero (below [`NEAR_ZERO`] of its largest term), named: where the
+/// cancels most nearly to zero (below `NEAR_ZERO` of its largest term), named: where the
 /// values are finite but a singularity is near. The fault's operands are the divisor and the
 /// largest term.
 pub fn near_division_by_zero(

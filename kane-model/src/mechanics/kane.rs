@@ -301,7 +301,7 @@ impl Model {
 
     /// Replaces entries of `M` and `f` by their trigonometric canonical form in the state, terms
     /// collected by state monomial, where that takes fewer operations to evaluate: the
-    /// smallest entries first, while their canonical forms stay within [`COLLECT_TERMS_TOTAL`]
+    /// smallest entries first, while their canonical forms stay within `COLLECT_TERMS_TOTAL`
     /// terms together (collecting costs time and, in large models, saves no operations).
     pub fn simplify_equations(&mut self, eqs: &mut KaneEquations) -> Result<()> {
         let n = eqs.forcing.len();

@@ -40,7 +40,7 @@ pub trait GeneratedModel {
         Self::rhs_derived(t, y, p, &Self::derive(p), dy)
     }
     /// Output `k` at `(t, y)` into `out` (its columns); `rates` are `u'` when the output needs
-    /// them (see [`OutputInfo::needs_rates`]), else ignored.
+    /// them (see [`OutputInfo::needs_rates`](super::OutputInfo::needs_rates)), else ignored.
     fn output(k: usize, t: f64, y: &[f64], rates: &[f64], p: &Self::Params, out: &mut [f64]);
     /// The derived quantities as numbers, in the order `derive` computes them (and
     /// [`LaneModel::rhs_lanes`] reads them).

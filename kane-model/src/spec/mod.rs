@@ -1,7 +1,7 @@
 //! What to generate, built from mechanics: in come a [`Model`] and its [`KaneEquations`]; out
 //! goes a [`ModelSpec`] (equations, parameter and state defaults with units, a typed output list)
 //! that [`crate::codegen`] lowers and prints. The model language builds one from a model file
-//! ([`crate::lang::LoadedModel::spec`]); a Rust-API model builds one by hand.
+//! ([`crate::lang::LoadedModel::into_spec`]); a Rust-API model builds one by hand.
 
 mod outputs;
 

@@ -1,7 +1,7 @@
 //! Verner's most efficient 7(6) and 9(8) pairs with their interpolants, as data. In: nothing;
 //! out: the tableaux [`VERN7`] and [`VERN9`].
 //!
-//! Coefficients from Jim Verner's page, http://people.math.sfu.ca/~jverner/ ("Numerically
+//! Coefficients from Jim Verner's page, <http://people.math.sfu.ca/~jverner/> ("Numerically
 //! optimal Runge-Kutta pairs with interpolants"), credited here by its address as he asks, each
 //! the double nearest his 40-digit value. The tests in `tests/tableau_orders.rs` check them:
 //! row sums, every rooted-tree order condition of the weights and the embedded weights, and the

@@ -103,14 +103,14 @@ enum Command {
         #[arg(long)]
         lanes: bool,
     },
-    /// Check hand-derived equations (U1' = ... or ZERO[1] = ...) and quantities (V_P_A> = ...)
+    /// Check hand-derived equations (`U1' = ...` or `ZERO[1] = ...`) and quantities (V_P_A> = ...)
     /// against the derived ones, and say how they differ.
     Compare {
         /// The model file.
         file: PathBuf,
         /// The hand-derived equations.
         hand: PathBuf,
-        /// Count an equation (ZERO[r] = ...) equal to a derived one negated as equal (a rate or
+        /// Count an equation (`ZERO[r] = ...`) equal to a derived one negated as equal (a rate or
         /// a quantity of the opposite sign still differs).
         #[arg(long)]
         up_to_sign: bool,
