@@ -9,7 +9,7 @@ use std::ops::ControlFlow;
 
 use gyro_sim::content_hash as fnv1a;
 use gyro_sim::test_problems::{Gaussian, Oscillator};
-use gyro_sim::{tableau, Integration, Method, Stats, Stepper, StopReason, System, TaylorWork, Tolerances};
+use gyro_sim::{tableau, Integration, Method, Stats, Stepper, StopReason, System, Tolerances};
 
 /// Runs a scene with the command; returns its statistics line and the CSV's hash.
 fn run_scene(scene: &str) -> String {
@@ -40,68 +40,9 @@ fn paper_cases_are_pinned() {
     insta::assert_snapshot!(lines.join("\n"));
 }
 
-/// The integrator pins' problems as one system type, so one loop runs them all.
-enum Pinned {
-    Oscillator,
-    Gaussian,
-}
-
-impl Pinned {
-    /// The system it is.
-    fn sys(&self) -> &dyn PinnedSystem {
-        match self {
-            Pinned::Oscillator => &Oscillator,
-            Pinned::Gaussian => &Gaussian,
-        }
-    }
-}
-
-/// What the pins call of a test problem (`System` itself is not object-safe).
-trait PinnedSystem {
-    fn dim(&self) -> usize;
-    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]);
-    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool;
-    fn taylor_straight_line(&self) -> &[usize];
-}
-
-impl<S: System> PinnedSystem for S {
-    fn dim(&self) -> usize {
-        System::dim(self)
-    }
-    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        System::rhs(self, t, y, dy)
-    }
-    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
-        System::taylor(self, t, y, order, out, work)
-    }
-    fn taylor_straight_line(&self) -> &[usize] {
-        System::taylor_straight_line(self)
-    }
-}
-
-impl System for Pinned {
-    fn dim(&self) -> usize {
-        self.sys().dim()
-    }
-    fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        self.sys().rhs(t, y, dy)
-    }
-    fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
-        self.sys().taylor(t, y, order, out, work)
-    }
-    fn taylor_straight_line(&self) -> &[usize] {
-        self.sys().taylor_straight_line()
-    }
-}
-
-/// The integrator pins' problems: a name, the system and its start (at `t = 0`).
-fn problems() -> [(&'static str, &'static Pinned, &'static [f64]); 2] {
-    [("oscillator", &Pinned::Oscillator, &[0.0, 1.0]), ("gaussian", &Pinned::Gaussian, &[1.0])]
-}
-
 /// Integrates `sys` from `(0, y0)` through `0, 0.1, ..., 10` with `method`: the cost and a hash
 /// of every output value's bits.
-fn pinned_run(sys: &Pinned, y0: &[f64], method: Method) -> (Stats, String) {
+fn pinned_run<S: System>(sys: &S, y0: &[f64], method: Method) -> (Stats, String) {
     let times: Vec<f64> = (0..=100).map(|i| f64::from(i) * 0.1).collect();
     let mut bits = Vec::new();
     let s = Integration::new(sys, 0.0, y0, method)
@@ -115,7 +56,7 @@ fn pinned_run(sys: &Pinned, y0: &[f64], method: Method) -> (Stats, String) {
 }
 
 /// The pin of an adaptive run: its name, steps, rejections, evaluations and values' hash.
-fn adaptive_line(label: &str, sys: &Pinned, y0: &[f64], method: Method) -> String {
+fn adaptive_line<S: System>(label: &str, sys: &S, y0: &[f64], method: Method) -> String {
     let (s, hash) = pinned_run(sys, y0, method);
     format!("{label}: {} steps, {} rejected, {} evaluations, fnv1a {hash}", s.steps, s.rejected, s.rhs_evals)
 }
@@ -125,35 +66,46 @@ fn tolerances(tol: f64) -> Tolerances {
     Tolerances { rtol: tol, atol: tol }
 }
 
+/// The pins of `sys` (named `name`, starting at `y0`) by dopri5 and dop853 at three tolerances
+/// and rk4 at one step.
+fn erk_lines<S: System>(name: &str, sys: &S, y0: &[f64]) -> Vec<String> {
+    let mut lines = Vec::new();
+    for tab in [&tableau::DOPRI5, &tableau::DOP853] {
+        for tol in [1e-6, 1e-9, 1e-12] {
+            let m = Method::Adaptive(tab, tolerances(tol));
+            lines.push(adaptive_line(&format!("{name} {} {tol:e}", tab.name), sys, y0, m));
+        }
+    }
+    let (s, hash) = pinned_run(sys, y0, Method::Fixed(&tableau::RK4, 0.03));
+    lines.push(format!("{name} rk4 0.03: {} steps, fnv1a {hash}", s.steps));
+    lines
+}
+
+/// The pins of `sys` by vern7, vern9 and the Taylor method at three tolerances.
+fn verner_taylor_lines<S: System>(name: &str, sys: &S, y0: &[f64]) -> Vec<String> {
+    let mut lines = Vec::new();
+    for tol in [1e-6, 1e-9, 1e-12] {
+        for tab in [&tableau::VERN7, &tableau::VERN9] {
+            let m = Method::Adaptive(tab, tolerances(tol));
+            lines.push(adaptive_line(&format!("{name} {} {tol:e}", tab.name), sys, y0, m));
+        }
+        let m = Method::Taylor(tolerances(tol));
+        lines.push(adaptive_line(&format!("{name} taylor {tol:e}"), sys, y0, m));
+    }
+    lines
+}
+
 #[test]
 fn integrator_statistics_are_pinned() {
-    let mut lines = Vec::new();
-    for (name, sys, y0) in problems() {
-        for tab in [&tableau::DOPRI5, &tableau::DOP853] {
-            for tol in [1e-6, 1e-9, 1e-12] {
-                let m = Method::Adaptive(tab, tolerances(tol));
-                lines.push(adaptive_line(&format!("{name} {} {tol:e}", tab.name), sys, y0, m));
-            }
-        }
-        let (s, hash) = pinned_run(sys, y0, Method::Fixed(&tableau::RK4, 0.03));
-        lines.push(format!("{name} rk4 0.03: {} steps, fnv1a {hash}", s.steps));
-    }
+    let mut lines = erk_lines("oscillator", &Oscillator, &[0.0, 1.0]);
+    lines.extend(erk_lines("gaussian", &Gaussian, &[1.0]));
     insta::assert_snapshot!(lines.join("\n"));
 }
 
 #[test]
 fn verner_and_taylor_statistics_are_pinned() {
-    let mut lines = Vec::new();
-    for (name, sys, y0) in problems() {
-        for tol in [1e-6, 1e-9, 1e-12] {
-            for tab in [&tableau::VERN7, &tableau::VERN9] {
-                let m = Method::Adaptive(tab, tolerances(tol));
-                lines.push(adaptive_line(&format!("{name} {} {tol:e}", tab.name), sys, y0, m));
-            }
-            let m = Method::Taylor(tolerances(tol));
-            lines.push(adaptive_line(&format!("{name} taylor {tol:e}"), sys, y0, m));
-        }
-    }
+    let mut lines = verner_taylor_lines("oscillator", &Oscillator, &[0.0, 1.0]);
+    lines.extend(verner_taylor_lines("gaussian", &Gaussian, &[1.0]));
     insta::assert_snapshot!(lines.join("\n"));
 }
 
