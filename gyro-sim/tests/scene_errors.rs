@@ -233,3 +233,53 @@ fn a_quantity_given_twice_in_two_spellings_names_both() {
     );
     assert!(e.contains("`U3` is given twice: `u3` sets the same quantity"), "{e}");
 }
+
+/// `gyro-sim run` with `args` in `dir`: its exit success and what it printed.
+fn run_in(dir: &std::path::Path, args: &[&str]) -> (bool, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_gyro-sim"))
+        .arg("run")
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap();
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stderr).to_string() + &String::from_utf8_lossy(&out.stdout),
+    )
+}
+
+#[test]
+fn the_command_lines_method_and_tolerances_replace_the_scenes_and_bad_ones_are_named() {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("integrator_arguments");
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = "model = \"gimbal_gyroscope\"\nt_final = 0.5\noutput_step = 0.05\n[integrator]\nmethod = \"dopri5\"\nrtol = 1e-6\natol = 1e-6\n";
+    std::fs::write(dir.join("scene.toml"), scene).unwrap();
+    let steps = |said: &str| -> usize {
+        let head = said.split(" steps (").next().unwrap();
+        head.rsplit(' ').next().unwrap().parse().unwrap()
+    };
+    let (ok, file) = run_in(&dir, &["scene.toml", "--out", "file"]);
+    assert!(ok, "{file}");
+    let (ok, tight) = run_in(&dir, &["scene.toml", "--rtol", "1e-11", "--atol", "1e-11", "--out", "tight"]);
+    assert!(ok, "{tight}");
+    assert!(steps(&tight) > 3 * steps(&file), "tighter tolerances take more steps: {file}\n{tight}");
+    let (ok, vern9) = run_in(
+        &dir,
+        &["scene.toml", "--method", "VERN9", "--rtol", "1e-11", "--atol", "1e-11", "--out", "v"],
+    );
+    assert!(ok, "{vern9}");
+    assert!(steps(&vern9) < steps(&tight), "a ninth-order method takes fewer steps: {tight}\n{vern9}");
+    let (ok, said) = run_in(&dir, &["scene.toml", "--rtol", "-1e-9", "--out", "bad"]);
+    assert!(!ok && said.contains("`-1e-9` is not a positive number"), "{said}");
+    let (ok, said) = run_in(&dir, &["scene.toml", "--method", "euler", "--out", "bad"]);
+    assert!(!ok && said.contains("unknown integrator `euler` (methods: dop853"), "{said}");
+    assert!(!dir.join("bad").exists(), "nothing is written for refused arguments");
+    let gimbal = include_str!("../../kane-model/models/gimbal_gyroscope.al");
+    std::fs::write(dir.join("gimbal.al"), gimbal).unwrap();
+    let model = ["--model", "gimbal.al", "--engine", "instant"];
+    let (ok, said) = run_in(&dir, &[&model[..], &["--t-final", "-3", "--out", "bad"]].concat());
+    assert!(!ok && said.starts_with("--t-final: error: t_final must be positive, not -3"), "{said}");
+    let (ok, said) =
+        run_in(&dir, &[&model[..], &["--method", "rk4", "--rtol", "1e-10", "--print-scene"]].concat());
+    assert!(ok && said.contains("method = \"rk4\"\nrtol = 1e-10\n"), "{said}");
+}

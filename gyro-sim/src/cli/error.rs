@@ -124,6 +124,18 @@ pub enum CliError {
         /// The argument.
         text: String,
     },
+    /// A `--method` names no integrator.
+    #[error("unknown integrator `{name}` ({}, or auto)", crate::ode::methods_help())]
+    UnknownMethod {
+        /// The name given.
+        name: String,
+    },
+    /// A `--rtol` or `--atol` is not a positive number.
+    #[error("`{text}` is not a positive number (for example 1e-9)")]
+    NotPositive {
+        /// The argument.
+        text: String,
+    },
     /// A sweep was stopped by a signal; the members done are kept.
     #[error("{by}: {kept} members done are kept in {}; run the same command again to resume", journal.display())]
     Interrupted {

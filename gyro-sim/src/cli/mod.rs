@@ -26,7 +26,7 @@ use file_model::model_file_of;
 
 use crate::models::{FileRun, ModelFile, Registry};
 use crate::problem::ModelEntry;
-use crate::scene::Scene;
+use crate::scene::{IntegratorOverrides, Scene};
 
 /// Simulate models derived with Kane's method.
 #[derive(Parser)]
@@ -141,8 +141,18 @@ struct RunArgs {
     #[arg(long = "set", value_name = "NAME=VALUE", requires = "model", value_parser = parse_set)]
     sets: Vec<(String, String)>,
     /// End time (overrides the file's TFINAL).
-    #[arg(long, requires = "model")]
+    #[arg(long, requires = "model", allow_hyphen_values = true)]
     t_final: Option<f64>,
+    /// The integrator, in place of the scene's (or the model file's): dop853, dopri5, vern7,
+    /// vern9, taylor, rk4, or auto (picked by the tolerances).
+    #[arg(long, value_parser = model_scene::parse_method)]
+    method: Option<String>,
+    /// Relative tolerance, in place of the scene's (or the file's RELERR).
+    #[arg(long, allow_hyphen_values = true, value_parser = model_scene::parse_tolerance)]
+    rtol: Option<f64>,
+    /// Absolute tolerance, in place of the scene's (or the file's ABSERR).
+    #[arg(long, allow_hyphen_values = true, value_parser = model_scene::parse_tolerance)]
+    atol: Option<f64>,
     /// How a model file's equations run: compiled (cached native code, built once per file
     /// version) or instant (no compilation; slower per step).
     #[arg(long, value_enum, default_value = "compiled")]
@@ -157,6 +167,18 @@ struct RunArgs {
     /// Output folder.
     #[arg(long, required_unless_present = "print_scene")]
     out: Option<PathBuf>,
+}
+
+impl RunArgs {
+    /// The integrator settings given on the command line.
+    fn integrator(&self) -> IntegratorOverrides {
+        IntegratorOverrides { method: self.method.clone(), rtol: self.rtol, atol: self.atol }
+    }
+
+    /// What a `--model` run was given, for errors pointed at the arguments.
+    fn given<'a>(&'a self, model: &'a Path, integrator: &'a IntegratorOverrides) -> origins::Given<'a> {
+        origins::Given { model, sets: &self.sets, t_final: self.t_final, integrator }
+    }
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -221,7 +243,7 @@ fn run_command(
     compiled: Option<CompiledModel>,
 ) -> Result<ExitCode, CliError> {
     let scene = match &args.scene {
-        Some(path) => Some(Scene::load(path)?),
+        Some(path) => Some(Scene::load_with(path, &args.integrator())?),
         None => None,
     };
     let file_path = match (&scene, &args.model) {
@@ -256,7 +278,8 @@ fn run_command(
     };
     let Some(scene) = scene else {
         let scene = model_scene(&file_path, &run, &entry, args)?;
-        let given = origins::Given { model: &file_path, sets: &args.sets, t_final: args.t_final };
+        let integrator = args.integrator();
+        let given = args.given(&file_path, &integrator);
         return run_scene(&scene, registry, entry, file.as_ref(), args)
             .map_err(|e| at_arguments(e, &scene.source, &given));
     };
@@ -312,9 +335,11 @@ fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
 
 /// The scene of a `--model` run.
 fn model_scene(path: &Path, run: &FileRun, entry: &ModelEntry, args: &RunArgs) -> Result<Scene, CliError> {
-    let model_args = ModelRunArgs { sets: args.sets.clone(), t_final: args.t_final };
+    let integrator = args.integrator();
+    let model_args =
+        ModelRunArgs { sets: args.sets.clone(), t_final: args.t_final, integrator: integrator.clone() };
     let text = scene_text(&path.display().to_string(), run, entry.info, &model_args)?;
-    let given = origins::Given { model: path, sets: &args.sets, t_final: args.t_final };
+    let given = args.given(path, &integrator);
     let mut scene =
         Scene::parse(origins::GENERATED, &text).map_err(|e| at_arguments(e.into(), &text, &given))?;
     // The model is found under the path as given (not relative to a scene file).

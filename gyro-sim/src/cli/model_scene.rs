@@ -6,11 +6,15 @@ use kane_model::runtime::ModelInfo;
 
 use super::CliError;
 use crate::models::FileRun;
+use crate::scene::IntegratorOverrides;
 
 /// End time when neither the command line nor the file's TFINAL gives one.
 const DEFAULT_T_FINAL: f64 = 10.0;
 /// Output rows when the file gives no INTEGSTP.
 const DEFAULT_ROWS: f64 = 100.0;
+/// Method when the command line gives none (Autolev's generated programs use an adaptive
+/// Runge-Kutta method of this family).
+const DEFAULT_METHOD: &str = "dop853";
 /// Tolerance when the file gives no ABSERR / RELERR.
 const DEFAULT_TOLERANCE: f64 = 1e-8;
 
@@ -21,6 +25,25 @@ pub struct ModelRunArgs {
     pub sets: Vec<(String, String)>,
     /// The end time given with `--t-final`.
     pub t_final: Option<f64>,
+    /// The integrator settings given (`--method`, `--rtol`, `--atol`).
+    pub integrator: IntegratorOverrides,
+}
+
+/// A `--method` value: a method's name or `auto`.
+pub fn parse_method(text: &str) -> Result<String, CliError> {
+    let name = text.trim().to_ascii_lowercase();
+    match name == crate::ode::AUTO || crate::ode::by_name(&name).is_some() {
+        true => Ok(name),
+        false => Err(CliError::UnknownMethod { name: text.to_string() }),
+    }
+}
+
+/// A `--rtol` or `--atol` value: a positive, finite number.
+pub fn parse_tolerance(text: &str) -> Result<f64, CliError> {
+    match text.trim().parse::<f64>() {
+        Ok(x) if x > 0.0 && x.is_finite() => Ok(x),
+        _ => Err(CliError::NotPositive { text: text.to_string() }),
+    }
 }
 
 /// Splits `NAME=VALUE`.
@@ -33,8 +56,8 @@ pub fn parse_set(text: &str) -> Result<(String, String), CliError> {
     }
 }
 
-/// The scene text for `model_path`: times, tolerances and outputs from the file (command line
-/// first), `--set` values under `[parameters]` or `[initial]`; an error naming a `--set` that
+/// The scene text for `model_path`: times, method, tolerances and outputs from the file (command
+/// line first), `--set` values under `[parameters]` or `[initial]`; an error naming a `--set` that
 /// is neither a parameter nor a state.
 pub fn scene_text(
     model_path: &str,
@@ -51,14 +74,15 @@ pub fn scene_text(
     }
     let quoted: Vec<String> = outputs.iter().map(|n| format!("{n:?}")).collect();
     let mut text = format!(
-        "title = {:?}\nmodel = {:?}\nt_final = {}\noutput_step = {}\noutputs = [{}]\n\n[integrator]\nmethod = \"dop853\"\nrtol = {:e}\natol = {:e}\n",
+        "title = {:?}\nmodel = {:?}\nt_final = {}\noutput_step = {}\noutputs = [{}]\n\n[integrator]\nmethod = {:?}\nrtol = {:e}\natol = {:e}\n",
         format!("{} (model file)", info.name),
         model_path,
         toml_number(t_final),
         toml_number(step),
         quoted.join(", "),
-        run.relerr.unwrap_or(DEFAULT_TOLERANCE),
-        run.abserr.unwrap_or(DEFAULT_TOLERANCE),
+        args.integrator.method.as_deref().unwrap_or(DEFAULT_METHOD),
+        args.integrator.rtol.or(run.relerr).unwrap_or(DEFAULT_TOLERANCE),
+        args.integrator.atol.or(run.abserr).unwrap_or(DEFAULT_TOLERANCE),
     );
     let (mut params, mut initial) = (String::new(), String::new());
     for (name, value) in &args.sets {
@@ -113,6 +137,31 @@ mod tests {
         ModelRunArgs {
             sets: sets.iter().map(|(n, v)| (n.to_string(), v.to_string())).collect(),
             t_final: None,
+            integrator: IntegratorOverrides::default(),
+        }
+    }
+
+    #[test]
+    fn the_command_lines_method_and_tolerances_come_before_the_files() {
+        let run = FileRun { abserr: Some(1e-7), relerr: Some(1e-6), ..FileRun::default() };
+        let scene = |integrator: IntegratorOverrides| {
+            let text = scene_text("g.al", &run, &INFO, &ModelRunArgs { integrator, ..args(&[]) }).unwrap();
+            Scene::parse("<command line>", &text).unwrap().integrator
+        };
+        let file = scene(IntegratorOverrides::default());
+        assert_eq!((file.method.name(), file.rtol, file.atol), ("dop853", 1e-6, 1e-7));
+        let given = IntegratorOverrides { method: Some("vern9".into()), rtol: Some(1e-11), atol: None };
+        let given = scene(given);
+        assert_eq!((given.method.name(), given.rtol, given.atol), ("vern9", 1e-11, 1e-7));
+        let auto = IntegratorOverrides { method: Some("auto".into()), rtol: Some(1e-10), atol: Some(1e-10) };
+        assert_eq!(scene(auto).method.name(), "vern9", "auto picks by the tolerances given");
+        assert_eq!(parse_method("VERN7").unwrap(), "vern7");
+        let e = parse_method("euler").unwrap_err().to_string();
+        assert!(e.starts_with("unknown integrator `euler` (methods: dop853"), "{e}");
+        assert_eq!(parse_tolerance("1e-9").unwrap(), 1e-9);
+        for bad in ["-1e-9", "0", "inf", "NaN", "tight"] {
+            let e = parse_tolerance(bad).unwrap_err().to_string();
+            assert_eq!(e, format!("`{bad}` is not a positive number (for example 1e-9)"));
         }
     }
 

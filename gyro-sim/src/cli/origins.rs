@@ -5,6 +5,8 @@
 
 use std::path::Path;
 
+use crate::scene::IntegratorOverrides;
+
 /// The name a generated scene is parsed under.
 pub const GENERATED: &str = "<command line>";
 
@@ -16,6 +18,8 @@ pub struct Given<'a> {
     pub sets: &'a [(String, String)],
     /// `--t-final`, if given.
     pub t_final: Option<f64>,
+    /// `--method`, `--rtol` and `--atol`, where given.
+    pub integrator: &'a IntegratorOverrides,
 }
 
 /// `message` with a place in the generated scene `source` replaced by where the value came from.
@@ -48,6 +52,9 @@ fn origin_of(line: &str, given: &Given<'_>) -> String {
         "t_final" if given.t_final.is_some() => "--t-final".to_string(),
         "t_final" => format!("{file}: INPUT TFINAL"),
         "output_step" => format!("{file}: INPUT INTEGSTP"),
+        "method" if given.integrator.method.is_some() => "--method".to_string(),
+        "rtol" if given.integrator.rtol.is_some() => "--rtol".to_string(),
+        "atol" if given.integrator.atol.is_some() => "--atol".to_string(),
         "rtol" => format!("{file}: INPUT RELERR"),
         "atol" => format!("{file}: INPUT ABSERR"),
         "outputs" => format!("{file}: OUTPUT"),
@@ -62,7 +69,8 @@ mod tests {
     const SCENE: &str = "title = \"g (model file)\"\nmodel = \"g.al\"\nt_final = 5.0\noutput_step = 0.05\n\n[initial]\n\"Q1\" = \"abc\"\n";
 
     fn given(sets: &[(String, String)]) -> Given<'_> {
-        Given { model: Path::new("g.al"), sets, t_final: None }
+        const NONE: &IntegratorOverrides = &IntegratorOverrides { method: None, rtol: None, atol: None };
+        Given { model: Path::new("g.al"), sets, t_final: None, integrator: NONE }
     }
 
     #[test]

@@ -111,6 +111,18 @@ impl Axle {
     }
 }
 
+/// Integrator settings given outside the scene file (`gyro-sim run --method --rtol --atol`):
+/// each one given replaces the `[integrator]` table's.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct IntegratorOverrides {
+    /// The method's name (`auto` picks one by the tolerances).
+    pub method: Option<String>,
+    /// Relative tolerance.
+    pub rtol: Option<f64>,
+    /// Absolute tolerance.
+    pub atol: Option<f64>,
+}
+
 /// Integrator settings.
 #[derive(Clone, Debug)]
 pub struct Integrator {

@@ -14,7 +14,7 @@ use super::event_decls::{self, EventFile};
 use super::grid::too_many_rows;
 use super::specified_table::Table;
 use super::text::{SceneError, Span, Text};
-use super::{Axle, Integrator, Scene, Value, ViewSpec};
+use super::{Axle, Integrator, IntegratorOverrides, Scene, Value, ViewSpec};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -71,24 +71,28 @@ impl Text<'_> {
         }
     }
 
-    /// The integrator table: a known method, positive tolerances, accuracy only if adaptive.
+    /// The integrator table (with `overrides` in place of its entries): a known method,
+    /// positive tolerances, accuracy only if adaptive.
     fn integrator(
         &self,
         integ: Option<IntegratorFile>,
-        t_final: f64,
-        output_step: f64,
+        overrides: &IntegratorOverrides,
+        (t_final, output_step): (f64, f64),
     ) -> Result<Integrator, SceneError> {
         let integ = integ.unwrap_or_default();
-        let named =
-            integ.method.as_ref().map_or(crate::ode::AUTO.to_string(), |m| m.get_ref().to_ascii_lowercase());
+        let named = overrides
+            .method
+            .clone()
+            .or_else(|| integ.method.as_ref().map(|m| m.get_ref().clone()))
+            .map_or(crate::ode::AUTO.to_string(), |m| m.to_ascii_lowercase());
         let asked = match &integ.accuracy {
             Some(_) => Some(self.positive(&integ.accuracy, 0.0, "accuracy")?),
             None => None,
         };
         // Without tolerances, an accuracy asked is where the refinement starts.
         let default_tol = asked.unwrap_or(1e-9);
-        let rtol = self.positive(&integ.rtol, default_tol, "rtol")?;
-        let atol = self.positive(&integ.atol, default_tol, "atol")?;
+        let rtol = overrides.rtol.map_or_else(|| self.positive(&integ.rtol, default_tol, "rtol"), Ok)?;
+        let atol = overrides.atol.map_or_else(|| self.positive(&integ.atol, default_tol, "atol"), Ok)?;
         // The one place a method's name is looked up: the scene carries the method found.
         let found = if named == crate::ode::AUTO {
             Some(crate::ode::for_tolerances(crate::ode::Tolerances { rtol, atol }))
@@ -96,14 +100,15 @@ impl Text<'_> {
             crate::ode::by_name(&named)
         };
         let Some(method) = found else {
-            let span = integ.method.as_ref().map_or(0..0, |m| m.span());
+            let span =
+                integ.method.as_ref().filter(|_| overrides.method.is_none()).map_or(0..0, |m| m.span());
             return Err(self.err(span, format!("unknown integrator `{named}`"), &crate::ode::methods_help()));
         };
         if let (Some(a), false) = (&integ.accuracy, method.adaptive) {
             return Err(self.err(
                 a.span(),
                 format!("accuracy needs an adaptive method: {} has a fixed step", method.name()),
-                "use method = \"dop853\" or \"dopri5\", or remove accuracy",
+                "use an adaptive method (method = \"dop853\" or \"vern9\", or --method), or remove accuracy",
             ));
         }
         let step = self.positive(&integ.step, output_step / 10.0, "step")?;
@@ -373,6 +378,11 @@ fn view_span(source: &str) -> Span {
 impl Scene {
     /// Reads and validates a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        Scene::load_with(path, &IntegratorOverrides::default())
+    }
+
+    /// Reads and validates a scene file, with `overrides` in place of its integrator settings.
+    pub fn load_with(path: &Path, overrides: &IntegratorOverrides) -> Result<Scene, SceneError> {
         let file = path.display().to_string();
         let source = std::fs::read_to_string(path).map_err(|e| SceneError {
             file: file.clone(),
@@ -381,11 +391,20 @@ impl Scene {
             message: format!("cannot read the scene: {e}"),
             help: "give the path of a scene .toml file, e.g. gyro-sim/scenes/paper/trial3.toml".into(),
         })?;
-        Scene::parse(&file, &source)
+        Scene::parse_with(&file, &source, overrides)
     }
 
     /// Parses and validates a scene from its text (the model is looked up when it is resolved).
     pub fn parse(file: &str, source: &str) -> Result<Scene, SceneError> {
+        Scene::parse_with(file, source, &IntegratorOverrides::default())
+    }
+
+    /// [`Scene::parse`] with `overrides` in place of the text's integrator settings.
+    pub fn parse_with(
+        file: &str,
+        source: &str,
+        overrides: &IntegratorOverrides,
+    ) -> Result<Scene, SceneError> {
         let text = Text { file, source };
         let raw: SceneFile = toml::from_str(source).map_err(|e| {
             text.err(
@@ -402,7 +421,7 @@ impl Scene {
             )
         })?;
         let (t_final, output_step) = text.times(raw.t_final, raw.output_step)?;
-        let integrator = text.integrator(raw.integrator, t_final, output_step)?;
+        let integrator = text.integrator(raw.integrator, overrides, (t_final, output_step))?;
         let outputs =
             raw.outputs.unwrap_or_default().into_iter().map(|o| (o.get_ref().clone(), o.span())).collect();
         let mut scene = Scene {
