@@ -258,7 +258,8 @@ fn main() -> std::process::ExitCode {{
     let entry = gyro_sim::ModelEntry::of::<model::Model>();
     let key = gyro_sim::registry_key(include_str!(concat!("../../", {model_file:?})));
     let compiled = gyro_sim::CompiledModel {{ key, entry, run }};
-    gyro_sim::main_with(gyro_sim::Registry::builtin(), Some(compiled))
+    // The file's model alone: the built-in models stay out of this binary.
+    gyro_sim::main_with(gyro_sim::Registry::new(), Some(compiled))
 }}
 "#,
         path = file.path.display().to_string(),
