@@ -90,3 +90,26 @@ fn bad_requests_get_a_4xx_and_the_server_goes_on() {
     let (status, page) = request(a, "GET", "/", b"");
     assert!(status == 200 && String::from_utf8_lossy(&page).contains("gyroState"));
 }
+
+#[test]
+fn clients_stalled_sending_their_bodies_hold_no_answer_slot() {
+    let server = serve(&scene_path("paper/trial3.toml"));
+    let a = server.address.as_str();
+    // More stalled clients than answer slots (64), each holding its connection open; bodies over
+    // 1 KiB, which the HTTP library hands over unread.
+    let stalled: Vec<_> = (0..80)
+        .filter_map(|_| {
+            let mut s = std::net::TcpStream::connect(a).ok()?;
+            let head = b"POST /api/run HTTP/1.1\r\nHost: x\r\nContent-Length: 5000\r\n\r\n{\"va";
+            std::io::Write::write_all(&mut s, head).ok()?;
+            Some(s)
+        })
+        .collect();
+    assert_eq!(stalled.len(), 80);
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    let (status, data) = post_json(a, "/api/run", r#"{"values": {"U3": 120}}"#);
+    assert_eq!(status, 200, "a client behind 80 stalled ones is answered: {data}");
+    drop(stalled);
+    let (status, _) = post_json(a, "/api/run", r#"{"values": {"U3": 130}}"#);
+    assert_eq!(status, 200);
+}

@@ -44,7 +44,7 @@ pub enum ServeError {
     },
 }
 
-/// Requests answered at once, each on its own thread; more are answered 503 at once.
+/// Requests answered at once (after their bodies are read); more are answered 503 at once.
 const MAX_ACTIVE: usize = 64;
 
 /// How often the listener looks for a stop signal.
@@ -77,26 +77,17 @@ pub fn serve(app: App, port: u16, started: impl FnOnce(&str)) -> Result<(), Serv
                 continue;
             }
         };
-        if active.fetch_add(1, Ordering::SeqCst) >= MAX_ACTIVE {
-            active.fetch_sub(1, Ordering::SeqCst);
-            let busy = Reply::error(503, "the server is answering too many requests: try again");
-            let _ = request.respond(response(busy));
-            continue;
-        }
-        let (app, done) = (Arc::clone(&app), Arc::clone(&active));
-        let spawned = std::thread::Builder::new().name("request".into()).spawn(move || {
-            respond(request, &app);
-            done.fetch_sub(1, Ordering::SeqCst);
-        });
-        if spawned.is_err() {
-            active.fetch_sub(1, Ordering::SeqCst);
-        }
+        let (app, active) = (Arc::clone(&app), Arc::clone(&active));
+        // The thread reads the body first: a client stalled in sending it holds no answer slot.
+        let _ =
+            std::thread::Builder::new().name("request".into()).spawn(move || respond(request, &app, &active));
     }
     Ok(())
 }
 
-/// Reads one request's body (at most [`request::MAX_BODY`] bytes), answers and replies.
-fn respond(mut request: tiny_http::Request, app: &App) {
+/// Reads one request's body (at most [`request::MAX_BODY`] bytes), then, in one of
+/// [`MAX_ACTIVE`] answer slots (a 503 when none is free), answers and replies.
+fn respond(mut request: tiny_http::Request, app: &App, active: &AtomicUsize) {
     let method = request.method().as_str().to_ascii_uppercase();
     let path = request.url().to_string();
     let reply = if request.body_length().is_some_and(|n| n > request::MAX_BODY) {
@@ -106,8 +97,14 @@ fn respond(mut request: tiny_http::Request, app: &App) {
         let read = request.as_reader().take(request::MAX_BODY as u64 + 1).read_to_end(&mut body);
         match read {
             Err(e) => Reply::error(400, &format!("the request body could not be read: {e}")),
+            Ok(_) if active.fetch_add(1, Ordering::SeqCst) >= MAX_ACTIVE => {
+                active.fetch_sub(1, Ordering::SeqCst);
+                Reply::error(503, "the server is answering too many requests: try again")
+            }
             Ok(_) => {
-                catch_unwind(AssertUnwindSafe(|| answer(app, &method, &path, &body))).unwrap_or_else(|_| {
+                let reply = catch_unwind(AssertUnwindSafe(|| answer(app, &method, &path, &body)));
+                active.fetch_sub(1, Ordering::SeqCst);
+                reply.unwrap_or_else(|_| {
                     Reply::error(500, "the run stopped on an internal error; the server goes on")
                 })
             }
