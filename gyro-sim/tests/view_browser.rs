@@ -23,7 +23,7 @@ const WIDTH: u32 = 800;
 const HEIGHT: u32 = 600;
 
 fn trajectory() -> Trajectory {
-    let names = ["Q_E0", "Q_E1", "Q_E2", "Q_E3", "L_N1", "L_N2", "L_N3"];
+    let names = ["Q_E0", "Q_E1", "Q_E2", "Q_E3", "L_N1", "L_N2", "L_N3", "W_N1", "W_N2", "W_N3"];
     let columns = names
         .iter()
         .map(|n| Column { name: n.to_string(), unit: String::new(), output: true, hidden: false })
@@ -32,7 +32,7 @@ fn trajectory() -> Trajectory {
         .map(|i| {
             let t = i as f64 * 0.01;
             let half = RATE * t / 2.0;
-            vec![t, half.cos(), 0.0, 0.0, half.sin(), -0.6, 0.0, 1.0]
+            vec![t, half.cos(), 0.0, 0.0, half.sin(), -0.6, 0.0, 1.0, 1.5, 0.0, 0.0]
         })
         .collect();
     Trajectory {
@@ -279,6 +279,31 @@ fn an_arrow_toggled_off_leaves_the_picture() {
     );
     assert_eq!(where_(&off, is_yellow).len(), 0, "no yellow once the arrow is off");
     assert!(where_(&off, is_magenta).len() > 500, "the rest of the scene is still drawn");
+}
+
+fn is_cyan(p: &[u8]) -> bool {
+    p[0] < 90 && p[1] > 150 && p[2] > 150
+}
+
+#[test]
+fn an_arrow_through_a_body_is_drawn_over_it() {
+    let dir = folder("arrow_through");
+    let through = ArrowView {
+        label: "W".to_string(),
+        colour: "#00ffff".to_string(),
+        columns: ["W_N1", "W_N2", "W_N3"].map(String::from),
+        scale: 1.0,
+    };
+    let mut spec = view();
+    spec.arrows = vec![through];
+    let page = page_of(&dir, &spec);
+    // At t = 0 the ball is centred on the arrow's shaft (x = ARM), in front of it.
+    let shot = screenshot(&page, &fragment(0.0, "W"), "arrow_through");
+    let (cx, cy) = project(ball_at(0.0), shot.1, shot.2);
+    let cyan = where_(&shot, is_cyan);
+    let over_ball = cyan.iter().filter(|p| (p.0 - cx).hypot(p.1 - cy) < 6.0).count();
+    assert!(over_ball > 0, "the shaft shows across the ball's centre ({cx:.0}, {cy:.0})");
+    assert!(where_(&shot, is_magenta).len() > 500, "the ball is drawn");
 }
 
 #[test]

@@ -256,6 +256,12 @@ function addArrows(scene, size) {
   const panel = document.getElementById('arrows');
   return data.view.arrows.map((a) => {
     const helper = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1, a.colour);
+    // Drawn after the bodies and over them: a rotor around the origin never hides L or omega.
+    for (const part of [helper.line, helper.cone]) {
+      part.material.depthTest = false;
+      part.material.transparent = true;
+      part.renderOrder = 2;
+    }
     const tag = label(a.label, a.colour, size * 0.07);
     const arrow = { spec: a, helper, tag, on: shown === null || shown.has(a.label) };
     scene.add(helper, tag);
