@@ -72,13 +72,13 @@ pub fn run_with(scene: &Scene, registry: &Registry, out_dir: Option<&Path>) -> R
     if problem.accuracy.is_some() {
         // Refinement compares whole runs in memory; the run chosen is written at the end.
         let trajectory = solve(&problem, None)?;
-        let written = output::write_set(&trajectory, scene.view.as_ref(), dir)?;
+        let written = output::write_set(&trajectory, problem.view.as_ref(), dir)?;
         return Ok(RunSummary { trajectory, written: Some(written) });
     }
     let set = output::StreamedSet::begin(dir, &crate::solve::columns(&problem))?;
     match solve(&problem, Some(&set.stream())) {
         Ok(trajectory) => {
-            let written = set.finish(&trajectory, scene.view.as_ref())?;
+            let written = set.finish(&trajectory, problem.view.as_ref())?;
             Ok(RunSummary { trajectory, written: Some(written) })
         }
         Err(error) => match set.keep_partial()? {

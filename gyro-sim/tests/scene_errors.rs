@@ -283,3 +283,15 @@ fn the_command_lines_method_and_tolerances_replace_the_scenes_and_bad_ones_are_n
         run_in(&dir, &[&model[..], &["--method", "rk4", "--rtol", "1e-10", "--print-scene"]].concat());
     assert!(ok && said.contains("method = \"rk4\"\nrtol = 1e-10\n"), "{said}");
 }
+
+#[test]
+fn a_view_length_naming_no_parameter_is_an_error_at_the_view() {
+    let head = "model = \"heavy_top\"\nt_final = 1.0\noutput_step = 0.1\n[axle]\ntilt = \"30 deg\"\nspin = 5\nquaternion = [\"E4\", \"E1\", \"E2\", \"E3\"]\nrates = [\"W1\", \"W2\", \"W3\"]\n";
+    let view = "[[view.bodies]]\nname = \"rotor\"\nshape = { kind = \"ellipsoid\", a = \"R\", b = 1.0, c = 0.2 }\ncolour = \"#3b7dd8\"\norientation = { quaternion = [\"E4\", \"E1\", \"E2\", \"E3\"] }\noffset = [0.0, 0.0, \"D\"]\n";
+    let e = error(&format!("{head}{view}"));
+    assert!(e.starts_with("bad.toml:9:1: error: view: body rotor reads parameter `R`, which the model does not have (it has: "), "{e}");
+    let e = error(&format!("{head}{}", view.replace("\"R\"", "\"-1*D\"")));
+    assert!(e.contains("view: body rotor: shape sizes [-1.0, 1.0, 0.2] must be positive"), "{e}");
+    let e = error(&format!("{head}{}", view.replace("\"R\"", "\"R+1\"")));
+    assert!(e.contains("`R+1` is not a length: give a number, a parameter's name"), "{e}");
+}

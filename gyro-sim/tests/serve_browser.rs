@@ -132,6 +132,30 @@ fn trial_three_redraws_the_run_for_its_rotor_speed() {
     assert!((q2.to_degrees() - run).abs() < 1e-7, "Q2 at t = 2.5: page {} deg, run {run}", q2.to_degrees());
 }
 
+/// The rotor's position D and radius RR move and resize the drawn rotor, axle and trace with the
+/// run (the view's lengths name the parameters).
+#[test]
+fn the_rotor_drawn_follows_its_position_and_radius_sliders() {
+    let server = serve(&scene_path("ejs/cusp.toml"));
+    let dir = folder("browser_rotor_geometry");
+    let mut browser = Browser::open(&format!("http://{}/", server.address), &dir.join("profile"));
+    browser.wait_for("window.gyroState?.ready === true");
+    browser.eval("gyroView.pause()");
+    let drawn = |browser: &mut Browser| browser.eval("gyroView.bodiesDrawn()");
+    let centre_z = |v: &serde_json::Value, body: &str| v[body]["centre"][2].as_f64().unwrap();
+    let before = drawn(&mut browser);
+    assert_eq!(centre_z(&before, "rotor"), 1.0);
+    assert_eq!(move_slider_once(&mut browser, "D", 1.5)["redrew"], true);
+    assert_eq!(move_slider_once(&mut browser, "RR", 0.5)["redrew"], true);
+    let after = drawn(&mut browser);
+    assert!((centre_z(&after, "rotor") - 1.5).abs() < 1e-12, "the rotor at D: {after}");
+    assert!((centre_z(&after, "axle") - 1.8).abs() < 1e-12, "the axle's middle at 1.2 D: {after}");
+    let size = |v: &serde_json::Value, body: &str, k: usize| v[body]["size"][k].as_f64().unwrap();
+    assert!((size(&after, "rotor", 0) - 1.0).abs() < 1e-6, "the rotor's diameter 2 RR: {after}");
+    assert!((size(&after, "rotor", 0) / size(&before, "rotor", 0) - 0.5).abs() < 1e-6, "{before} {after}");
+    assert!((size(&after, "axle", 2) - 3.6).abs() < 1e-6, "the axle 2.4 D long: {after}");
+}
+
 /// Every EJS preset of the heavy top is served with its controls. Its spin slider is moved 10
 /// steps, and each move gets the answer `gyro-sim run` gives for that spin: the run drawn with
 /// no error, or, where the run fails (the no-spin preset's accuracy of 1e-8 cannot be reached

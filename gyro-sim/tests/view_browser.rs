@@ -57,19 +57,19 @@ fn view() -> ViewSpec {
         bodies: vec![
             BodyView {
                 name: "ball".to_string(),
-                shape: Shape::Ellipsoid { a: 0.22, b: 0.22, c: 0.22 },
+                shape: Shape::Ellipsoid { a: 0.22.into(), b: 0.22.into(), c: 0.22.into() },
                 colour: "#ff00ff".to_string(),
                 orientation: Orientation::Quaternion(q.clone()),
-                offset: [ARM, 0.0, 0.0],
+                offset: [ARM.into(), 0.0.into(), 0.0.into()],
                 opacity: 1.0,
                 axis: 3,
             },
             BodyView {
                 name: "arm".to_string(),
-                shape: Shape::Box { x: ARM, y: 0.04, z: 0.04 },
+                shape: Shape::Box { x: ARM.into(), y: 0.04.into(), z: 0.04.into() },
                 colour: "#808080".to_string(),
                 orientation: Orientation::Quaternion(q),
-                offset: [ARM / 2.0, 0.0, 0.0],
+                offset: [(ARM / 2.0).into(), 0.0.into(), 0.0.into()],
                 opacity: 1.0,
                 axis: 3,
             },
@@ -82,7 +82,7 @@ fn view() -> ViewSpec {
         }],
         traces: vec![TraceView {
             body: "ball".to_string(),
-            point: [ARM, 0.0, 0.0],
+            point: [ARM.into(), 0.0.into(), 0.0.into()],
             colour: "#202020".to_string(),
         }],
         up: 3,

@@ -600,6 +600,7 @@ fn a_rate_turning_nan_in_a_fixed_step_run_is_named_with_the_time_and_the_state_w
         written_picks: 2,
         unit_norms: Vec::new(),
         events: Vec::new(),
+        view: None,
     };
     let error = gyro_sim::solve_bound(&problem, &Blowup, None).unwrap_err().to_string();
     // Found again from the last good output (t = 1): the first stage past t = 1 of the step.

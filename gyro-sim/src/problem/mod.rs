@@ -69,6 +69,8 @@ pub struct Problem {
     pub unit_norms: Vec<Vec<usize>>,
     /// Events to find (`[[events]]`).
     pub events: Vec<EventSpec>,
+    /// The 3-D view (`[view]`), its lengths numbers for these parameter values.
+    pub view: Option<crate::scene::ViewSpec>,
 }
 
 /// How a model's equations run.

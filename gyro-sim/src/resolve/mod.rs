@@ -17,7 +17,7 @@ use crate::models::Registry;
 use crate::ode::{Method, Tolerances};
 use crate::problem::ModelEntry;
 use crate::problem::{Pick, Problem};
-use crate::scene::{output_times, plot_times, too_many_rows, Axle, Scene, SceneError, Value};
+use crate::scene::{output_times, plot_times, too_many_rows, Axle, Scene, SceneError, Value, ViewSpec};
 use initial::{norm_error, TopStart, UNIT_NORM_TOLERANCE};
 
 /// The problem a scene describes.
@@ -37,10 +37,12 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
     let times = output_times(scene.t_final, scene.output_step);
     let method = method(scene);
     let written = picks(scene, info)?;
+    let params = parameters(scene, entry)?;
     let problem = Problem {
         title: scene.title.clone(),
         model: entry.clone(),
-        params: parameters(scene, entry)?,
+        view: view_with(scene, info, &params)?,
+        params,
         initial: initial_state(scene, entry)?,
         times: times.clone(),
         plot_times: if has_dense_output(method) {
@@ -61,6 +63,22 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
     }
     plausible::check(scene, &problem)?;
     Ok(problem)
+}
+
+/// The scene's `[view]` with its lengths given by `params` (`offset = [0, 0, "D"]`); an error
+/// at `[view]` for a name that is not a parameter or a length that is not positive.
+fn view_with(scene: &Scene, info: &ModelInfo, params: &[f64]) -> Result<Option<ViewSpec>, SceneError> {
+    let Some(view) = &scene.view else { return Ok(None) };
+    let value_of =
+        |name: &str| info.param_names.iter().position(|p| p.eq_ignore_ascii_case(name)).map(|i| params[i]);
+    let view = view.with_parameters(&value_of, info.param_names).map_err(|e| {
+        scene.error_at(
+            scene.view_span.clone(),
+            e.to_string(),
+            "give lengths as numbers or the model's parameters",
+        )
+    })?;
+    Ok(Some(view))
 }
 
 /// Without `[axle]`, states named E1, E2, E3, E4 (the model language's `EULER` parameters as

@@ -14,12 +14,13 @@ mod grid;
 mod parse;
 mod specified_table;
 mod text;
+mod view_length;
 mod view_spec;
 
 pub use event_decls::{Direction, EventDecl, EventSource, Preset};
 pub use grid::{output_times, plot_times, too_many_rows};
 pub use text::SceneError;
-pub use view_spec::{ArrowView, BodyView, Orientation, Shape, TraceView, ViewError, ViewSpec};
+pub use view_spec::{ArrowView, BodyView, Length, Orientation, Shape, TraceView, ViewError, ViewSpec};
 
 use std::path::PathBuf;
 

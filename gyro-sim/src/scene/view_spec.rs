@@ -4,6 +4,8 @@
 
 use serde::{Deserialize, Serialize};
 
+pub use super::view_length::Length;
+
 /// What the page draws: bodies, arrows and traces, all about the support at the origin.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -45,9 +47,9 @@ pub struct BodyView {
     #[serde(default)]
     pub orientation: Orientation,
     /// Where the shape's centre is along the body's axes from the origin: `[0, 0, d]` for a
-    /// rotor at distance `d` along the body's z axis.
-    #[serde(default)]
-    pub offset: [f64; 3],
+    /// rotor at distance `d` along the body's z axis (`[0, 0, "D"]`: the parameter D's value).
+    #[serde(default = "origin")]
+    pub offset: [Length; 3],
     /// 1 opaque (the default) down to 0 unseen: below 1, arrows inside the body show through.
     #[serde(default = "one")]
     pub opacity: f64,
@@ -64,39 +66,39 @@ pub enum Shape {
     /// An ellipsoid with semi-axes `a`, `b`, `c` along body x, y, z.
     Ellipsoid {
         /// Semi-axis along x.
-        a: f64,
+        a: Length,
         /// Semi-axis along y.
-        b: f64,
+        b: Length,
         /// Semi-axis along z.
-        c: f64,
+        c: Length,
     },
     /// A cylinder about the body's z axis.
     Cylinder {
         /// Its radius.
-        radius: f64,
+        radius: Length,
         /// Its whole length along z.
-        length: f64,
+        length: Length,
     },
     /// A box with whole edge lengths along body x, y, z.
     Box {
         /// Edge along x.
-        x: f64,
+        x: Length,
         /// Edge along y.
-        y: f64,
+        y: Length,
         /// Edge along z.
-        z: f64,
+        z: Length,
     },
     /// A thin rod along the body's z axis, centred on the offset.
     Rod {
         /// Its length.
-        length: f64,
+        length: Length,
     },
     /// A ring (torus) about the z axis, in the x-y plane: a gimbal.
     Ring {
         /// Radius of its centre line.
-        radius: f64,
+        radius: Length,
         /// Radius of its tube.
-        tube: f64,
+        tube: Length,
     },
 }
 
@@ -143,6 +145,10 @@ fn one() -> f64 {
     1.0
 }
 
+fn origin() -> [Length; 3] {
+    [Length::Number(0.0), Length::Number(0.0), Length::Number(0.0)]
+}
+
 fn newtonian() -> String {
     "N".to_string()
 }
@@ -158,7 +164,7 @@ pub struct TraceView {
     /// The body's name.
     pub body: String,
     /// The point in body axes from the origin (the axle tip: `[0, 0, length]`).
-    pub point: [f64; 3],
+    pub point: [Length; 3],
     /// Its colour, `#rrggbb`.
     pub colour: String,
 }
@@ -203,6 +209,24 @@ pub enum ViewError {
     /// The trajectory has no rows.
     #[error("view: the run has no rows to show")]
     Empty,
+    /// A length still names a parameter: the view was not given the run's values.
+    #[error("view: {user} reads parameter `{name}`, whose value the view was not given (ViewSpec::with_parameters)")]
+    Unresolved {
+        /// Whose length.
+        user: String,
+        /// The parameter.
+        name: String,
+    },
+    /// A length names a parameter the model does not have.
+    #[error("view: {user} reads parameter `{name}`, which the model does not have (it has: {known})")]
+    UnknownParameter {
+        /// Whose length.
+        user: String,
+        /// The name given.
+        name: String,
+        /// The model's parameters, comma separated.
+        known: String,
+    },
 }
 
 impl ViewSpec {
@@ -213,7 +237,7 @@ impl ViewSpec {
             let user = format!("body {}", b.name);
             check_axis(&format!("{user}: axis"), b.axis)?;
             check_colour(&user, &b.colour)?;
-            check_finite(&user, "offset", &b.offset)?;
+            check_finite(&user, "offset", &numbers(&b.offset))?;
             check_shape(&user, &b.shape)?;
             if !(0.0..=1.0).contains(&b.opacity) {
                 return Err(ViewError::Number {
@@ -230,7 +254,7 @@ impl ViewSpec {
         for t in &self.traces {
             let user = format!("trace of {}", t.body);
             check_colour(&user, &t.colour)?;
-            check_finite(&user, "point", &t.point)?;
+            check_finite(&user, "point", &numbers(&t.point))?;
             if !self.bodies.iter().any(|b| b.name == t.body) {
                 let known: Vec<&str> = self.bodies.iter().map(|b| b.name.as_str()).collect();
                 return Err(ViewError::MissingBody { body: t.body.clone(), known: known.join(", ") });
@@ -277,14 +301,65 @@ fn check_finite(user: &str, what: &str, values: &[f64]) -> Result<(), ViewError>
     }
 }
 
+/// The numbers among `lengths` (parameters are checked once their values are known).
+fn numbers(lengths: &[Length]) -> Vec<f64> {
+    lengths.iter().filter_map(Length::number).collect()
+}
+
+impl Shape {
+    /// Its sizes, in the order written.
+    fn sizes(&self) -> Vec<Length> {
+        self.clone().sizes_mut().into_iter().map(|l| l.clone()).collect()
+    }
+
+    /// Its sizes to set, in the order written.
+    fn sizes_mut(&mut self) -> Vec<&mut Length> {
+        match self {
+            Shape::Ellipsoid { a, b, c } => vec![a, b, c],
+            Shape::Cylinder { radius, length } => vec![radius, length],
+            Shape::Box { x, y, z } => vec![x, y, z],
+            Shape::Rod { length } => vec![length],
+            Shape::Ring { radius, tube } => vec![radius, tube],
+        }
+    }
+}
+
+impl ViewSpec {
+    /// This view with every length a number: parameters' values from `value_of` (a run's), then
+    /// checked as [`ViewSpec::check`] does.
+    pub fn with_parameters(
+        &self,
+        value_of: &dyn Fn(&str) -> Option<f64>,
+        known: &[&str],
+    ) -> Result<ViewSpec, ViewError> {
+        let mut view = self.clone();
+        let resolve = |user: String, length: &mut Length| {
+            let value = length.with_parameters(value_of).map_err(|name| ViewError::UnknownParameter {
+                user,
+                name,
+                known: known.join(", "),
+            })?;
+            *length = Length::Number(value);
+            Ok::<(), ViewError>(())
+        };
+        for b in &mut view.bodies {
+            let user = format!("body {}", b.name);
+            for length in b.offset.iter_mut().chain(b.shape.sizes_mut()) {
+                resolve(user.clone(), length)?;
+            }
+        }
+        for t in &mut view.traces {
+            for length in &mut t.point {
+                resolve(format!("trace of {}", t.body), length)?;
+            }
+        }
+        view.check()?;
+        Ok(view)
+    }
+}
+
 fn check_shape(user: &str, shape: &Shape) -> Result<(), ViewError> {
-    let sizes: Vec<f64> = match *shape {
-        Shape::Ellipsoid { a, b, c } => vec![a, b, c],
-        Shape::Cylinder { radius, length } => vec![radius, length],
-        Shape::Box { x, y, z } => vec![x, y, z],
-        Shape::Rod { length } => vec![length],
-        Shape::Ring { radius, tube } => vec![radius, tube],
-    };
+    let sizes = numbers(&shape.sizes());
     if sizes.iter().all(|s| s.is_finite() && *s > 0.0) {
         Ok(())
     } else {

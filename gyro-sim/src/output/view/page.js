@@ -438,9 +438,18 @@ function main() {
   requestAnimationFrame(tick);
 }
 
-/** Draws another run of the same view (new `t` and columns), keeping the time and the camera. */
+/** Draws another run of the same view (new `t` and columns, bodies resized or moved with the
+ * parameters), keeping the time and the camera. */
 function load(next) {
+  const reshaped = JSON.stringify(next.view.bodies) !== JSON.stringify(data.view.bodies);
   data = next;
+  if (reshaped) {
+    for (const b of bodies) {
+      scene.remove(b.group);
+      b.group.traverse((o) => o.geometry?.dispose());
+    }
+    bodies = addBodies(scene);
+  }
   for (const line of traces) {
     scene.remove(line);
     line.geometry.dispose();
@@ -468,6 +477,16 @@ function expose() {
       update();
     },
     arrowsShown: () => Object.fromEntries(arrows.map((a) => [a.spec.label, a.helper.visible])),
+    /** Each body's drawn centre in its own axes and its drawn size (the box of its shape). */
+    bodiesDrawn: () =>
+      Object.fromEntries(
+        bodies.map((b) => {
+          const mesh = b.group.children[0];
+          mesh.geometry.computeBoundingBox();
+          const size = mesh.geometry.boundingBox.getSize(new THREE.Vector3());
+          return [b.spec.name, { centre: mesh.position.toArray(), size: size.toArray() }];
+        }),
+      ),
   };
   dispatchEvent(new Event('gyroviewready'));
 }

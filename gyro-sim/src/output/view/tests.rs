@@ -160,14 +160,14 @@ fn view() -> ViewSpec {
 #[test]
 fn a_view_reads_from_toml_with_defaults() {
     let v = view();
-    assert_eq!(v.bodies[0].shape, Shape::Cylinder { radius: 0.5, length: 0.1 });
+    assert_eq!(v.bodies[0].shape, Shape::Cylinder { radius: 0.5.into(), length: 0.1.into() });
     assert_eq!(v.arrows[0].scale, 0.5);
     let fixed: ViewSpec = toml::from_str(
         "[[bodies]]\nname = \"b\"\nshape = { kind = \"rod\", length = 1.0 }\ncolour = \"#000000\"\n",
     )
     .unwrap();
     assert_eq!(fixed.bodies[0].orientation, Orientation::Fixed);
-    assert_eq!(fixed.bodies[0].offset, [0.0; 3]);
+    assert_eq!(fixed.bodies[0].offset, [0.0.into(), 0.0.into(), 0.0.into()]);
     assert_eq!(fixed.bodies[0].opacity, 1.0);
     let dcm: Orientation =
         toml::from_str::<toml::Table>("o = { dcm = ['a','b','c','d','e','f','g','h','i'] }").unwrap()["o"]
@@ -215,7 +215,7 @@ fn bad_colours_sizes_and_bodies_are_refused() {
     v.bodies[0].colour = "magenta".to_string();
     assert!(matches!(v.check(), Err(ViewError::Colour { .. })));
     let mut v = view();
-    v.bodies[0].shape = Shape::Box { x: 1.0, y: 0.0, z: 1.0 };
+    v.bodies[0].shape = Shape::Box { x: 1.0.into(), y: 0.0.into(), z: 1.0.into() };
     assert!(matches!(v.check(), Err(ViewError::Number { .. })));
     let mut v = view();
     v.bodies[0].opacity = 1.5;
