@@ -147,12 +147,12 @@ fn run_reduced<S: gyro_sim::System>(sys: &S, tol: f64, reference: &[Vec<f64>]) -
 
 fn benches(c: &mut Criterion) {
     let p = gimbal::Params::default();
-    let d = gimbal::derive(&p);
+    let d = gimbal::param_constants(&p);
     let y = [0.1, 0.2, 0.3, 0.4, 0.5, 100.0];
     let mut dy = [0.0; 6];
     c.bench_function("gimbal_rhs_call", |b| {
         b.iter(|| {
-            gimbal::rhs_derived(black_box(0.0), black_box(&y), black_box(&p), black_box(&d), &mut dy);
+            gimbal::rhs_with_constants(black_box(0.0), black_box(&y), black_box(&p), black_box(&d), &mut dy);
             black_box(dy[5])
         })
     });
@@ -179,7 +179,7 @@ fn benches(c: &mut Criterion) {
     c.bench_function("gimbal_rhs_latency", |b| {
         let mut yy = y;
         b.iter(|| {
-            gimbal::rhs_derived(0.0, &yy, black_box(&p), black_box(&d), &mut dy);
+            gimbal::rhs_with_constants(0.0, &yy, black_box(&p), black_box(&d), &mut dy);
             yy[1] = 0.1 + 1e-9 * dy[5];
             yy[4] = 0.4 + 1e-9 * dy[3];
         })

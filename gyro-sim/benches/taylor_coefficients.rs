@@ -13,7 +13,7 @@ use kane_model::runtime::TAYLOR_UNROLLED_ORDERS;
 macro_rules! coefficient_benches {
     ($c:expr, $name:literal, $m:ident, $y:expr) => {{
         let p = $m::Params::default();
-        let d = $m::derive(&p);
+        let d = $m::param_constants(&p);
         let y: Vec<f64> = $y.to_vec();
         let mut work = Vec::new();
         let mut g = $c.benchmark_group(concat!("taylor_", $name));

@@ -19,7 +19,7 @@ fn rates_over_spin_angle(file: &ModelFile, angles: &[f64]) -> Vec<Vec<f64>> {
     let program = &file.program;
     let info = program.info();
     let params = program.default_params();
-    let derived = program.derive(&params);
+    let constants = program.param_constants(&params);
     let psi = info.state("PSI").expect("PSI is a state");
     let mut y = program.initial_state();
     for (name, v) in [("E1", 0.3), ("E2", -0.2), ("E3", 0.4), ("W1", 0.7), ("W2", -1.1), ("W3", 25.0)] {
@@ -33,7 +33,7 @@ fn rates_over_spin_angle(file: &ModelFile, angles: &[f64]) -> Vec<Vec<f64>> {
         .map(|a| {
             y[psi] = *a;
             let mut dy = vec![0.0; y.len()];
-            program.rhs(0.0, &y, &params, &derived, &mut dy, &mut regs);
+            program.rhs(0.0, &y, &params, &constants, &mut dy, &mut regs);
             dy
         })
         .collect()

@@ -68,7 +68,7 @@ pub fn model(input: TokenStream) -> TokenStream {
 #[proc_macro]
 pub fn builtin_model(input: TokenStream) -> TokenStream {
     let MacroInput { model: name, options } = parse_macro_input!(input as MacroInput);
-    kane_model::build::generate_builtin(&name.value(), &options)
+    kane_model::generate::generate_builtin(&name.value(), &options)
         .map(|e| e.tokens)
         .unwrap_or_else(|e| syn::Error::new(name.span(), e.to_string()).into_compile_error())
         .into()
@@ -81,7 +81,7 @@ fn expand(lit: &LitStr, options: &CodeOptions) -> syn::Result<proc_macro2::Token
     let src = std::fs::read_to_string(&path).map_err(|e| {
         syn::Error::new(lit.span(), format!("cannot read model file {}: {e}", path.display()))
     })?;
-    let emitted = kane_model::build::generate_file(std::path::Path::new(&shown), &src, options)
+    let emitted = kane_model::generate::generate_file(std::path::Path::new(&shown), &src, options)
         .map_err(|e| syn::Error::new(lit.span(), e.to_string()))?;
     let tokens = emitted.tokens;
     let full = path.display().to_string();
@@ -119,7 +119,7 @@ mod tests {
         let gimbal = LitStr::new("../kane-model/models/gimbal_gyroscope.al", Span::call_site());
         let tokens = expand(&gimbal, &Default::default()).unwrap().to_string();
         assert!(
-            tokens.contains("pub fn rhs_derived") && tokens.contains("include_str"),
+            tokens.contains("pub fn rhs_with_constants") && tokens.contains("include_str"),
             "{}",
             &tokens[..200]
         );

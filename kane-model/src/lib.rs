@@ -12,9 +12,9 @@
 //! - [`plausibility`]: masses, inertias and Euler parameters checked at given values.
 
 pub mod assembly;
-pub mod build;
 pub mod codegen;
 pub mod expr;
+pub mod generate;
 pub mod lang;
 pub mod mechanics;
 pub mod models;

@@ -28,7 +28,7 @@ fn a_model_without_kane_is_refused() {
 #[test]
 fn build_script_form_writes_an_includable_module() {
     let out = std::env::temp_dir().join(format!("kane-build-{}.rs", std::process::id()));
-    kane_model::build::build_script("models/gimbal_gyroscope.al", &out, &Default::default()).unwrap();
+    kane_model::generate::build_script("models/gimbal_gyroscope.al", &out, &Default::default()).unwrap();
     let text = std::fs::read_to_string(&out).unwrap();
     assert!(!text.starts_with("//!"), "an include!d file must not open with an inner doc comment");
     assert!(text.contains("pub fn rhs<T: ::kane_model::__private::num_traits::Float>"), "{}", &text[..200]);

@@ -1,6 +1,6 @@
-//! The lowered program, run by its own evaluator, equals the interpreted equations: `derive`
-//! then `rhs` (with the lowered solve of `M u' = f`) and the outputs, for the paper's gimbal
-//! (a 2x2 and a 1x1 block) and a triple pendulum (a full 3x3 block: `LDL^T`).
+//! The lowered program, run by its own evaluator, equals the interpreted equations:
+//! `param_constants` then `rhs` (with the lowered solve of `M u' = f`) and the outputs, for the
+//! paper's gimbal (a 2x2 and a 1x1 block) and a triple pendulum (a full 3x3 block: `LDL^T`).
 
 use kane_model::codegen::ir::Input;
 use kane_model::codegen::lower;
@@ -19,13 +19,16 @@ fn check(name: &str, src: &str, samples: usize) -> f64 {
     for _ in 0..samples {
         let p: Vec<f64> = lowered.params.iter().map(|_| rng.random_range(0.3..2.0)).collect();
         let y: Vec<f64> = (0..nq + n).map(|_| rng.random_range(-2.0..2.0)).collect();
-        let mut derived = vec![0.0; lowered.program.derive.results.len()];
-        lowered.program.derive.eval(|i| if let Input::Param(k) = i { p[k] } else { f64::NAN }, &mut derived);
+        let mut constants = vec![0.0; lowered.program.param_constants.results.len()];
+        lowered
+            .program
+            .param_constants
+            .eval(|i| if let Input::Param(k) = i { p[k] } else { f64::NAN }, &mut constants);
         let mut dy = vec![0.0; nq + n];
         let read = |i: Input| match i {
             Input::Param(k) => p[k],
             Input::State(k) => y[k],
-            Input::Derived(k) => derived[k],
+            Input::ParamConstant(k) => constants[k],
             Input::Time | Input::Rate(_) | Input::Slot(_) => 0.0,
         };
         lowered.program.rhs.eval(read, &mut dy);

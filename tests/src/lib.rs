@@ -40,13 +40,13 @@ pub fn lowered_rhs(
     let params: Vec<f64> =
         lowered.params.iter().map(|s| values[&spec.symbol_name(*s).to_ascii_uppercase()]).collect();
     let p = &lowered.program;
-    let mut derived = vec![0.0; p.derive.results.len()];
-    p.derive.eval(|i| if let Input::Param(k) = i { params[k] } else { f64::NAN }, &mut derived);
+    let mut constants = vec![0.0; p.param_constants.results.len()];
+    p.param_constants.eval(|i| if let Input::Param(k) = i { params[k] } else { f64::NAN }, &mut constants);
     let mut out = vec![0.0; p.rhs.results.len()];
     let read = |i: Input| match i {
         Input::State(k) => y[k],
         Input::Param(k) => params[k],
-        Input::Derived(k) => derived[k],
+        Input::ParamConstant(k) => constants[k],
         _ => 0.0,
     };
     p.rhs.eval(read, &mut out);

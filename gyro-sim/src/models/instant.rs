@@ -17,15 +17,15 @@ use crate::solve::{solve_bound, BoundModel};
 pub struct InstantSystem<'a> {
     model: &'a ProgramModel,
     params: Vec<f64>,
-    derived: Vec<f64>,
+    constants: Vec<f64>,
     regs: RefCell<Vec<f64>>,
 }
 
 impl<'a> InstantSystem<'a> {
     /// `model` at the parameter values `params` (in `info().param_names` order).
     pub fn new(model: &'a ProgramModel, params: Vec<f64>) -> Self {
-        let derived = model.derive(&params);
-        InstantSystem { model, params, derived, regs: RefCell::new(Vec::new()) }
+        let constants = model.param_constants(&params);
+        InstantSystem { model, params, constants, regs: RefCell::new(Vec::new()) }
     }
 }
 
@@ -34,10 +34,10 @@ impl System for InstantSystem<'_> {
         self.model.info().state_names.len()
     }
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        self.model.rhs(t, y, &self.params, &self.derived, dy, &mut self.regs.borrow_mut())
+        self.model.rhs(t, y, &self.params, &self.constants, dy, &mut self.regs.borrow_mut())
     }
     fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
-        self.model.taylor(t, y, &self.params, &self.derived, order, out, work) == Ok(true)
+        self.model.taylor(t, y, &self.params, &self.constants, order, out, work) == Ok(true)
     }
 }
 

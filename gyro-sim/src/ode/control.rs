@@ -2,7 +2,7 @@
 //! [`StepControl`]; out: the first step size, the accepted step (after any rejections) and the
 //! next step size.
 
-use super::stages::Work;
+use super::stages::StageBuffers;
 use super::tableau::StepControl;
 use super::{OdeError, System, Tolerances};
 
@@ -73,7 +73,7 @@ impl AcceptedStep {
 /// Tries `h` (or the rest of the way to `target` when `h` nearly reaches it), shrinking the step
 /// after each rejection until the error estimate is at most 1; stage 0 must be `f(t, y)`.
 pub(super) fn accepted_step<S: System + ?Sized, const N: usize>(
-    w: &mut Work<'_, S, N>,
+    w: &mut StageBuffers<'_, S, N>,
     t: f64,
     y: &[f64],
     h: f64,
@@ -106,7 +106,7 @@ pub(super) fn accepted_step<S: System + ?Sized, const N: usize>(
 /// Hairer's starting step: a step whose explicit-Euler error is about the tolerance; stage 0
 /// must be `f(t, y)`. Not yet bounded by the span to integrate: see [`bound_first_step`].
 pub(super) fn initial_step<S: System + ?Sized, const N: usize>(
-    w: &mut Work<'_, S, N>,
+    w: &mut StageBuffers<'_, S, N>,
     t: f64,
     y: &[f64],
     tol: Tolerances,

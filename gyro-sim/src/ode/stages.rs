@@ -21,9 +21,10 @@ pub struct Stats {
     pub rhs_evals: usize,
 }
 
-/// Stepping storage. `N` is the dimension when known at compile time (0: read `n_dyn`); then the
-/// component loops unroll, and the built-in tableaux take the fully unrolled step.
-pub(super) struct Work<'a, S: System + ?Sized, const N: usize> {
+/// The stage buffers of one integration, with the system and tableau they serve. `N` is the
+/// dimension when known at compile time (0: read `n_dyn`); then the component loops unroll, and
+/// the built-in tableaux take the fully unrolled step.
+pub(super) struct StageBuffers<'a, S: System + ?Sized, const N: usize> {
     pub(super) sys: &'a S,
     pub(super) tab: &'static Tableau,
     n_dyn: usize,
@@ -32,9 +33,10 @@ pub(super) struct Work<'a, S: System + ?Sized, const N: usize> {
     pub(super) k: Vec<f64>,
     pub(super) tmp: Vec<f64>,
     pub(super) ynew: Vec<f64>,
-    /// The error estimates `sum_j e_j k_j` (fifth order; DOP853's third order).
-    err5: Vec<f64>,
-    err3: Vec<f64>,
+    /// The embedded pair's error estimate `sum_j e_j k_j` (DOP853's fifth-order one).
+    error_embedded: Vec<f64>,
+    /// DOP853's third-order error estimate `sum_j e3_j k_j` (unused by other tableaux).
+    error_order3: Vec<f64>,
     /// `f(t_new, y_new)` after an accepted step, for a tableau with a continuous extension and
     /// without first-same-as-last (empty otherwise).
     f_end: Vec<f64>,
@@ -43,19 +45,19 @@ pub(super) struct Work<'a, S: System + ?Sized, const N: usize> {
     pub(super) stats: Stats,
 }
 
-impl<'a, S: System + ?Sized, const N: usize> Work<'a, S, N> {
+impl<'a, S: System + ?Sized, const N: usize> StageBuffers<'a, S, N> {
     /// Storage for stepping `sys` with `tab`; stage 0 still to be set.
     pub(super) fn new(sys: &'a S, tab: &'static Tableau) -> Self {
         let n = sys.dim();
-        Work {
+        StageBuffers {
             sys,
             tab,
             n_dyn: n,
             k: vec![0.0; n * tab.c.len()],
             tmp: vec![0.0; n],
             ynew: vec![0.0; n],
-            err5: vec![0.0; n],
-            err3: vec![0.0; n],
+            error_embedded: vec![0.0; n],
+            error_order3: vec![0.0; n],
             f_end: vec![0.0; if tab.fsal || tab.dense.is_none() { 0 } else { n }],
             start_ready: true,
             stats: Stats::default(),
@@ -167,8 +169,8 @@ impl<'a, S: System + ?Sized, const N: usize> Work<'a, S, N> {
             return err;
         }
         let n = self.n();
-        let mut e5 = std::mem::take(&mut self.err5);
-        let mut e3 = std::mem::take(&mut self.err3);
+        let mut e5 = std::mem::take(&mut self.error_embedded);
+        let mut e3 = std::mem::take(&mut self.error_order3);
         e5.fill(0.0);
         Self::accumulate(&self.k, n, 1.0, self.tab.e.unwrap_or(&[]), &mut e5);
         let third = self.tab.e3.map(|w| {
@@ -177,8 +179,8 @@ impl<'a, S: System + ?Sized, const N: usize> Work<'a, S, N> {
             &e3[..]
         });
         let err = self.error_norm(y, h, &e5, third, tol);
-        self.err5 = e5;
-        self.err3 = e3;
+        self.error_embedded = e5;
+        self.error_order3 = e3;
         err
     }
 
@@ -264,7 +266,7 @@ mod tests {
             ..RK4
         };
         for tab in [&DOP853, &RK4, &RK4_DENSE] {
-            let mut w = Work::<Exponential<1>, 0>::new(&DECAY, tab);
+            let mut w = StageBuffers::<Exponential<1>, 0>::new(&DECAY, tab);
             let y = [1.0];
             w.k[0] = -1.0;
             w.step(0.0, &y, 0.1);

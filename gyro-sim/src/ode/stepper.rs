@@ -11,7 +11,7 @@ use std::cell::{Cell, RefCell};
 
 use super::control::{accepted_step, bound_first_step, initial_step, PiControl};
 use super::dense::{DenseCache, StepData};
-use super::stages::{Stats, Work};
+use super::stages::{StageBuffers, Stats};
 use super::{Method, OdeError, System, Tolerances};
 
 /// Most accepted steps a stepper takes unless told otherwise ([`Stepper::set_max_steps`]).
@@ -73,7 +73,7 @@ struct FixedPlan {
 /// (then the built-in tableaux take fully unrolled steps; see [`ErkStepper::new_sized`]), 0 for
 /// any ([`ErkStepper::new`]).
 pub struct ErkStepper<'a, S: System + ?Sized, const N: usize = 0> {
-    work: Work<'a, S, N>,
+    work: StageBuffers<'a, S, N>,
     method: Method,
     t0: f64,
     t: f64,
@@ -119,7 +119,7 @@ impl<'a, S: System + ?Sized, const N: usize> ErkStepper<'a, S, N> {
         }
         check_finite(t0, y0)?;
         let tab = method.tableau().ok_or(OdeError::NotRungeKutta)?;
-        let mut work = Work::<S, N>::new(sys, tab);
+        let mut work = StageBuffers::<S, N>::new(sys, tab);
         sys.rhs(t0, y0, &mut work.k[..n]);
         work.stats.rhs_evals += 1;
         let h = match method {

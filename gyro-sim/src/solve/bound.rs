@@ -9,14 +9,14 @@ use crate::ode::{System, TaylorWork};
 /// A generated model with parameters, as an ODE system.
 pub struct ModelSystem<M: GeneratedModel> {
     params: M::Params,
-    derived: M::Derived,
+    constants: M::ParamConstants,
 }
 
 impl<M: GeneratedModel> ModelSystem<M> {
     /// The system for these parameters.
     pub fn new(params: M::Params) -> Self {
-        let derived = M::derive(&params);
-        ModelSystem { params, derived }
+        let constants = M::param_constants(&params);
+        ModelSystem { params, constants }
     }
 
     /// The parameters.
@@ -56,10 +56,10 @@ impl<M: GeneratedModel> System for ModelSystem<M> {
     }
     #[inline(always)]
     fn rhs(&self, t: f64, y: &[f64], dy: &mut [f64]) {
-        M::rhs_derived(t, y, &self.params, &self.derived, dy)
+        M::rhs_with_constants(t, y, &self.params, &self.constants, dy)
     }
     fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
-        M::taylor(t, y, &self.params, &self.derived, order, out, work)
+        M::taylor(t, y, &self.params, &self.constants, order, out, work)
     }
     fn taylor_straight_line(&self) -> &[usize] {
         M::INFO.taylor_straight_line

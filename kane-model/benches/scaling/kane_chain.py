@@ -18,14 +18,14 @@ lines give every parameter a default; they are not folded into the equations). P
 * gen_s, gen_mb: `kane gen FILE --stats -o m.rs`, wall seconds and peak MB; module_bytes its size;
   rhs_ops from its line "lowered program: rhs N operations per call".
 * rhs_sin, rhs_cos, rhs_sin_cos: the `.sin()`, `.cos()` and `.sin_cos()` calls in the module's
-  `rhs_derived` function (what one rhs evaluation computes); module_trig: all three in the whole
+  `rhs_with_constants` function (what one rhs evaluation computes); module_trig: all three in the whole
   module (rhs_lanes, outputs, Taylor coefficients repeat them).
 * compile_s, compile_mb: `cargo build --release --offline` of a small crate whose `main.rs` is
   `mod m;` (the module, m.rs) plus a timing loop, kane-model being built already (the target
   directory persists, --target-dir): the time of the crate alone after its m.rs changed. Only
-  what main reaches (the `rhs_derived` path) goes through code generation; the whole module is
+  what main reaches (the `rhs_with_constants` path) goes through code generation; the whole module is
   parsed and type-checked.
-* rhs_ns: that binary's `m::rhs_derived::<f64>` at a fixed state (q_i = 0.3 sin i,
+* rhs_ns: that binary's `m::rhs_with_constants::<f64>` at a fixed state (q_i = 0.3 sin i,
   u_i = 0.5 cos i), default parameters (1.0 where a default is NaN), in batches of about 20 ms:
   the median over 9 batches, nanoseconds per call.
 
@@ -75,7 +75,7 @@ kane-model = {{ path = "{path}" }}
 [workspace]
 """
 
-MAIN_RS = r"""//! Times the generated module's `rhs_derived` at a fixed state (kane_chain.py).
+MAIN_RS = r"""//! Times the generated module's `rhs_with_constants` at a fixed state (kane_chain.py).
 #[allow(dead_code, unused_imports)]
 mod m;
 
@@ -90,7 +90,7 @@ fn main() {
             m::Model::set_param(&mut p, name, 1.0);
         }
     }
-    let d = m::derive(&p);
+    let d = m::param_constants(&p);
     let nq = m::INFO.n_coordinates;
     let y: Vec<f64> = (0..m::N_STATES)
         .map(|i| if i < nq { 0.3 * ((i + 1) as f64).sin() } else { 0.5 * ((i - nq + 1) as f64).cos() })
@@ -99,7 +99,7 @@ fn main() {
     let mut batch = |calls: usize| {
         let t0 = Instant::now();
         for _ in 0..calls {
-            m::rhs_derived(0.0f64, black_box(&y[..]), black_box(&p), black_box(&d), &mut dy);
+            m::rhs_with_constants(0.0f64, black_box(&y[..]), black_box(&p), black_box(&d), &mut dy);
             black_box(&mut dy);
         }
         t0.elapsed().as_secs_f64()
@@ -110,7 +110,7 @@ fn main() {
     }
     let mut ns: Vec<f64> = (0..9).map(|_| batch(calls) * 1e9 / calls as f64).collect();
     ns.sort_by(|a, b| a.partial_cmp(b).unwrap());
-    m::rhs_derived(0.0f64, &y[..], &p, &d, &mut dy);
+    m::rhs_with_constants(0.0f64, &y[..], &p, &d, &mut dy);
     let finite = dy.iter().all(|v| v.is_finite());
     println!("ns_per_call {:.1} calls_per_batch {} finite {}", ns[4], calls, finite);
 }
@@ -197,9 +197,9 @@ def rusage_wrapper(tfile, cmd):
 
 
 def trig_counts(module):
-    """(sin, cos, sin_cos) calls in rhs_derived, and all of them in the module."""
+    """(sin, cos, sin_cos) calls in rhs_with_constants, and all of them in the module."""
     pat = {"sin": r"\.sin\(\)", "cos": r"\.cos\(\)", "sin_cos": r"\.sin_cos\(\)"}
-    m = re.search(r"^pub fn rhs_derived\b.*?^}", module, re.S | re.M)
+    m = re.search(r"^pub fn rhs_with_constants\b.*?^}", module, re.S | re.M)
     body = m.group(0) if m else ""
     rhs = [len(re.findall(p, body)) for p in pat.values()]
     return rhs, sum(len(re.findall(p, module)) for p in pat.values())
@@ -366,7 +366,7 @@ def measure(a):
               f"{platform.machine()} {os.cpu_count()} cores; timeout {a.timeout:g} s per step, "
               f"kane steps limited to {a.mem_limit_gb:g} GB; a step not finished is not run for "
               f"the variant's larger n",
-              "sin/cos counted in the module's rhs_derived (rhs_sin, rhs_cos, rhs_sin_cos) and in "
+              "sin/cos counted in the module's rhs_with_constants (rhs_sin, rhs_cos, rhs_sin_cos) and in "
               "the whole module (module_trig); compile: release build of the module's crate alone",
               f"load average (1, 5, 15 min) at the start {load0[0]:.1f} {load0[1]:.1f} {load0[2]:.1f}"]
     rows = []

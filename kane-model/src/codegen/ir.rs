@@ -18,8 +18,8 @@ pub enum Input {
     State(usize),
     /// Parameter `i`.
     Param(usize),
-    /// Parameter-only quantity `i`, computed by the `derive` section.
-    Derived(usize),
+    /// Parameter-only quantity `i`, computed by the `param_constants` section.
+    ParamConstant(usize),
     /// The speed rate `u'_i`, computed by the `rhs` section.
     Rate(usize),
     /// Positional value `i` the caller gives (an event expression's names: see
@@ -48,7 +48,7 @@ pub struct OutputCode {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Program {
     /// Parameter-only quantities, in `f64`, once per parameter set; inputs are parameters.
-    pub derive: Section,
+    pub param_constants: Section,
     /// `y' = f(t, y)`: results are `q'` then `u'`.
     pub rhs: Section,
     /// One section per output.

@@ -1,8 +1,9 @@
 //! A lowered program linearised about a point: in come the program, its parameters' values, a
 //! time and state, and which parameters are inputs; out go `A = d(y')/dy` and
 //! `B = d(y')/d(inputs)`, one forward-mode dual-number pass through the program per column
-//! (the parameter-only `derive` section included for inputs, and the numeric constraint solve
-//! with it): exact to rounding, with no symbolic differentiation and no finite differences.
+//! (the parameter-only `param_constants` section included for inputs, and the numeric
+//! constraint solve with it): exact to rounding, with no symbolic differentiation and no finite
+//! differences.
 
 use crate::runtime::dual::Dual;
 
@@ -49,10 +50,10 @@ fn column(program: &Program, params: &[f64], t: f64, y: &[f64], seed: Seed) -> C
         Seed::Param(p) if p == k => Dual::variable(params[k]),
         _ => Dual::constant(params[k]),
     };
-    let mut derived = vec![Dual::constant(0.0); program.derive.results.len()];
+    let mut constants = vec![Dual::constant(0.0); program.param_constants.results.len()];
     program
-        .derive
-        .eval(|i| if let Input::Param(k) = i { param(k) } else { Dual::constant(f64::NAN) }, &mut derived);
+        .param_constants
+        .eval(|i| if let Input::Param(k) = i { param(k) } else { Dual::constant(f64::NAN) }, &mut constants);
     let state = |k: usize| match seed {
         Seed::State(s) if s == k => Dual::variable(y[k]),
         _ => Dual::constant(y[k]),
@@ -61,7 +62,7 @@ fn column(program: &Program, params: &[f64], t: f64, y: &[f64], seed: Seed) -> C
         Input::Time => Dual::constant(t),
         Input::State(k) => state(k),
         Input::Param(k) => param(k),
-        Input::Derived(k) => derived[k],
+        Input::ParamConstant(k) => constants[k],
         Input::Rate(_) | Input::Slot(_) => Dual::constant(f64::NAN),
     };
     let mut out = vec![Dual::constant(0.0); program.rhs.results.len()];
@@ -90,7 +91,7 @@ mod tests {
         let udot = b.add(n, p);
         let rhs = b.finish(vec![u, udot]);
         let program = Program {
-            derive: SectionBuilder::default().finish(vec![]),
+            param_constants: SectionBuilder::default().finish(vec![]),
             rhs,
             outputs: vec![],
             cyclic: vec![],

@@ -10,8 +10,9 @@
 //! expressions ([`event::lower`]), specs as specs.
 //!
 //! The stages are modules: [`lower`] turns the spec into one [`ir::Program`] (SSA sections for
-//! `derive`, `rhs` with `M u' = f` solved inside it, and each output); `print` spells that
-//! program in Rust; [`taylor`] turns `rhs` into Taylor-coefficient recurrences, printed beside it.
+//! `param_constants`, `rhs` with `M u' = f` solved inside it, and each output); `print` spells
+//! that program in Rust; [`taylor`] turns `rhs` into Taylor-coefficient recurrences, printed
+//! beside it.
 //! The same spec gives byte-identical code.
 
 pub mod event;

@@ -1,6 +1,6 @@
 //! The lowered program run as it is, without compiling Rust (the instant path): in comes a
-//! spec; out goes a [`ProgramModel`] that evaluates `derive`, `rhs` and each output from the
-//! same SSA sections the printer spells, so both paths compute the same operations.
+//! spec; out goes a [`ProgramModel`] that evaluates `param_constants`, `rhs` and each output from
+//! the same SSA sections the printer spells, so both paths compute the same operations.
 
 use crate::assembly::{Assembly, AssemblyError};
 use crate::runtime::dual::Dual;
@@ -72,27 +72,27 @@ impl ProgramModel {
     }
 
     /// The parameter-only quantities for `params`.
-    pub fn derive(&self, params: &[f64]) -> Vec<f64> {
-        let mut out = vec![0.0; self.program.derive.results.len()];
+    pub fn param_constants(&self, params: &[f64]) -> Vec<f64> {
+        let mut out = vec![0.0; self.program.param_constants.results.len()];
         let read = |input: Input| match input {
             Input::Param(i) => params[i],
             _ => f64::NAN,
         };
-        self.program.derive.eval(read, &mut out);
+        self.program.param_constants.eval(read, &mut out);
         out
     }
 
-    /// `dy = f(t, y)` with `derived = derive(params)`.
+    /// `dy = f(t, y)` with `constants = param_constants(params)`.
     pub fn rhs(
         &self,
         t: f64,
         y: &[f64],
         params: &[f64],
-        derived: &[f64],
+        constants: &[f64],
         dy: &mut [f64],
         regs: &mut Vec<f64>,
     ) {
-        let at = At { t, y, rates: &[], params, derived };
+        let at = At { t, y, rates: &[], params, constants };
         at.run(&self.program.rhs, regs, dy)
     }
 
@@ -110,13 +110,13 @@ impl ProgramModel {
         t: f64,
         y: &[f64],
         params: &[f64],
-        derived: &[f64],
+        constants: &[f64],
         order: usize,
         out: &mut [f64],
         work: &mut TaylorWork,
     ) -> Result<bool, TaylorError> {
         let program = self.taylor.as_ref().map_err(Clone::clone)?;
-        let at = At { t, y, rates: &[], params, derived };
+        let at = At { t, y, rates: &[], params, constants };
         Ok(program.coefficients(t, y, |input| at.read(input), order, out, work))
     }
 
@@ -133,7 +133,7 @@ impl ProgramModel {
         regs: &mut Vec<f64>,
     ) {
         let section = &self.program.outputs[k].section;
-        let at = At { t, y, rates, params, derived: &[] };
+        let at = At { t, y, rates, params, constants: &[] };
         if self.quaternion[k] {
             let mut dcm = [0.0; 9];
             at.run(section, regs, &mut dcm);
@@ -145,26 +145,26 @@ impl ProgramModel {
 }
 
 impl ProgramModel {
-    /// The first operation of `rhs` (or of `derive`) at `(t, y)` whose operands are finite and
-    /// whose result is not, named (see [`super::fault`]).
+    /// The first operation of `rhs` (or of `param_constants`) at `(t, y)` whose operands are finite
+    /// and whose result is not, named (see [`super::fault`]).
     pub fn rhs_fault(&self, t: f64, y: &[f64], params: &[f64]) -> Option<Fault> {
-        let derived = self.derive(params);
-        let at = At { t, y, rates: &[], params, derived: &derived };
-        first_fault(&self.program.derive, |i| at.read(i), &|i| self.input_name(i))
+        let constants = self.param_constants(params);
+        let at = At { t, y, rates: &[], params, constants: &constants };
+        first_fault(&self.program.param_constants, |i| at.read(i), &|i| self.input_name(i))
             .or_else(|| first_fault(&self.program.rhs, |i| at.read(i), &|i| self.input_name(i)))
     }
 
     /// The quotient of `rhs` at `(t, y)` whose divisor cancels most nearly to zero (a
     /// singularity approached), named; see [`super::fault::near_division_by_zero`].
     pub fn rhs_near_fault(&self, t: f64, y: &[f64], params: &[f64]) -> Option<Fault> {
-        let derived = self.derive(params);
-        let at = At { t, y, rates: &[], params, derived: &derived };
+        let constants = self.param_constants(params);
+        let at = At { t, y, rates: &[], params, constants: &constants };
         near_division_by_zero(&self.program.rhs, |i| at.read(i), &|i| self.input_name(i))
     }
 
     /// The first faulty operation of output `k` at `(t, y)` (`rates` are `u'`), named.
     pub fn output_fault(&self, k: usize, t: f64, y: &[f64], rates: &[f64], params: &[f64]) -> Option<Fault> {
-        let at = At { t, y, rates, params, derived: &[] };
+        let at = At { t, y, rates, params, constants: &[] };
         first_fault(&self.program.outputs[k].section, |i| at.read(i), &|i| self.input_name(i))
     }
 
@@ -177,8 +177,10 @@ impl ProgramModel {
             Input::State(i) => state(i).to_string(),
             Input::Param(i) => info.param_names.get(i).copied().unwrap_or("?").to_string(),
             Input::Rate(i) => format!("{}'", state(info.n_coordinates + i)),
-            Input::Derived(i) => match self.program.derive.results.get(i) {
-                Some(&v) => format!("({})", text(&self.program.derive, v, &|i| self.input_name(i), 3)),
+            Input::ParamConstant(i) => match self.program.param_constants.results.get(i) {
+                Some(&v) => {
+                    format!("({})", text(&self.program.param_constants, v, &|i| self.input_name(i), 3))
+                }
                 None => "?".to_string(),
             },
             Input::Slot(i) => format!("slot {i}"),
@@ -204,7 +206,7 @@ impl ProgramModel {
             Input::Time => Dual::new(t, 1.0),
             Input::State(i) => Dual::new(y[i], dy[i]),
             Input::Param(i) => Dual::constant(params[i]),
-            Input::Derived(_) | Input::Rate(_) | Input::Slot(_) => Dual::constant(f64::NAN),
+            Input::ParamConstant(_) | Input::Rate(_) | Input::Slot(_) => Dual::constant(f64::NAN),
         };
         let mut values = vec![Dual::constant(0.0); section.results.len()];
         section.eval(read, &mut values);
@@ -225,7 +227,7 @@ struct At<'a> {
     y: &'a [f64],
     rates: &'a [f64],
     params: &'a [f64],
-    derived: &'a [f64],
+    constants: &'a [f64],
 }
 
 impl At<'_> {
@@ -234,7 +236,7 @@ impl At<'_> {
             Input::Time => self.t,
             Input::State(i) => self.y[i],
             Input::Param(i) => self.params[i],
-            Input::Derived(i) => self.derived[i],
+            Input::ParamConstant(i) => self.constants[i],
             Input::Rate(i) => self.rates[i],
             // Model sections read no slots (only event sections do).
             Input::Slot(_) => f64::NAN,

@@ -8,7 +8,7 @@
 
 mod abbrev;
 mod arena;
-mod build;
+mod canonical;
 mod collect;
 mod cse;
 mod diff;

@@ -22,7 +22,7 @@ pub trait GeneratedModel {
     /// Parameter values (defaults from the model's INPUT).
     type Params: Clone + Default + std::fmt::Debug;
     /// Quantities of the parameters alone, computed once per parameter set.
-    type Derived: Clone + std::fmt::Debug;
+    type ParamConstants: Clone + std::fmt::Debug;
     /// The model's metadata.
     const INFO: ModelInfo;
     /// The initial state from INPUT, in radians (NaN where INPUT gives none).
@@ -32,19 +32,19 @@ pub trait GeneratedModel {
     /// A parameter's value by name (case-insensitive).
     fn param(p: &Self::Params, name: &str) -> Option<f64>;
     /// The parameter-only quantities of `rhs`.
-    fn derive(p: &Self::Params) -> Self::Derived;
-    /// `dy = f(t, y)` with `d = derive(p)`: the fast path for integration.
-    fn rhs_derived(t: f64, y: &[f64], p: &Self::Params, d: &Self::Derived, dy: &mut [f64]);
+    fn param_constants(p: &Self::Params) -> Self::ParamConstants;
+    /// `dy = f(t, y)` with `d = param_constants(p)`: the fast path for integration.
+    fn rhs_with_constants(t: f64, y: &[f64], p: &Self::Params, d: &Self::ParamConstants, dy: &mut [f64]);
     /// `dy = f(t, y)`.
     fn rhs(t: f64, y: &[f64], p: &Self::Params, dy: &mut [f64]) {
-        Self::rhs_derived(t, y, p, &Self::derive(p), dy)
+        Self::rhs_with_constants(t, y, p, &Self::param_constants(p), dy)
     }
     /// Output `k` at `(t, y)` into `out` (its columns); `rates` are `u'` when the output needs
     /// them (see [`OutputInfo::needs_rates`](super::OutputInfo::needs_rates)), else ignored.
     fn output(k: usize, t: f64, y: &[f64], rates: &[f64], p: &Self::Params, out: &mut [f64]);
-    /// The derived quantities as numbers, in the order `derive` computes them (and
+    /// The parameter constants as numbers, in the order `param_constants` computes them (and
     /// [`LaneModel::rhs_lanes`] reads them).
-    fn derived_values(d: &Self::Derived) -> &[f64];
+    fn constant_values(d: &Self::ParamConstants) -> &[f64];
     /// Output `k` at `(t, y)` into `out` and its time derivative along `y' = dy` into `rate`
     /// (dual numbers through the output's code); meaningful only for an output that reads no
     /// speed rates (its rate would need `u''`).
@@ -59,7 +59,7 @@ pub trait GeneratedModel {
     );
     /// The normalised Taylor coefficients of the solution through `(t, y)`, orders `0..=order`,
     /// into `out` (state `i`'s coefficient `k` at `out[i * (order + 1) + k]`, so
-    /// `y_i(t + h) = sum_k out[i * (order + 1) + k] h^k`), with `d = derive(p)`; `work` is
+    /// `y_i(t + h) = sum_k out[i * (order + 1) + k] h^k`), with `d = param_constants(p)`; `work` is
     /// scratch. False when the model has no Taylor coefficients (the default), or above
     /// [`TAYLOR_MAX_ORDER`].
     #[allow(unused_variables)]
@@ -67,7 +67,7 @@ pub trait GeneratedModel {
         t: f64,
         y: &[f64],
         p: &Self::Params,
-        d: &Self::Derived,
+        d: &Self::ParamConstants,
         order: usize,
         out: &mut [f64],
         work: &mut TaylorWork,
@@ -79,7 +79,7 @@ pub trait GeneratedModel {
 /// A generated model with `rhs_lanes` (generated where asked: for batches of members).
 pub trait LaneModel: GeneratedModel {
     /// `dy = f(t, y)` in any number type, the parameters `p` (in `INFO.param_names` order) and
-    /// the derived quantities `d` ([`GeneratedModel::derived_values`]) in it too: with a lane
+    /// the parameter constants `d` ([`GeneratedModel::constant_values`]) in it too: with a lane
     /// type, several members (parameter sets) in one evaluation.
     fn rhs_lanes<T: num_traits::Float>(t: T, y: &[T], p: &[T], d: &[T], dy: &mut [T]);
 }

@@ -10,7 +10,7 @@
 
 use seq_macro::seq;
 
-use super::{Tolerances, Work};
+use super::{StageBuffers, Tolerances};
 use crate::ode::methods::METHODS;
 use crate::ode::tableau::Tableau;
 use crate::ode::System;
@@ -34,8 +34,8 @@ impl<const M: usize> Row<M> {
     };
 }
 
-impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
-    /// One step like [`Work::step`] when the dimension is fixed and the tableau built in;
+impl<S: System + ?Sized, const N: usize> StageBuffers<'_, S, N> {
+    /// One step like [`StageBuffers::step`] when the dimension is fixed and the tableau built in;
     /// false otherwise (nothing done).
     #[inline(always)]
     pub(super) fn step_unrolled(&mut self, t: f64, y: &[f64], h: f64) -> bool {
@@ -53,7 +53,7 @@ impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
         false
     }
 
-    /// The error estimate like [`Work::error`] when the step was unrolled; None otherwise.
+    /// The error estimate like [`StageBuffers::error`] when the step was unrolled; None otherwise.
     #[inline(always)]
     pub(super) fn error_unrolled(&self, y: &[f64], h: f64, tol: Tolerances) -> Option<f64> {
         if N == 0 {
@@ -87,7 +87,7 @@ impl<S: System + ?Sized, const N: usize> Work<'_, S, N> {
         self.ynew[..N].copy_from_slice(&ynew);
     }
 
-    /// [`Work::combine`] for a compile-time weight row `w` (at most 17 stages).
+    /// [`StageBuffers::combine`] for a compile-time weight row `w` (at most 17 stages).
     #[inline(always)]
     fn fixed_combine(&self, w: &[f64], y: &[f64], h: f64) -> [f64; N] {
         let last = w.len() - 1;
@@ -160,17 +160,17 @@ mod tests {
     fn every_table_row_takes_the_unrolled_step_when_the_dimension_is_fixed() {
         let y = [1.0, 1.0];
         for tab in METHODS.iter().filter_map(|m| m.tableau) {
-            let mut fixed = Work::<Exponential<2>, 2>::new(&DECAY, tab);
+            let mut fixed = StageBuffers::<Exponential<2>, 2>::new(&DECAY, tab);
             DECAY.rhs(0.0, &y, &mut fixed.k[..2]);
             assert!(fixed.step_unrolled(0.0, &y, 0.1), "{}", tab.name);
             assert!((fixed.ynew[0] - (-0.1f64).exp()).abs() < 1e-6, "{}: {:?}", tab.name, fixed.ynew);
-            let mut general = Work::<Exponential<2>, 0>::new(&DECAY, tab);
+            let mut general = StageBuffers::<Exponential<2>, 0>::new(&DECAY, tab);
             assert!(!general.step_unrolled(0.0, &y, 0.1));
             assert_eq!(fixed.error_unrolled(&y, 0.1, TOL).is_some(), tab.e.is_some(), "{}", tab.name);
         }
         // A tableau with the same coefficients elsewhere in memory takes the general step.
         static COPY: Tableau = Tableau { name: "copy", dense: None, ..crate::ode::tableau::RK4 };
-        let mut other = Work::<Exponential<2>, 2>::new(&DECAY, &COPY);
+        let mut other = StageBuffers::<Exponential<2>, 2>::new(&DECAY, &COPY);
         assert!(!other.step_unrolled(0.0, &y, 0.1));
     }
 }

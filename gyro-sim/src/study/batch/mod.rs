@@ -1,6 +1,6 @@
 //! Batch lanes (issue 14, item 4): several members of a sweep integrated in lock step, each
 //! number a [`Lanes`] of `N` members, through a generated model's `rhs_lanes` (parameters and
-//! derived quantities per lane). In come a model, the members' parameters and initial states,
+//! parameter constants per lane). In come a model, the members' parameters and initial states,
 //! an end time, an embedded pair and tolerances; out go each member's final state and the cost.
 //! Measured against scalar runs in `benches/batch_lanes.rs` (BENCHMARKS.md).
 
@@ -18,7 +18,7 @@ use crate::ode::{OdeError, Stats, Tolerances};
 /// A generated model with `N` parameter sets, one per lane.
 pub struct ModelLanes<M: LaneModel, const N: usize> {
     params: Vec<Lanes<N>>,
-    derived: Vec<Lanes<N>>,
+    constants: Vec<Lanes<N>>,
     _model: std::marker::PhantomData<M>,
 }
 
@@ -29,12 +29,12 @@ impl<M: LaneModel, const N: usize> ModelLanes<M, N> {
         let params = (0..names.len())
             .map(|i| Lanes(std::array::from_fn(|k| M::param(&members[k], names[i]).unwrap_or(f64::NAN))))
             .collect();
-        let derived_sets: Vec<M::Derived> = members.iter().map(M::derive).collect();
-        let n_derived = derived_sets.first().map_or(0, |d| M::derived_values(d).len());
-        let derived = (0..n_derived)
-            .map(|i| Lanes(std::array::from_fn(|k| M::derived_values(&derived_sets[k])[i])))
+        let constant_sets: Vec<M::ParamConstants> = members.iter().map(M::param_constants).collect();
+        let n_constants = constant_sets.first().map_or(0, |d| M::constant_values(d).len());
+        let constants = (0..n_constants)
+            .map(|i| Lanes(std::array::from_fn(|k| M::constant_values(&constant_sets[k])[i])))
             .collect();
-        ModelLanes { params, derived, _model: std::marker::PhantomData }
+        ModelLanes { params, constants, _model: std::marker::PhantomData }
     }
 }
 
@@ -44,7 +44,7 @@ impl<M: LaneModel, const N: usize> LaneSystem<N> for ModelLanes<M, N> {
     }
     #[inline(always)]
     fn rhs(&self, t: f64, y: &[Lanes<N>], dy: &mut [Lanes<N>]) {
-        M::rhs_lanes(Lanes::splat(t), y, &self.params, &self.derived, dy)
+        M::rhs_lanes(Lanes::splat(t), y, &self.params, &self.constants, dy)
     }
 }
 

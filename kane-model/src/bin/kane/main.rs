@@ -411,10 +411,11 @@ fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
 /// written atomically.
 fn gen(file: PathBuf, out: Option<PathBuf>, stats: bool, options: CodeOptions) -> Result<(), String> {
     let started = std::time::Instant::now();
-    let emitted = kane_model::build::generate_file(&file, &read(&file)?, &options).map_err(|e| match e {
-        kane_model::build::BuildError::Model(report) => report.render(),
-        other => other.to_string(),
-    })?;
+    let emitted =
+        kane_model::generate::generate_file(&file, &read(&file)?, &options).map_err(|e| match e {
+            kane_model::generate::BuildError::Model(report) => report.render(),
+            other => other.to_string(),
+        })?;
     let source = kane_model::codegen::to_source(&emitted).map_err(|e| e.to_string())?;
     let (header, body) = source.split_once("\n\n").unwrap_or((&source, ""));
     let seconds = started.elapsed().as_secs_f64();

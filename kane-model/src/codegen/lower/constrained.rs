@@ -1,9 +1,9 @@
 //! The right-hand side of a constrained model lowered: in come Kane's equations over all speeds
-//! (`M`, `f`) with their constraint block; out go `derive` and `rhs`. At each evaluation `rhs`
-//! factors `A_d` (Householder, [`super::householder`]), solves the dependent speeds
-//! `A_d u_d = -(A_i u_i + b)`, then `C_d = -A_d^-1 A_i` and `g_d = -A_d^-1 bias`, and solves the
-//! reduced `(C^T M C) u_i' = C^T (f - M g)` with `C = [I; C_d]`, `g = [0; g_d]`: no symbolic
-//! inverse, so nothing divides by an entry that vanishes at a symmetric state.
+//! (`M`, `f`) with their constraint block; out go `param_constants` and `rhs`. At each
+//! evaluation `rhs` factors `A_d` (Householder, [`super::householder`]), solves the dependent
+//! speeds `A_d u_d = -(A_i u_i + b)`, then `C_d = -A_d^-1 A_i` and `g_d = -A_d^-1 bias`, and
+//! solves the reduced `(C^T M C) u_i' = C^T (f - M g)` with `C = [I; C_d]`, `g = [0; g_d]`: no
+//! symbolic inverse, so nothing divides by an entry that vanishes at a symmetric state.
 // Matrix code reads clearest with indices.
 #![allow(clippy::needless_range_loop)]
 
@@ -17,7 +17,7 @@ use super::householder::{self, sum, Factored};
 use super::inverse::{self, LoadValues};
 use super::solve;
 
-/// The `derive` and `rhs` sections of the constrained `eqs`.
+/// The `param_constants` and `rhs` sections of the constrained `eqs`.
 pub fn lower(
     ar: &mut Arena,
     eqs: &KaneEquations,
@@ -37,7 +37,7 @@ pub fn lower(
     let mut hoisted = Hoisted::default();
     let roots = roots.iter().map(|r| hoisted.rewrite(ar, *r, &is_param)).collect::<Result<Vec<_>, _>>()?;
     let states: Vec<SymbolId> = eqs.coordinates.iter().chain(&eqs.speeds).copied().collect();
-    let (symbols, derive) = hoisted.reading(ar, &states, params);
+    let (symbols, param_constants) = hoisted.reading(ar, &states, params);
     let dependent: Vec<ExprId> = c.dependent.iter().map(|s| ar.symbol_expr(*s)).collect();
     let mut lowering = Compiler::new(ar, |s| symbols.get(&s).copied(), None);
     let block = Block::lower(&mut lowering, &dependent, &roots[..first], eqs.coordinates.len());
@@ -66,7 +66,7 @@ pub fn lower(
     };
     let mut results = kinematics;
     results.extend(x);
-    Ok((derive, lowering.builder.finish(results)))
+    Ok((param_constants, lowering.builder.finish(results)))
 }
 
 /// `A_d`, `A_i` and `b`, row by row, in one list.

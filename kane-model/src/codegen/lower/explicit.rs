@@ -1,6 +1,7 @@
 //! The right-hand side from explicit speed rates (the order-n form): in come `q' = kinematics`
-//! and `u' = rates` as expressions; out go the `derive` section (their parameter-only parts,
-//! once per parameter set) and the `rhs` section (`q'` then `u'`, shared subexpressions once).
+//! and `u' = rates` as expressions; out go the `param_constants` section (their parameter-only
+//! parts, once per parameter set) and the `rhs` section (`q'` then `u'`, shared subexpressions
+//! once).
 
 use rustc_hash::FxHashMap;
 
@@ -22,7 +23,7 @@ pub struct Explicit<'a> {
     pub rates: &'a [ExprId],
 }
 
-/// The `derive` and `rhs` sections of `form`; `params` are the constants the code reads.
+/// The `param_constants` and `rhs` sections of `form`; `params` are the constants the code reads.
 pub fn lower(
     ar: &mut Arena,
     form: &Explicit<'_>,
@@ -34,11 +35,11 @@ pub fn lower(
     for &r in form.kinematics.iter().chain(form.rates) {
         roots.push(hoisted.rewrite(ar, r, &is_param)?);
     }
-    let (symbols, derive) = hoisted.reading(ar, form.states, params);
+    let (symbols, param_constants) = hoisted.reading(ar, form.states, params);
     let late = late_speeds(ar, form.speeds);
     let mut lowering = Compiler::new(ar, |s| symbols.get(&s).copied(), Some(&late));
     let values = lowering.lower_all(&roots);
-    Ok((derive, lowering.builder.finish(values)))
+    Ok((param_constants, lowering.builder.finish(values)))
 }
 
 /// Marks the expressions that read a speed, memoised over the graph (speeds arrive last in an

@@ -20,7 +20,8 @@ pub struct Hoisted {
 
 impl Hoisted {
     /// How a section reads symbols (time, `states`, `params`, and these constants as
-    /// `Input::Derived`), and the `derive` section computing the constants from the parameters.
+    /// `Input::ParamConstant`), and the `param_constants` section computing the constants from
+    /// the parameters.
     pub fn reading(
         &self,
         ar: &Arena,
@@ -31,14 +32,14 @@ impl Hoisted {
         symbols.insert(TIME, Input::Time);
         symbols.extend(states.iter().enumerate().map(|(i, s)| (*s, Input::State(i))));
         symbols.extend(params.iter().enumerate().map(|(i, s)| (*s, Input::Param(i))));
-        let derive = {
+        let param_constants = {
             let defs: Vec<ExprId> = self.defs.iter().map(|d| d.1).collect();
             let mut lowering = Compiler::new(ar, |s| symbols.get(&s).copied(), None);
             let values = lowering.lower_all(&defs);
             lowering.builder.finish(values)
         };
-        symbols.extend(self.defs.iter().enumerate().map(|(i, (s, _))| (*s, Input::Derived(i))));
-        (symbols, derive)
+        symbols.extend(self.defs.iter().enumerate().map(|(i, (s, _))| (*s, Input::ParamConstant(i))));
+        (symbols, param_constants)
     }
 
     /// `e` with its parameter-only parts replaced by constants (`is_param` names the parameters).

@@ -1,8 +1,8 @@
 //! The right-hand side of a model with loads solved for (KANE(T1, ...)) lowered: in come Kane's
-//! equations over the speeds with the auxiliary rows and the load columns; out go `derive` and
-//! `rhs`. At each evaluation `rhs` solves `[M, -B_s; M_a, -B_a] [u'; T] = [f; f_a]` by
-//! Householder reflections ([`super::householder`]) and keeps `u'`; an output that reads a
-//! load solves the same system.
+//! equations over the speeds with the auxiliary rows and the load columns; out go
+//! `param_constants` and `rhs`. At each evaluation `rhs` solves
+//! `[M, -B_s; M_a, -B_a] [u'; T] = [f; f_a]` by Householder reflections
+//! ([`super::householder`]) and keeps `u'`; an output that reads a load solves the same system.
 // Matrix code reads clearest with indices.
 #![allow(clippy::needless_range_loop)]
 
@@ -15,7 +15,7 @@ use super::hoist::Hoisted;
 use super::householder::{self, sum};
 use super::solve::{symmetric, upper_triangle};
 
-/// The `derive` and `rhs` sections of the unconstrained `eqs` with the loads `l`.
+/// The `param_constants` and `rhs` sections of the unconstrained `eqs` with the loads `l`.
 pub fn lower(
     ar: &mut Arena,
     eqs: &KaneEquations,
@@ -32,13 +32,13 @@ pub fn lower(
     let mut hoisted = Hoisted::default();
     let roots = roots.iter().map(|r| hoisted.rewrite(ar, *r, &is_param)).collect::<Result<Vec<_>, _>>()?;
     let states: Vec<SymbolId> = eqs.coordinates.iter().chain(&eqs.speeds).copied().collect();
-    let (symbols, derive) = hoisted.reading(ar, &states, params);
+    let (symbols, param_constants) = hoisted.reading(ar, &states, params);
     let mut lowering = Compiler::new(ar, |s| symbols.get(&s).copied(), None);
     let values = lowering.lower_all(&roots);
     let x = solve_unconstrained(&mut lowering.builder, n, l.loads.len(), &values[..first]);
     let mut results = values[first..].to_vec();
     results.extend(&x[..n]);
-    Ok((derive, lowering.builder.finish(results)))
+    Ok((param_constants, lowering.builder.finish(results)))
 }
 
 /// The auxiliary rows of `M`, `f_a`, then `B` row by row.

@@ -1,5 +1,6 @@
 //! Lowering: in comes a [`ModelSpec`]; out goes a [`Program`] (straight-line sections for
-//! `derive`, `rhs` and each output) with the parameters it reads. Nothing here knows Rust.
+//! `param_constants`, `rhs` and each output) with the parameters it reads. Nothing here knows
+//! Rust.
 
 mod choose;
 mod constrained;
@@ -32,8 +33,8 @@ pub struct Lowered {
 }
 
 /// Lowers `spec`: the mass-matrix form (the equations simplified, collected by state monomial,
-/// parameter-only parts hoisted into `derive`, the solve of `M u' = f` and every output lowered)
-/// or, for a tree of simple rotations where it takes fewer operations, the order-n form.
+/// parameter-only parts hoisted into `param_constants`, the solve of `M u' = f` and every output
+/// lowered) or, for a tree of simple rotations where it takes fewer operations, the order-n form.
 pub fn lower(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
     choose::lower(spec)
 }
@@ -62,7 +63,7 @@ fn mass_matrix(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
         all.extend(&o.components);
     }
     let params = parameters(spec, &all, &states, &computed)?;
-    let (derive, rhs) = match (&eqs.constraints, &eqs.loads) {
+    let (param_constants, rhs) = match (&eqs.constraints, &eqs.loads) {
         (Some(c), _) => constrained::lower(&mut spec.model.ar, &eqs, c, &params)?,
         (None, Some(l)) => inverse::lower(&mut spec.model.ar, &eqs, l, &params)?,
         (None, None) => rhs::lower(&mut spec.model.ar, &eqs, &params)?,
@@ -70,7 +71,7 @@ fn mass_matrix(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
     let outputs = outputs::lower(spec, &params)?;
     let nq = eqs.coordinates.len();
     let cyclic = (0..nq).filter(|i| !rhs_free.contains(&states[*i])).collect();
-    let program = Program { derive, rhs, outputs, cyclic, n_coordinates: nq };
+    let program = Program { param_constants, rhs, outputs, cyclic, n_coordinates: nq };
     Ok(Lowered { program, params, states, order_n: false })
 }
 
@@ -90,11 +91,11 @@ fn order_n(spec: &mut ModelSpec) -> Result<Option<Lowered>, CodegenError> {
     let params = parameters(spec, &all, &states, &rate_symbols)?;
     let form =
         explicit::Explicit { states: &states, speeds: &speeds, kinematics: &kinematics, rates: &rates };
-    let (derive, rhs) = explicit::lower(&mut spec.model.ar, &form, &params)?;
+    let (param_constants, rhs) = explicit::lower(&mut spec.model.ar, &form, &params)?;
     let outputs = outputs::lower(spec, &params)?;
     let nq = kinematics.len();
     let cyclic = (0..nq).filter(|i| !rhs_free.contains(&states[*i])).collect();
-    let program = Program { derive, rhs, outputs, cyclic, n_coordinates: nq };
+    let program = Program { param_constants, rhs, outputs, cyclic, n_coordinates: nq };
     Ok(Some(Lowered { program, params, states, order_n: true }))
 }
 

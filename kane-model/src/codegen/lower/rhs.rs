@@ -1,5 +1,5 @@
 //! The right-hand side lowered: in come Kane's equations (simplified) and the parameters; out go
-//! two sections, `derive` (parameter-only quantities, once per parameter set) and `rhs`
+//! two sections, `param_constants` (parameter-only quantities, once per parameter set) and `rhs`
 //! (`q'` then `u'`, the entries of `M` and `f` with `M u' = f` solved in the same program).
 // Symmetric-matrix code reads clearest with two indices (M[i][j] and M[j][i]).
 #![allow(clippy::needless_range_loop)]
@@ -23,7 +23,7 @@ struct Roots {
     hoisted: Hoisted,
 }
 
-/// The `derive` and `rhs` sections of `eqs`; `params` are the constants the code reads.
+/// The `param_constants` and `rhs` sections of `eqs`; `params` are the constants the code reads.
 pub fn lower(
     ar: &mut Arena,
     eqs: &KaneEquations,
@@ -32,7 +32,7 @@ pub fn lower(
     let r = hoisted_roots(ar, eqs, params)?;
     let n = eqs.speeds.len();
     let states: Vec<SymbolId> = eqs.coordinates.iter().chain(&eqs.speeds).copied().collect();
-    let (symbols, derive) = r.hoisted.reading(ar, &states, params);
+    let (symbols, param_constants) = r.hoisted.reading(ar, &states, params);
     // Speeds arrive last in an integrator's stage (they come from the previous stage's u'):
     // products multiply the factors without speeds first.
     let memo = std::cell::RefCell::new(FxHashMap::<ExprId, bool>::default());
@@ -63,7 +63,7 @@ pub fn lower(
     let x = solve::lower(&mut lowering.builder, &solve::System { m: &m, f, recips: &recips, dets: &dets });
     let mut results = kinematics.to_vec();
     results.extend(x);
-    Ok((derive, lowering.builder.finish(results)))
+    Ok((param_constants, lowering.builder.finish(results)))
 }
 
 /// Parameter-only parts (whole subexpressions, the parameter terms of sums and factors of

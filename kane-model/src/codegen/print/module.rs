@@ -1,7 +1,7 @@
 //! The model module printed: in come a spec and its lowered program; out go the items of a Rust
-//! module (`Params`, `derive`, `rhs_derived`, `rhs`, `output`, `jacobian`, `INFO` and a `Model`
-//! implementing [`crate::runtime::GeneratedModel`]; `taylor_derived` and `rhs_lanes` with
-//! [`crate::runtime::LaneModel`] where asked).
+//! module (`Params`, `param_constants`, `rhs_with_constants`, `rhs`, `output`, `jacobian`,
+//! `INFO` and a `Model` implementing [`crate::runtime::GeneratedModel`]; `taylor_derived` and
+//! `rhs_lanes` with [`crate::runtime::LaneModel`] where asked).
 
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
@@ -36,7 +36,7 @@ pub fn module(spec: &ModelSpec, lowered: &Lowered, extras: &Extras) -> TokenStre
     let state_idx: Vec<usize> = (0..state_names.len()).collect();
     let (ns, no) = (state_names.len(), spec.outputs.len());
     let n_columns: usize = spec.outputs.iter().map(|o| o.components.len()).sum();
-    let n_derived = program.derive.results.len();
+    let n_constants = program.param_constants.results.len();
     let params_items = params_items(spec, lowered, &param_idents);
     let quaternion: Vec<bool> = spec.outputs.iter().map(|o| is_quaternion(&o.kind)).collect();
     let compute = functions(program, &param_idents, &quaternion);
@@ -62,11 +62,11 @@ pub fn module(spec: &ModelSpec, lowered: &Lowered, extras: &Extras) -> TokenStre
             pub const #state_consts: usize = #state_idx;
         )*
         #params_items
-        /// Quantities of the parameters alone, computed once per parameter set by [`derive`].
+        /// Quantities of the parameters alone, computed once per parameter set by [`param_constants`].
         #[derive(Clone, Debug, PartialEq)]
-        pub struct Derived {
-            /// The values, in the order `rhs_derived` reads them.
-            pub v: [f64; #n_derived],
+        pub struct ParamConstants {
+            /// The values, in the order `rhs_with_constants` reads them.
+            pub v: [f64; #n_constants],
         }
         #compute
         #lanes
@@ -110,26 +110,26 @@ fn input_tokens(params: &[Ident], generic: bool) -> impl Fn(Input) -> TokenStrea
             let p = &params[i];
             quote!(p.#p)
         }
-        Input::Derived(i) => quote!(::kane_model::__private::cast::<T>(__derived.v[#i])),
+        Input::ParamConstant(i) => quote!(::kane_model::__private::cast::<T>(__constants.v[#i])),
         Input::Rate(i) => quote!(rates[#i]),
         Input::Slot(i) => quote!(slots[#i]),
     }
 }
 
-/// How each input is read in `rhs_lanes`: parameters and derived quantities from slices of the
+/// How each input is read in `rhs_lanes`: parameters and parameter constants from slices of the
 /// number type (one value per lane).
 fn lane_input_tokens(input: Input) -> TokenStream {
     match input {
         Input::Time => quote!(t),
         Input::State(i) => quote!(y[#i]),
         Input::Param(i) => quote!(p[#i]),
-        Input::Derived(i) => quote!(d[#i]),
+        Input::ParamConstant(i) => quote!(d[#i]),
         Input::Rate(i) => quote!(rates[#i]),
         Input::Slot(i) => quote!(slots[#i]),
     }
 }
 
-/// `rhs_lanes`: the right-hand side with parameters and derived quantities in the number type.
+/// `rhs_lanes`: the right-hand side with parameters and parameter constants in the number type.
 fn rhs_lanes_fn(program: &Program) -> TokenStream {
     let style = SectionStyle {
         scalar: Scalar::Generic(format_ident!("T")),
@@ -139,8 +139,8 @@ fn rhs_lanes_fn(program: &Program) -> TokenStream {
     let (body, values) = section::print(&program.rhs, &style);
     let idx: Vec<usize> = (0..values.len()).collect();
     quote! {
-        /// `dy = f(t, y)` with the parameters `p` (in `INFO.param_names` order) and the derived
-        /// quantities `d` (`derive(p).v`) in the number type: one member per lane of a batch.
+        /// `dy = f(t, y)` with the parameters `p` (in `INFO.param_names` order) and the parameter
+        /// constants `d` (`param_constants(p).v`) in the number type: one member per lane of a batch.
         #[allow(unused_variables, clippy::all)]
         #[inline]
         pub fn rhs_lanes<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &[T], d: &[T], dy: &mut [T]) {
@@ -157,13 +157,13 @@ fn rhs_lanes_fn(program: &Program) -> TokenStream {
     }
 }
 
-/// `derive`, `rhs_derived`, `rhs`, `output`, `outputs` and `jacobian`.
+/// `param_constants`, `rhs_with_constants`, `rhs`, `output`, `outputs` and `jacobian`.
 fn functions(program: &Program, params: &[Ident], quaternion: &[bool]) -> TokenStream {
     let t = format_ident!("T");
     let (generic_in, f64_in) = (input_tokens(params, true), input_tokens(params, false));
     let generic = SectionStyle { scalar: Scalar::Generic(t.clone()), input: &generic_in, prefix: "__v" };
     let plain = SectionStyle { scalar: Scalar::F64, input: &f64_in, prefix: "__v" };
-    let (derive_body, derive_values) = section::print(&program.derive, &plain);
+    let (constants_body, constants_values) = section::print(&program.param_constants, &plain);
     let (rhs_body, rhs_values) = section::print(&program.rhs, &generic);
     let rhs_idx: Vec<usize> = (0..rhs_values.len()).collect();
     let outputs = super::outputs::output_fns(program, quaternion, &generic);
@@ -171,22 +171,22 @@ fn functions(program: &Program, params: &[Ident], quaternion: &[bool]) -> TokenS
     quote! {
         /// The parameter-only subexpressions of `rhs`.
         #[allow(unused_variables, clippy::all)]
-        pub fn derive(p: &Params) -> Derived {
-            #derive_body
-            Derived { v: [#(#derive_values),*] }
+        pub fn param_constants(p: &Params) -> ParamConstants {
+            #constants_body
+            ParamConstants { v: [#(#constants_values),*] }
         }
 
-        /// `dy = f(t, y)` with the parameter-only quantities `d = derive(p)` precomputed.
+        /// `dy = f(t, y)` with the parameter-only quantities `d = param_constants(p)` precomputed.
         #[allow(unused_variables, clippy::all)]
         #[inline]
-        pub fn rhs_derived<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, __derived: &Derived, dy: &mut [T]) {
+        pub fn rhs_with_constants<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, __constants: &ParamConstants, dy: &mut [T]) {
             #rhs_body
             #( dy[#rhs_idx] = #rhs_values; )*
         }
 
         /// `dy = f(t, y)`: the kinematic equations and `M u' = f` solved for `u'`.
         pub fn rhs<T: ::kane_model::__private::num_traits::Float>(t: T, y: &[T], p: &Params, dy: &mut [T]) {
-            rhs_derived(t, y, p, &derive(p), dy)
+            rhs_with_constants(t, y, p, &param_constants(p), dy)
         }
 
         #outputs
@@ -214,7 +214,7 @@ fn functions(program: &Program, params: &[Ident], quaternion: &[bool]) -> TokenS
 fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident], taylor: bool) -> TokenStream {
     let taylor_method = taylor.then(|| {
         quote! {
-            fn taylor(t: f64, y: &[f64], p: &Params, d: &Derived, order: usize, out: &mut [f64], work: &mut ::kane_model::runtime::TaylorWork) -> bool {
+            fn taylor(t: f64, y: &[f64], p: &Params, d: &ParamConstants, order: usize, out: &mut [f64], work: &mut ::kane_model::runtime::TaylorWork) -> bool {
                 taylor_derived(t, y, p, d, order, out, work)
             }
         }
@@ -237,7 +237,7 @@ fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident], taylor: boo
 
         impl ::kane_model::runtime::GeneratedModel for Model {
             type Params = Params;
-            type Derived = Derived;
+            type ParamConstants = ParamConstants;
             const INFO: ::kane_model::runtime::ModelInfo = INFO;
             fn initial_state() -> Vec<f64> {
                 vec![#(#initial),*]
@@ -254,17 +254,17 @@ fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident], taylor: boo
                     _ => None,
                 }
             }
-            fn derive(p: &Params) -> Derived {
-                derive(p)
+            fn param_constants(p: &Params) -> ParamConstants {
+                param_constants(p)
             }
             #[inline]
-            fn rhs_derived(t: f64, y: &[f64], p: &Params, d: &Derived, dy: &mut [f64]) {
-                rhs_derived(t, y, p, d, dy)
+            fn rhs_with_constants(t: f64, y: &[f64], p: &Params, d: &ParamConstants, dy: &mut [f64]) {
+                rhs_with_constants(t, y, p, d, dy)
             }
             fn output(k: usize, t: f64, y: &[f64], rates: &[f64], p: &Params, out: &mut [f64]) {
                 output(k, t, y, rates, p, out)
             }
-            fn derived_values(d: &Derived) -> &[f64] {
+            fn constant_values(d: &ParamConstants) -> &[f64] {
                 &d.v
             }
             fn output_rate(k: usize, t: f64, y: &[f64], dy: &[f64], p: &Params, out: &mut [f64], rate: &mut [f64]) {

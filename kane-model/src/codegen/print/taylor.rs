@@ -25,25 +25,25 @@ pub fn taylor_fn(
     let arms = orders.iter().map(|&o| {
         let (name, o) = (order_fn_name(o), Literal::usize_unsuffixed(o));
         // SAFETY: the CPU has fused multiply-add, which is all the function assumes.
-        quote!(#o if __t::fused_multiply_add() => unsafe { #name(t, y, p, __derived, out) },)
+        quote!(#o if __t::fused_multiply_add() => unsafe { #name(t, y, p, __constants, out) },)
     });
     let orders = orders.iter().map(|&o| order_fn(program, input, o));
     quote! {
         /// The normalised Taylor coefficients of the solution through `(t, y)`, orders
         /// `0..=order`, into `out` (state `i`'s coefficient `k` at `out[i * (order + 1) + k]`),
-        /// with `d = derive(p)`; `work` is scratch. Straight-line code for the orders of
+        /// with `d = param_constants(p)`; `work` is scratch. Straight-line code for the orders of
         /// `INFO.taylor_straight_line` on CPUs with fused multiply-add, `taylor_derived_loop`
         /// otherwise. False (nothing done) for an order above
         /// `kane_model::runtime::TAYLOR_MAX_ORDER`.
         #[allow(unused_variables, unused_imports, clippy::all)]
         pub fn taylor_derived<T: ::kane_model::__private::num_traits::Float>(
-            t: T, y: &[T], p: &Params, __derived: &Derived, order: usize, out: &mut [T],
+            t: T, y: &[T], p: &Params, __constants: &ParamConstants, order: usize, out: &mut [T],
             work: &mut Vec<::kane_model::__private::taylor::Row<T>>,
         ) -> bool {
             use ::kane_model::__private::taylor as __t;
             match order {
                 #(#arms)*
-                _ => taylor_derived_loop(t, y, p, __derived, order, out, work),
+                _ => taylor_derived_loop(t, y, p, __constants, order, out, work),
             }
         }
         #looped
@@ -103,7 +103,7 @@ fn loop_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream) -> Tok
         /// operation and order.
         #[allow(unused_variables, clippy::all)]
         pub fn taylor_derived_loop<T: ::kane_model::__private::num_traits::Float>(
-            t: T, y: &[T], p: &Params, __derived: &Derived, order: usize, out: &mut [T],
+            t: T, y: &[T], p: &Params, __constants: &ParamConstants, order: usize, out: &mut [T],
             work: &mut Vec<::kane_model::__private::taylor::Row<T>>,
         ) -> bool {
             use ::kane_model::__private::taylor as __t;

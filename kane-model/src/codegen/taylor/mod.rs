@@ -5,8 +5,8 @@
 //! `y(t)`, it gives `y_0 .. y_p` with `y(t + h) = sum_k y_k h^k + O(h^(p+1))`: pass `k` computes
 //! coefficient `k` of every value, and the states' next coefficient is `y_{k+1} = f_k / (k + 1)`.
 
-mod build;
 mod linear;
+mod rewrite;
 
 use num_traits::Float;
 use thiserror::Error;
@@ -16,7 +16,7 @@ use crate::runtime::taylor::Inverse;
 
 use super::ir::{Input, Section};
 
-pub use build::build;
+pub use rewrite::build;
 
 /// The largest straight-line pass count ([`TaylorProgram::straight_line_cost`]) written out:
 /// past it the loop is as fast (measured: BENCHMARKS.md, "Straight-line or loop") and the code
@@ -53,7 +53,7 @@ pub enum TKind {
     State(u32),
     /// A constant.
     Const(f64),
-    /// Section input `k` (a parameter or derived quantity): constant.
+    /// Section input `k` (a parameter or parameter constant): constant.
     Input(u32),
     /// `a + b`.
     Add(u32, u32),
@@ -171,7 +171,7 @@ impl TaylorProgram {
 
     /// The normalised Taylor coefficients of the solution through `(t, y)`, orders `0..=order`,
     /// into `out` (state-major: state `i`'s coefficient `k` at `out[i * (order + 1) + k]`);
-    /// `read` gives parameters and derived quantities; `work` is scratch (reused to save
+    /// `read` gives parameters and parameter constants; `work` is scratch (reused to save
     /// allocating). False (nothing done) for an order above [`crate::runtime::TAYLOR_MAX_ORDER`].
     pub fn coefficients<T: Float>(
         &self,

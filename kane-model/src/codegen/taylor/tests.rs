@@ -186,11 +186,11 @@ fn a_section_that_is_no_right_hand_side_is_refused() {
 }
 
 /// A top-like right-hand side: `x' = x w / 2 + y w / 2 - x y / 2`, `y' = c (x y) - c (y y) + x`,
-/// `w' = 0 d` (a parameter `c`, a derived `d`): linear parts to fold, a constant state.
+/// `w' = 0 d` (a parameter `c`, a parameter constant `d`): linear parts to fold, a constant state.
 fn foldable() -> Section {
     let mut b = SectionBuilder::default();
     let (x, y, w) = (b.input(Input::State(0)), b.input(Input::State(1)), b.input(Input::State(2)));
-    let (c, d) = (b.input(Input::Param(0)), b.input(Input::Derived(0)));
+    let (c, d) = (b.input(Input::Param(0)), b.input(Input::ParamConstant(0)));
     let two = b.constant(2.0);
     let halves: Vec<u32> = [(x, w), (y, w), (x, y)]
         .into_iter()
@@ -233,7 +233,7 @@ fn folding_keeps_the_coefficients_and_drops_varying_operations() {
     assert_eq!(products(&folded), 2, "x y and y y: w is constant");
     let read = |i: Input| match i {
         Input::Param(_) => 1.7,
-        Input::Derived(_) => -0.3,
+        Input::ParamConstant(_) => -0.3,
         _ => f64::NAN,
     };
     let y = [0.4, -0.9, 1.3];

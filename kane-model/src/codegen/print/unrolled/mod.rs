@@ -147,7 +147,7 @@ pub fn order_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream, o
         #[allow(unused_variables, clippy::all)]
         #[cfg_attr(any(target_arch = "x86", target_arch = "x86_64"), target_feature(enable = "fma"))]
         unsafe fn #name<T: ::kane_model::__private::num_traits::Float>(
-            t: T, y: &[T], p: &Params, __derived: &Derived, out: &mut [T],
+            t: T, y: &[T], p: &Params, __constants: &ParamConstants, out: &mut [T],
         ) -> bool {
             use ::kane_model::__private::taylor as __t;
             let Ok(out) = <&mut [T; #n_out]>::try_from(&mut out[..#n_out]) else {

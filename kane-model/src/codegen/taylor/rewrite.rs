@@ -145,7 +145,7 @@ impl Builder {
             Op::Input(k) => match section.inputs[k as usize] {
                 Input::Time => self.push(TKind::Time, &[]),
                 Input::State(i) => self.push(TKind::State(i as u32), &[]),
-                Input::Param(_) | Input::Derived(_) | Input::Slot(_) => self.push(TKind::Input(k), &[]),
+                Input::Param(_) | Input::ParamConstant(_) | Input::Slot(_) => self.push(TKind::Input(k), &[]),
                 Input::Rate(i) => return Err(TaylorError::ReadsRates(i)),
             },
             Op::Const(c) => self.constant(c),

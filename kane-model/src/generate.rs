@@ -80,7 +80,7 @@ pub fn generate_builtin(name: &str, options: &CodeOptions) -> Result<Emitted, Bu
 /// fn main() {
 ///     let out = std::path::Path::new(&std::env::var("OUT_DIR").unwrap()).join("gimbal.rs");
 ///     let options = kane_model::codegen::CodeOptions::default();
-///     kane_model::build::build_script("models/gimbal_gyroscope.al", &out, &options).unwrap();
+///     kane_model::generate::build_script("models/gimbal_gyroscope.al", &out, &options).unwrap();
 /// }
 /// // src/lib.rs: pub mod gimbal { include!(concat!(env!("OUT_DIR"), "/gimbal.rs")); }
 /// ```
