@@ -4,9 +4,20 @@
 
 use std::ops::ControlFlow;
 
-use super::integration::Outcome;
+use super::stages::Stats;
 use super::stepper::{Stepper, StopReason};
 use super::OdeError;
+
+/// How a run ended: its cost and why it stopped.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Outcome {
+    /// The cost.
+    pub stats: Stats,
+    /// Why it stopped: [`StopReason::StopTimeReached`] at the last output time,
+    /// [`StopReason::Event`] where the watcher ended it, [`StopReason::OutputBreak`] where the
+    /// output callback did.
+    pub reason: StopReason,
+}
 
 /// Steps `stepper` through the output `times`, calling `out(t, y)` at each (a break ends the
 /// run, no error) and `watch(stepper)` after each accepted step; when that breaks with `t_stop`

@@ -10,8 +10,7 @@
 
 use std::ops::ControlFlow;
 
-use super::drive::drive;
-use super::stages::Stats;
+use super::drive::{drive, Outcome};
 use super::stepper::{ErkStepper, Stepper, StopReason, DEFAULT_MAX_STEPS};
 use super::taylor::TaylorStepper;
 use super::{Method, OdeError, System, Tolerances};
@@ -45,17 +44,6 @@ use super::{Method, OdeError, System, Tolerances};
 pub struct Integration<'a, S: System + ?Sized, W = Unwatched> {
     start: Start<'a, S>,
     watch: W,
-}
-
-/// How a run ended: its cost and why it stopped.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Outcome {
-    /// The cost.
-    pub stats: Stats,
-    /// Why it stopped: [`StopReason::StopTimeReached`] at the last output time,
-    /// [`StopReason::Event`] where the watcher ended it, [`StopReason::OutputBreak`] where the
-    /// output callback did.
-    pub reason: StopReason,
 }
 
 /// The watcher of an integration without one (no events).

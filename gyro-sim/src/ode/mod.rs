@@ -29,7 +29,8 @@ mod unit_norm;
 
 pub(crate) use control::PiControl;
 pub use dense::DenseOutput;
-pub use integration::{Integration, Outcome, Unwatched};
+pub use drive::Outcome;
+pub use integration::{Integration, Unwatched};
 pub use methods::{
     by_name, for_tolerances, methods_help, Method, MethodInfo, Tolerances, AUTO, METHODS, TAYLOR,
 };

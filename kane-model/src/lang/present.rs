@@ -6,7 +6,7 @@ use rustc_hash::FxHashMap;
 use crate::expr::{Abbreviations, Arena, Collected, ExprError, ExprId, SymbolKind, MAX_EXPANDED_TERMS};
 
 use super::interp::value::Value;
-use super::interp::Binding;
+use super::interp::{Binding, LoadedModel};
 
 /// The named parameter expressions of a model file, ready to print expressions in them.
 #[derive(Clone, Debug, Default)]
@@ -14,6 +14,14 @@ pub struct Presenter {
     names: Abbreviations,
     /// Each name (upper-cased, as the file binds it) with its value.
     pub defined: Vec<(String, ExprId)>,
+}
+
+impl LoadedModel {
+    /// The presenter of the file's named parameter expressions (`I1 = ...`), for printing
+    /// expressions simplified and in those names.
+    pub fn presenter(&mut self) -> Result<Presenter, ExprError> {
+        Presenter::new(&mut self.model.ar, &self.bindings, None)
+    }
 }
 
 /// True when `e` holds parameters only, and at least one.

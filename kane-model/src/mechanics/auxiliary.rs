@@ -15,24 +15,8 @@ use rustc_hash::FxHashMap;
 use crate::expr::{ExprId, SymbolId};
 
 use super::error::{MechanicsError, Result};
-use super::kane::KaneEquations;
+use super::kane::{KaneEquations, SolvedLoads};
 use super::model::Model;
-
-/// The loads solved with the speed rates, and the equations of the auxiliary speeds.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SolvedLoads {
-    /// The unknown loads `T`, in KANE's order.
-    pub loads: Vec<SymbolId>,
-    /// The auxiliary speeds (zero in every motion).
-    pub auxiliary: Vec<SymbolId>,
-    /// The auxiliary rows of `M`, a column per speed (independent then dependent).
-    pub mass_rows: Vec<Vec<ExprId>>,
-    /// The auxiliary rows of `f` with the loads zero.
-    pub forcing: Vec<ExprId>,
-    /// `B = df/dT`, the speed rows (independent then dependent) then the auxiliary rows, a
-    /// column per load.
-    pub load_columns: Vec<Vec<ExprId>>,
-}
 
 impl Model {
     /// Declares auxiliary speeds (speeds the model declared, zero in every motion); they stop

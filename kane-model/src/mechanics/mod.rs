@@ -30,11 +30,10 @@ mod table;
 mod vector;
 mod vector_ops;
 
-pub use auxiliary::SolvedLoads;
 pub use error::{MechanicsError, Result};
 pub use ids::{BodyId, FrameId, Mat3, ParticleId, PointId};
 pub use inertia::Shape;
-pub use kane::{EquationOps, KaneEquations, SpeedConstraints, COLLECT_TERMS_BUDGET};
+pub use kane::{EquationOps, KaneEquations, SolvedLoads, SpeedConstraints, COLLECT_TERMS_BUDGET};
 pub use masses::{MassId, MassView};
 pub use model::{Body, Load, Model, Orientation, Particle};
 pub use order_n::{ldlt_operations, ORDER_N_FIRST_ABOVE};

@@ -5,7 +5,18 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::super::ir::SectionBuilder;
-use super::solve::System;
+
+/// The values of `M` (None: structurally zero) and `f`, and quantities computed elsewhere.
+pub struct System<'a> {
+    /// `M`, symmetric.
+    pub m: &'a [Vec<Option<u32>>],
+    /// `f`.
+    pub f: &'a [u32],
+    /// `recips[j]`, when given, is `1 / m[j][j]`.
+    pub recips: &'a [Option<u32>],
+    /// The determinants of 2x2 blocks, by the block's indices.
+    pub dets: &'a [((usize, usize), u32)],
+}
 
 /// Solves the block `idx` of `M x = f`, writing the values of the solution into `x`. Each pivot
 /// is inverted once; `recips[j]`, when given, is `1 / m[j][j]` computed elsewhere (used when the

@@ -7,18 +7,7 @@
 
 use super::super::ir::SectionBuilder;
 use super::ldlt;
-
-/// The values of `M` (None: structurally zero) and `f`, and quantities computed elsewhere.
-pub struct System<'a> {
-    /// `M`, symmetric.
-    pub m: &'a [Vec<Option<u32>>],
-    /// `f`.
-    pub f: &'a [u32],
-    /// `recips[j]`, when given, is `1 / m[j][j]`.
-    pub recips: &'a [Option<u32>],
-    /// The determinants of 2x2 blocks, by the block's indices.
-    pub dets: &'a [((usize, usize), u32)],
-}
+pub use super::ldlt::System;
 
 /// The upper triangle of the symmetric `m`, row by row (the entries a section lowers).
 pub fn upper_triangle<T: Copy>(m: &[Vec<T>]) -> Vec<T> {

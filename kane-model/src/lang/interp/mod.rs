@@ -142,12 +142,6 @@ impl LoadedModel {
         }
     }
 
-    /// The presenter of the file's named parameter expressions (`I1 = ...`), for printing
-    /// expressions simplified and in those names.
-    pub fn presenter(&mut self) -> Result<super::present::Presenter, crate::expr::ExprError> {
-        super::present::Presenter::new(&mut self.model.ar, &self.bindings, None)
-    }
-
     /// The INPUT value of `name` (case-insensitive).
     pub fn input(&self, name: &str) -> Option<f64> {
         self.inputs.iter().rev().find(|i| i.name.eq_ignore_ascii_case(name)).map(|i| i.value)
