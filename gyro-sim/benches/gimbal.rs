@@ -112,6 +112,7 @@ impl HandGimbal {
 struct HandGimbalReduced(HandGimbal);
 
 impl gyro_sim::System for HandGimbalReduced {
+    const FIXED_DIM: usize = 4;
     fn dim(&self) -> usize {
         4
     }

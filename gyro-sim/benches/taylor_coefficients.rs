@@ -1,4 +1,4 @@
-//! Taylor coefficients per call: the generated `taylor_derived` of the heavy top and the gimbal
+//! Taylor coefficients per call: the generated `taylor_with_constants` of the heavy top and the gimbal
 //! at every straight-line order, and the loop at order 16 beside it.
 //!
 //! `cargo bench -p gyro-sim --bench taylor_coefficients`. Figures are in BENCHMARKS.md.
@@ -9,7 +9,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use gyro_sim::{gimbal_gyroscope as gimbal, heavy_top as top};
 use kane_model::runtime::TAYLOR_UNROLLED_ORDERS;
 
-/// Benches `$m::taylor_derived` at `$y`, every straight-line order, and the loop at 16.
+/// Benches `$m::taylor_with_constants` at `$y`, every straight-line order, and the loop at 16.
 macro_rules! coefficient_benches {
     ($c:expr, $name:literal, $m:ident, $y:expr) => {{
         let p = $m::Params::default();
@@ -20,12 +20,12 @@ macro_rules! coefficient_benches {
         for &order in TAYLOR_UNROLLED_ORDERS {
             let mut out = vec![0.0; y.len() * (order + 1)];
             g.bench_function(format!("order_{order}"), |b| {
-                b.iter(|| $m::taylor_derived(0.0, black_box(&y), &p, &d, order, &mut out, &mut work))
+                b.iter(|| $m::taylor_with_constants(0.0, black_box(&y), &p, &d, order, &mut out, &mut work))
             });
         }
         let mut out = vec![0.0; y.len() * 17];
         g.bench_function("loop_order_16", |b| {
-            b.iter(|| $m::taylor_derived_loop(0.0, black_box(&y), &p, &d, 16, &mut out, &mut work))
+            b.iter(|| $m::taylor_with_constants_loop(0.0, black_box(&y), &p, &d, 16, &mut out, &mut work))
         });
         g.finish();
     }};

@@ -24,14 +24,6 @@ pub enum RunError {
     /// Writing the results failed.
     #[error("{0}")]
     Write(#[from] WriteError),
-    /// The scene's `[view]` tables are wrong (checked before integrating).
-    #[error("{}: {error}\n  help: fix the [view] tables of the scene", scene.display())]
-    View {
-        /// The scene file.
-        scene: std::path::PathBuf,
-        /// What is wrong.
-        error: crate::scene::ViewError,
-    },
     /// The integration stopped after some rows were written: they are kept, marked partial.
     #[error("{error}\n  rows computed before it: {rows}, in {} (partial; the folder's earlier results are unchanged)", path.display())]
     Partial {
@@ -62,9 +54,6 @@ pub fn run(scene: &Scene, out_dir: Option<&Path>) -> Result<RunSummary, RunError
 /// written as they are produced and the trajectory keeps a bounded, thinned set of them (see
 /// `RowStream`); a run that fails after some rows keeps them as `trajectory.partial.csv`.
 pub fn run_with(scene: &Scene, registry: &Registry, out_dir: Option<&Path>) -> Result<RunSummary, RunError> {
-    if let Some(view) = &scene.view {
-        view.check().map_err(|error| RunError::View { scene: scene.path.clone(), error })?;
-    }
     let problem = resolve(scene, registry)?;
     let Some(dir) = out_dir else {
         return Ok(RunSummary { trajectory: solve(&problem, None)?, written: None });

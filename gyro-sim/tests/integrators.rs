@@ -15,15 +15,16 @@ fn oscillator_error(t: f64, y: &[f64]) -> f64 {
     ((y[0] - exact[0]).powi(2) + (y[1] - exact[1]).powi(2)).sqrt()
 }
 
-fn error_at_one(method: Method) -> f64 {
+/// The error at `t_end` of [`Oscillator`] integrated from `(0, [0, 1])` by `method`.
+fn error_at(t_end: f64, method: Method) -> f64 {
     let mut last = [0.0; 2];
     Integration::new(&Oscillator, 0.0, &[0.0, 1.0], method)
-        .run(&[1.0], |_, y| {
+        .run(&[t_end], |_, y| {
             last.copy_from_slice(y);
             ControlFlow::Continue(())
         })
         .unwrap();
-    oscillator_error(1.0, &last)
+    oscillator_error(t_end, &last)
 }
 
 #[test]
@@ -34,8 +35,8 @@ fn observed_order_matches_each_tableau() {
         (&tableau::DOP853, 8.0, 0.25),
         (&tableau::VERN7, 7.0, 0.25),
     ] {
-        let e1 = error_at_one(Method::Fixed(tab, h));
-        let e2 = error_at_one(Method::Fixed(tab, h / 2.0));
+        let e1 = error_at(1.0, Method::Fixed(tab, h));
+        let e2 = error_at(1.0, Method::Fixed(tab, h / 2.0));
         let observed = (e1 / e2).log2();
         assert!((observed - order).abs() < 0.3, "{}: observed order {observed}", tab.name);
     }
@@ -46,7 +47,7 @@ fn adaptive_error_follows_the_tolerance() {
     for tab in [&tableau::DOPRI5, &tableau::DOP853, &tableau::VERN7, &tableau::VERN9] {
         let mut last = 1.0;
         for tol in [1e-6, 1e-8, 1e-10] {
-            let e = error_at_one(Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol }));
+            let e = error_at(1.0, Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol }));
             assert!(e < 50.0 * tol, "{} tol {tol}: error {e}", tab.name);
             assert!(e < last, "{}", tab.name);
             last = e;
@@ -114,23 +115,27 @@ fn dense_output_is_accurate_between_steps_and_saves_steps() {
     assert!(stats8.steps < 150, "dop853: {} steps for 1000 outputs", stats8.steps);
 }
 
+/// The largest dense-output error of `tab` at tolerance `tol` over 231 output times of
+/// [`Gaussian`] on [0, 3] (0.013 apart), and the steps taken.
+fn gaussian_dense_error(tab: &'static tableau::Tableau, tol: f64) -> (f64, usize) {
+    let times: Vec<f64> = (0..=230).map(|i| i as f64 * 0.013).collect();
+    let mut worst: f64 = 0.0;
+    let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
+    let stats = Integration::new(&Gaussian, 0.0, &[1.0], m)
+        .run(&times, |t, y| {
+            worst = worst.max((y[0] - Gaussian.solution(0.0, &[1.0], t)[0]).abs());
+            ControlFlow::Continue(())
+        })
+        .unwrap()
+        .stats;
+    (worst, stats.steps)
+}
+
 #[test]
 fn dop853_dense_output_converges_with_its_order() {
     // Interpolation error at 0.013-spaced output times shrinks with the tolerance like the
     // steps' own error, and stays near it (a wrong extra stage or `d` row would not).
-    let times: Vec<f64> = (0..=230).map(|i| i as f64 * 0.013).collect();
-    let run = |tol: f64| {
-        let mut worst: f64 = 0.0;
-        let m = Method::Adaptive(&tableau::DOP853, Tolerances { rtol: tol, atol: tol });
-        let stats = Integration::new(&Gaussian, 0.0, &[1.0], m)
-            .run(&times, |t, y| {
-                worst = worst.max((y[0] - Gaussian.solution(0.0, &[1.0], t)[0]).abs());
-                ControlFlow::Continue(())
-            })
-            .unwrap()
-            .stats;
-        (worst, stats.steps)
-    };
+    let run = |tol: f64| gaussian_dense_error(&tableau::DOP853, tol);
     let (e6, s6) = run(1e-6);
     let (e10, s10) = run(1e-10);
     assert!(s6 < 100 && s10 < 200, "steps {s6}, {s10}");
@@ -356,7 +361,7 @@ fn a_fixed_step_below_the_time_resolution_underflows() {
 /// The largest error of one fixed step of size `h` of `tab` from the exact `y(0.5)` of
 /// [`Gaussian`]: at the step's end, and of its continuous extension at a few points inside.
 fn one_step_errors(tab: &'static tableau::Tableau, h: f64) -> (f64, f64) {
-    let (t0, exact) = (0.5, |t: f64| (-t * t).exp());
+    let (t0, exact) = (0.5, |t: f64| Gaussian.solution(0.0, &[1.0], t)[0]);
     let mut stepper = ErkStepper::new(&Gaussian, t0, &[exact(t0)], Method::Fixed(tab, h)).unwrap();
     stepper.set_stop_time(t0 + h);
     stepper.step().unwrap();
@@ -372,23 +377,11 @@ fn one_step_errors(tab: &'static tableau::Tableau, h: f64) -> (f64, f64) {
     (end, inside)
 }
 
-/// The error at `t = 10` of [`Oscillator`] (ten periods' worth of steps more than at 1).
-fn error_at_ten(method: Method) -> f64 {
-    let mut last = [0.0; 2];
-    Integration::new(&Oscillator, 0.0, &[0.0, 1.0], method)
-        .run(&[10.0], |_, y| {
-            last.copy_from_slice(y);
-            ControlFlow::Continue(())
-        })
-        .unwrap();
-    oscillator_error(10.0, &last)
-}
-
 #[test]
 fn vern9_converges_with_order_9() {
     // Ninth order needs errors well above rounding for a clean slope: 25 to 50 steps to t = 10.
     let tab = &tableau::VERN9;
-    let (e1, e2) = (error_at_ten(Method::Fixed(tab, 0.4)), error_at_ten(Method::Fixed(tab, 0.2)));
+    let (e1, e2) = (error_at(10.0, Method::Fixed(tab, 0.4)), error_at(10.0, Method::Fixed(tab, 0.2)));
     let observed = (e1 / e2).log2();
     println!("vern9 global errors {e1:e} {e2:e}: order {observed:.2}");
     assert!((observed - 9.0).abs() < 0.3, "vern9: observed order {observed}");
@@ -416,20 +409,8 @@ fn verner_interpolants_are_as_accurate_as_the_steps() {
 fn verner_dense_output_is_accurate_between_steps() {
     // 231 output times on [0, 3] of the Gaussian: interpolated values within the tolerance and
     // shrinking with it (a wrong extra stage or `d` row would not).
-    let times: Vec<f64> = (0..=230).map(|i| i as f64 * 0.013).collect();
     for tab in [&tableau::VERN7, &tableau::VERN9] {
-        let run = |tol: f64| {
-            let mut worst: f64 = 0.0;
-            let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
-            let stats = Integration::new(&Gaussian, 0.0, &[1.0], m)
-                .run(&times, |t, y| {
-                    worst = worst.max((y[0] - Gaussian.solution(0.0, &[1.0], t)[0]).abs());
-                    ControlFlow::Continue(())
-                })
-                .unwrap()
-                .stats;
-            (worst, stats.steps)
-        };
+        let run = |tol: f64| gaussian_dense_error(tab, tol);
         let mut first = None;
         for tol in [1e-6, 1e-8, 1e-10, 1e-12] {
             let (worst, steps) = run(tol);

@@ -25,12 +25,12 @@ macro_rules! check_against_duals {
         let (n, order) = (y.len(), $order);
         let n1 = order + 1;
         let mut c = vec![0.0; n * n1];
-        assert!($m::taylor_derived(t, &y, &p, &d, order, &mut c, &mut Vec::new()));
+        assert!($m::taylor_with_constants(t, &y, &p, &d, order, &mut c, &mut Vec::new()));
         let mut f = vec![0.0; n];
         $m::rhs_with_constants(t, &y, &p, &d, &mut f);
         let yd: Vec<Dual<f64>> = (0..n).map(|i| Dual::new(y[i], f[i])).collect();
         let mut cd = vec![Dual::new(0.0, 0.0); n * n1];
-        assert!($m::taylor_derived(Dual::new(t, 1.0), &yd, &p, &d, order, &mut cd, &mut Vec::new()));
+        assert!($m::taylor_with_constants(Dual::new(t, 1.0), &yd, &p, &d, order, &mut cd, &mut Vec::new()));
         for i in 0..n {
             assert_eq!(c[i * n1], y[i]);
             assert!((c[i * n1 + 1] - f[i]).abs() <= 1e-14 * f[i].abs().max(1.0), "y_1 = f, state {i}");
@@ -62,8 +62,8 @@ fn gimbal_and_top_coefficients_match_dual_numbers() {
     }
 }
 
-/// `taylor_derived` (straight-line code with fused multiply-adds at these orders) against
-/// `taylor_derived_loop` for `model` at `(t, y)`, every straight-line order: each coefficient to
+/// `taylor_with_constants` (straight-line code with fused multiply-adds at these orders) against
+/// `taylor_with_constants_loop` for `model` at `(t, y)`, every straight-line order: each coefficient to
 /// 1e-11 of the largest of its order. The two round differently (fused products, one chain
 /// against four), and the top's Euler-parameter coefficients are small sums of large terms
 /// (at order 20 they differ by up to 6e-13 of the largest); a wrong term differs by far more.
@@ -76,8 +76,8 @@ macro_rules! check_unrolled_against_loop {
             let n1 = order + 1;
             let mut unrolled = vec![f64::NAN; y.len() * n1];
             let mut looped = unrolled.clone();
-            assert!($m::taylor_derived(t, &y, &p, &d, order, &mut unrolled, &mut Vec::new()));
-            assert!($m::taylor_derived_loop(t, &y, &p, &d, order, &mut looped, &mut Vec::new()));
+            assert!($m::taylor_with_constants(t, &y, &p, &d, order, &mut unrolled, &mut Vec::new()));
+            assert!($m::taylor_with_constants_loop(t, &y, &p, &d, order, &mut looped, &mut Vec::new()));
             for (j, (a, b)) in unrolled.iter().zip(&looped).enumerate() {
                 let k = j % n1;
                 let largest = looped.iter().skip(k).step_by(n1).fold(0.0f64, |m, c| m.max(c.abs()));
@@ -91,7 +91,7 @@ macro_rules! check_unrolled_against_loop {
 #[test]
 fn straight_line_coefficients_equal_the_loops() {
     if !kane_model::__private::taylor::fused_multiply_add() {
-        eprintln!("this CPU has no fused multiply-add: taylor_derived takes the loop at every order");
+        eprintln!("this CPU has no fused multiply-add: taylor_with_constants takes the loop at every order");
     }
     check_unrolled_against_loop!(gimbal, 0.3, [0.3, 0.4, 0.1, 0.5, -0.7, 10.0]);
     check_unrolled_against_loop!(gimbal, 0.0, [0.0, 0.0, 0.0, 0.0, 0.0, 100.0]);
@@ -132,7 +132,7 @@ fn the_truncated_series_errs_as_h_to_the_order_plus_one() {
     let order = 6;
     let n1 = order + 1;
     let mut c = vec![0.0; 6 * n1];
-    assert!(gimbal::taylor_derived(0.0, &y0, &p, &d, order, &mut c, &mut Vec::new()));
+    assert!(gimbal::taylor_with_constants(0.0, &y0, &p, &d, order, &mut c, &mut Vec::new()));
     let tight = Method::Adaptive(&DOP853, Tolerances { rtol: 1e-15, atol: 1e-15 });
     let error_at = |h: f64| {
         let exact = &states_at(&sys, &y0, &[h], tight)[0];

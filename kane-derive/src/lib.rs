@@ -141,10 +141,10 @@ mod tests {
     fn straight_line_code_is_written_only_when_asked() {
         let gimbal = LitStr::new("../kane-model/models/gimbal_gyroscope.al", Span::call_site());
         let plain = expand(&gimbal, &Default::default()).unwrap().to_string();
-        assert!(!plain.contains("taylor_derived") && !plain.contains("rhs_lanes"));
+        assert!(!plain.contains("taylor_with_constants") && !plain.contains("rhs_lanes"));
         let options = CodeOptions { taylor: true, ..Default::default() };
         let looped = expand(&gimbal, &options).unwrap().to_string();
-        assert!(looped.contains("taylor_derived_loop") && !looped.contains("taylor_order_"));
+        assert!(looped.contains("taylor_with_constants_loop") && !looped.contains("taylor_order_"));
         let options = CodeOptions { taylor_orders: vec![12], lanes: true, ..Default::default() };
         let asked = expand(&gimbal, &options).unwrap().to_string();
         assert!(asked.contains("taylor_order_12") && !asked.contains("taylor_order_16"));

@@ -146,12 +146,6 @@ pub enum CliError {
         /// The journal that keeps them.
         journal: PathBuf,
     },
-    /// The folder's `sweep.csv` has other columns than this sweep's.
-    #[error("{} holds another sweep's rows (other columns): give another --out, or --new to start over", path.display())]
-    OtherRows {
-        /// The rows file.
-        path: PathBuf,
-    },
     /// A finished member could not be written to the journal.
     #[error("the sweep's journal could not be written: {0}")]
     Journal(#[source] SweepError),
@@ -201,7 +195,7 @@ impl From<SolveError> for CliError {
 /// column already; another is given the scene's path.
 fn run_failure(scene: &std::path::Path, e: &RunError) -> String {
     match e {
-        RunError::Scene(_) | RunError::View { .. } => e.to_string(),
+        RunError::Scene(_) => e.to_string(),
         e => format!("{}: {e}", scene.display()),
     }
 }

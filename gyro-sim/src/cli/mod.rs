@@ -277,9 +277,9 @@ fn run_command(
         }
     };
     let Some(scene) = scene else {
-        let scene = model_scene(&file_path, &run, &entry, args)?;
         let integrator = args.integrator();
         let given = args.given(&file_path, &integrator);
+        let scene = model_scene(&given, &run, &entry)?;
         return run_scene(&scene, registry, entry, file.as_ref(), args)
             .map_err(|e| at_arguments(e, &scene.source, &given));
     };
@@ -315,13 +315,8 @@ fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
     let (info, now) = (compiled.info, current.info);
     let params = (current.default_params)();
     let initial = (current.initial_state)();
-    let param_values: Vec<f64> = info
-        .param_names
-        .iter()
-        .map(|n| {
-            now.param_names.iter().position(|m| m.eq_ignore_ascii_case(n)).map_or(f64::NAN, |i| params[i])
-        })
-        .collect();
+    let param_values: Vec<f64> =
+        info.param_names.iter().map(|n| now.param(n).map_or(f64::NAN, |i| params[i])).collect();
     let state_values: Vec<f64> =
         info.state_names.iter().map(|n| now.state(n).map_or(f64::NAN, |i| initial[i])).collect();
     ModelEntry {
@@ -333,15 +328,16 @@ fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
     }
 }
 
-/// The scene of a `--model` run.
-fn model_scene(path: &Path, run: &FileRun, entry: &ModelEntry, args: &RunArgs) -> Result<Scene, CliError> {
-    let integrator = args.integrator();
-    let model_args =
-        ModelRunArgs { sets: args.sets.clone(), t_final: args.t_final, integrator: integrator.clone() };
-    let text = scene_text(&path.display().to_string(), run, entry.info, &model_args)?;
-    let given = args.given(path, &integrator);
+/// The scene of a `--model` run given `given`.
+fn model_scene(given: &origins::Given<'_>, run: &FileRun, entry: &ModelEntry) -> Result<Scene, CliError> {
+    let model_args = ModelRunArgs {
+        sets: given.sets.to_vec(),
+        t_final: given.t_final,
+        integrator: given.integrator.clone(),
+    };
+    let text = scene_text(&given.model.display().to_string(), run, entry.info, &model_args)?;
     let mut scene =
-        Scene::parse(origins::GENERATED, &text).map_err(|e| at_arguments(e.into(), &text, &given))?;
+        Scene::parse(origins::GENERATED, &text).map_err(|e| at_arguments(e.into(), &text, given))?;
     // The model is found under the path as given (not relative to a scene file).
     scene.path = PathBuf::from(origins::GENERATED);
     Ok(scene)

@@ -87,7 +87,7 @@ pub fn scene_text(
     let (mut params, mut initial) = (String::new(), String::new());
     for (name, value) in &args.sets {
         let line = format!("{name:?} = {}\n", toml_value(value));
-        if info.param_names.iter().any(|p| p.eq_ignore_ascii_case(name)) {
+        if info.param(name).is_some() {
             params.push_str(&line);
         } else if info.state(name).is_some() {
             initial.push_str(&line);

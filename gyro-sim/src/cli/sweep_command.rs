@@ -14,7 +14,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use super::CliError;
 use crate::models::Registry;
 use crate::scene::Scene;
-use crate::study::sweep::{self, Design, MemberSet, Members, Range, Shard, SweepPlan};
+use crate::study::sweep::{self, Design, MemberSet, Members, Range, Shard, SweepError, SweepPlan};
 
 /// What a sweep is asked.
 pub struct SweepArgs<'a> {
@@ -120,7 +120,7 @@ fn add_rows(out: &Path, header: &[String], done: &mut MemberSet) -> Result<(), C
     let csv_path = out.join("sweep.csv");
     if let Some(mut rows) = sweep::table::RowLines::open(&csv_path)? {
         if rows.header != header {
-            return Err(CliError::OtherRows { path: csv_path });
+            return Err(SweepError::OtherColumns { path: csv_path }.into());
         }
         while let Some((m, _)) = rows.next_row()? {
             done.insert(m);

@@ -327,7 +327,8 @@ impl<S: System + ?Sized, const N: usize> Stepper for ErkStepper<'_, S, N> {
     }
 }
 
-fn check_finite(t: f64, y: &[f64]) -> Result<(), OdeError> {
+/// An error at the first state of `y` that is not finite.
+pub(super) fn check_finite(t: f64, y: &[f64]) -> Result<(), OdeError> {
     match y.iter().position(|v| !v.is_finite()) {
         Some(index) => Err(OdeError::NonFinite { time: t, index, value: y[index] }),
         None => Ok(()),

@@ -15,7 +15,7 @@
 //! estimate is made before the step, from the series itself.
 
 use super::stages::Stats;
-use super::stepper::{Stepper, StopReason, DEFAULT_MAX_STEPS};
+use super::stepper::{check_finite, Stepper, StopReason, DEFAULT_MAX_STEPS};
 use super::{OdeError, System, TaylorWork, Tolerances};
 /// The lowest order a step takes (the step-size rule reads orders `p - 1` and `p`).
 const MIN_ORDER: usize = 2;
@@ -260,13 +260,6 @@ fn polynomial(c: &[f64], x: f64) -> f64 {
         odd = odd * x2 + pair[1];
     }
     even + x * odd
-}
-
-fn check_finite(t: f64, y: &[f64]) -> Result<(), OdeError> {
-    match y.iter().position(|v| !v.is_finite()) {
-        Some(index) => Err(OdeError::NonFinite { time: t, index, value: y[index] }),
-        None => Ok(()),
-    }
 }
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! Test problems for the integrators. In: nothing; out: small systems `y' = f(t, y)`, each with
 //! its closed-form solution where one is known ([`ClosedForm`]) and its Taylor coefficients
-//! where the Taylor method is tried on it. The unit tests, the integration tests and the benches
-//! take their systems from here, so each is written once.
+//! where the Taylor method is tried on it. The unit tests and the integration tests take their
+//! systems from here, so each is written once.
 
 use super::{System, TaylorWork};
 
@@ -167,12 +167,6 @@ impl<S: System> System for NoStraightLine<S> {
     }
     fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
         self.0.taylor(t, y, order, out, work)
-    }
-}
-
-impl<S: ClosedForm> ClosedForm for NoStraightLine<S> {
-    fn solution(&self, t0: f64, y0: &[f64], t: f64) -> Vec<f64> {
-        self.0.solution(t0, y0, t)
     }
 }
 

@@ -17,7 +17,9 @@ use crate::models::Registry;
 use crate::ode::{Method, Tolerances};
 use crate::problem::ModelEntry;
 use crate::problem::{Pick, Problem};
-use crate::scene::{output_times, plot_times, too_many_rows, Axle, Scene, SceneError, Value, ViewSpec};
+use crate::scene::{
+    output_times, plot_times, too_many_rows, Axle, Scene, SceneError, Value, ViewError, ViewSpec,
+};
 use initial::{norm_error, TopStart, UNIT_NORM_TOLERANCE};
 
 /// The problem a scene describes.
@@ -69,14 +71,16 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
 /// at `[view]` for a name that is not a parameter or a length that is not positive.
 fn view_with(scene: &Scene, info: &ModelInfo, params: &[f64]) -> Result<Option<ViewSpec>, SceneError> {
     let Some(view) = &scene.view else { return Ok(None) };
-    let value_of =
-        |name: &str| info.param_names.iter().position(|p| p.eq_ignore_ascii_case(name)).map(|i| params[i]);
-    let view = view.with_parameters(&value_of, info.param_names).map_err(|e| {
-        scene.error_at(
-            scene.view_span.clone(),
-            e.to_string(),
-            "give lengths as numbers or the model's parameters",
-        )
+    let value_of = |name: &str| info.param(name).map(|i| params[i]);
+    let view = view.with_parameters(&value_of).map_err(|e| {
+        let message = match e {
+            ViewError::Unresolved { user, name } => format!(
+                "view: {user} reads parameter `{name}`, which the model does not have (it has: {})",
+                info.param_names.join(", ")
+            ),
+            e => e.to_string(),
+        };
+        scene.error_at(scene.view_span.clone(), message, "fix the [view] tables of the scene")
     })?;
     Ok(Some(view))
 }
@@ -129,11 +133,9 @@ fn method(scene: &Scene) -> Method {
 fn parameters(scene: &Scene, entry: &ModelEntry) -> Result<Vec<f64>, SceneError> {
     let info = entry.info;
     let mut values = (entry.default_params)();
-    given_once(scene, &scene.parameters, |n| {
-        info.param_names.iter().position(|p| p.eq_ignore_ascii_case(n))
-    })?;
+    given_once(scene, &scene.parameters, |n| info.param(n))?;
     for (name, v, span) in &scene.parameters {
-        let Some(i) = info.param_names.iter().position(|p| p.eq_ignore_ascii_case(name)) else {
+        let Some(i) = info.param(name) else {
             return Err(scene.error_at(
                 span.clone(),
                 format!("`{name}` is not a parameter of {}", info.name),

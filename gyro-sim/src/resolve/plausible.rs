@@ -11,8 +11,7 @@ pub(crate) fn check(scene: &Scene, problem: &Problem) -> Result<(), SceneError> 
     let Some(model) = problem.model.mechanics.as_ref().and_then(MechanicsSource::get) else { return Ok(()) };
     let info = problem.model.info;
     let value = |name: &str| {
-        let param =
-            info.param_names.iter().position(|p| p.eq_ignore_ascii_case(name)).map(|i| problem.params[i]);
+        let param = info.param(name).map(|i| problem.params[i]);
         param.or_else(|| info.state(name).map(|i| problem.initial[i]))
     };
     let Some(issue) = kane_model::plausibility::plausibility(&model, value).into_iter().next() else {

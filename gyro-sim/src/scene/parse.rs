@@ -13,7 +13,7 @@ use super::controls::ControlFile;
 use super::event_decls::{self, EventFile};
 use super::grid::too_many_rows;
 use super::specified_table::Table;
-use super::text::{SceneError, Span, Text};
+use super::text::{is_simple_name, SceneError, Span, Text};
 use super::{Axle, Integrator, IntegratorOverrides, Scene, Value, ViewSpec};
 
 #[derive(Deserialize)]
@@ -93,7 +93,8 @@ impl Text<'_> {
         let default_tol = asked.unwrap_or(1e-9);
         let rtol = overrides.rtol.map_or_else(|| self.positive(&integ.rtol, default_tol, "rtol"), Ok)?;
         let atol = overrides.atol.map_or_else(|| self.positive(&integ.atol, default_tol, "atol"), Ok)?;
-        // The one place a method's name is looked up: the scene carries the method found.
+        // A scene's method is found here once (the command line's name was checked by the same
+        // lookup); the scene carries the method found.
         let found = if named == crate::ode::AUTO {
             Some(crate::ode::for_tolerances(crate::ode::Tolerances { rtol, atol }))
         } else {
@@ -183,8 +184,7 @@ impl Text<'_> {
         let mut out = Vec::new();
         for (k, v) in table.unwrap_or_default() {
             let name = k.get_ref();
-            let simple = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
-                && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+            let simple = is_simple_name(name);
             let help = "write NAME = \"formula of t, states and parameters\" (T = \"-K*Q1 - C*U1\"), or a table: NAME = { table = \"file.csv\" } (columns t and NAME) or NAME = { t = [...], values = [...] }";
             let formula = match v.get_ref() {
                 toml::Value::String(f)

@@ -56,3 +56,9 @@ impl Text<'_> {
         error_at(self.file, self.source, span, message, help)
     }
 }
+
+/// Whether `name` is a model name as scenes write them: a letter, then letters, digits or `_`.
+pub(super) fn is_simple_name(name: &str) -> bool {
+    name.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
+        && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+}

@@ -49,9 +49,7 @@ impl Length {
             Some((f, n)) => (f.trim().parse::<f64>().ok().filter(|f| f.is_finite())?, n.trim()),
             None => (1.0, text.trim()),
         };
-        let simple = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic())
-            && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
-        simple.then(|| Length::Parameter { factor, name: name.to_string() })
+        super::text::is_simple_name(name).then(|| Length::Parameter { factor, name: name.to_string() })
     }
 }
 

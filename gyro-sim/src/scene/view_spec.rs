@@ -209,23 +209,13 @@ pub enum ViewError {
     /// The trajectory has no rows.
     #[error("view: the run has no rows to show")]
     Empty,
-    /// A length still names a parameter: the view was not given the run's values.
+    /// A length names a parameter whose value the view was not given.
     #[error("view: {user} reads parameter `{name}`, whose value the view was not given (ViewSpec::with_parameters)")]
     Unresolved {
         /// Whose length.
         user: String,
         /// The parameter.
         name: String,
-    },
-    /// A length names a parameter the model does not have.
-    #[error("view: {user} reads parameter `{name}`, which the model does not have (it has: {known})")]
-    UnknownParameter {
-        /// Whose length.
-        user: String,
-        /// The name given.
-        name: String,
-        /// The model's parameters, comma separated.
-        known: String,
     },
 }
 
@@ -327,18 +317,11 @@ impl Shape {
 impl ViewSpec {
     /// This view with every length a number: parameters' values from `value_of` (a run's), then
     /// checked as [`ViewSpec::check`] does.
-    pub fn with_parameters(
-        &self,
-        value_of: &dyn Fn(&str) -> Option<f64>,
-        known: &[&str],
-    ) -> Result<ViewSpec, ViewError> {
+    pub fn with_parameters(&self, value_of: &dyn Fn(&str) -> Option<f64>) -> Result<ViewSpec, ViewError> {
         let mut view = self.clone();
         let resolve = |user: String, length: &mut Length| {
-            let value = length.with_parameters(value_of).map_err(|name| ViewError::UnknownParameter {
-                user,
-                name,
-                known: known.join(", "),
-            })?;
+            let value =
+                length.with_parameters(value_of).map_err(|name| ViewError::Unresolved { user, name })?;
             *length = Length::Number(value);
             Ok::<(), ViewError>(())
         };

@@ -119,7 +119,6 @@ pub enum RunDataError {
 /// Runs `scene` (resolve, then solve: the `gyro-sim run` pipeline without files) and gives the
 /// page's data: the view's columns and the plotted ones, their units, the controls' values.
 pub fn run_data(scene: &Scene, registry: &Registry) -> Result<serde_json::Value, RunDataError> {
-    scene.view.as_ref().map(crate::scene::ViewSpec::check).transpose()?;
     let problem = crate::resolve::resolve(scene, registry)?;
     let view = problem.view.clone().unwrap_or_default();
     let trajectory = crate::solve::solve(&problem, None)?;

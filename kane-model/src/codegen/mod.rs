@@ -54,7 +54,7 @@ pub enum CodegenError {
 /// What to generate beyond `rhs`, `jacobian` and the outputs: only what the runs ask for.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct CodeOptions {
-    /// Taylor coefficients, for the Taylor method (`taylor_derived`, a loop over the order).
+    /// Taylor coefficients, for the Taylor method (`taylor_with_constants`, a loop over the order).
     pub taylor: bool,
     /// Orders whose Taylor coefficients are also written out straight-line (faster); an order
     /// whose code would pass [`taylor::STRAIGHT_LINE_BUDGET`] keeps the loop (see
@@ -62,6 +62,9 @@ pub struct CodeOptions {
     pub taylor_orders: Vec<usize>,
     /// `rhs_lanes` ([`crate::runtime::LaneModel`]), for batches of members in lock step.
     pub lanes: bool,
+    /// The operation counts of `M` and `f` as `kane check` counts them
+    /// ([`Emitted::equation_ops`]), for `kane gen --stats`: a tape of each, not built otherwise.
+    pub equation_counts: bool,
 }
 
 impl CodeOptions {
@@ -69,7 +72,7 @@ impl CodeOptions {
     /// [`crate::runtime::TAYLOR_UNROLLED_ORDERS`], and lanes.
     pub fn everything() -> CodeOptions {
         let taylor_orders = crate::runtime::TAYLOR_UNROLLED_ORDERS.to_vec();
-        CodeOptions { taylor: true, taylor_orders, lanes: true }
+        CodeOptions { taylor: true, taylor_orders, lanes: true, equation_counts: false }
     }
 }
 
@@ -82,7 +85,8 @@ pub struct Emitted {
     /// output, counted on the lowered program.
     pub op_counts: crate::runtime::OpCounts,
     /// The sizes of `M` and `f` as derived (before simplification), counted as `kane check`
-    /// counts them; None when the chosen form never formed them.
+    /// counts them; None unless asked ([`CodeOptions::equation_counts`]) or when the chosen form
+    /// never formed them.
     pub equation_ops: Option<crate::mechanics::EquationOps>,
     /// Values computed by one `rhs` call (named intermediates and results).
     pub rhs_values: usize,
@@ -131,7 +135,8 @@ pub fn generate(spec: &mut ModelSpec, options: &CodeOptions) -> Result<Emitted, 
     Ok(Emitted {
         tokens,
         op_counts: lowered.program.op_counts(),
-        equation_ops: spec.equations.formed.then(|| spec.equations.op_counts(&spec.model.ar)),
+        equation_ops: (options.equation_counts && spec.equations.formed)
+            .then(|| spec.equations.op_counts(&spec.model.ar)),
         rhs_values,
         taylor,
         taylor_straight_line: orders,

@@ -3,22 +3,6 @@
 
 use std::collections::hash_map::Entry;
 
-/// The loads solved with the speed rates, and the equations of the auxiliary speeds.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SolvedLoads {
-    /// The unknown loads `T`, in KANE's order.
-    pub loads: Vec<SymbolId>,
-    /// The auxiliary speeds (zero in every motion).
-    pub auxiliary: Vec<SymbolId>,
-    /// The auxiliary rows of `M`, a column per speed (independent then dependent).
-    pub mass_rows: Vec<Vec<ExprId>>,
-    /// The auxiliary rows of `f` with the loads zero.
-    pub forcing: Vec<ExprId>,
-    /// `B = df/dT`, the speed rows (independent then dependent) then the auxiliary rows, a
-    /// column per load.
-    pub load_columns: Vec<Vec<ExprId>>,
-}
-
 use rustc_hash::FxHashMap;
 
 use crate::expr::{Arena, ExprId, Node, SymbolId, SymbolKind, Tape};
@@ -34,6 +18,22 @@ pub const COLLECT_TERMS_BUDGET: usize = 1_000;
 
 /// Most terms the collected forms of all of a model's equations may have together.
 pub const COLLECT_TERMS_TOTAL: u64 = 20_000;
+
+/// The loads solved with the speed rates, and the equations of the auxiliary speeds.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SolvedLoads {
+    /// The unknown loads `T`, in KANE's order.
+    pub loads: Vec<SymbolId>,
+    /// The auxiliary speeds (zero in every motion).
+    pub auxiliary: Vec<SymbolId>,
+    /// The auxiliary rows of `M`, a column per speed (independent then dependent).
+    pub mass_rows: Vec<Vec<ExprId>>,
+    /// The auxiliary rows of `f` with the loads zero.
+    pub forcing: Vec<ExprId>,
+    /// `B = df/dT`, the speed rows (independent then dependent) then the auxiliary rows, a
+    /// column per load.
+    pub load_columns: Vec<Vec<ExprId>>,
+}
 
 /// Kane's equations of a model: `q' = kinematics`, `mass_matrix * u' = forcing`.
 #[derive(Clone, Debug)]

@@ -90,6 +90,11 @@ impl ModelInfo {
         self.state_names.iter().position(|s| s.eq_ignore_ascii_case(name))
     }
 
+    /// The index of a parameter by name (case-insensitive).
+    pub fn param(&self, name: &str) -> Option<usize> {
+        self.param_names.iter().position(|p| p.eq_ignore_ascii_case(name))
+    }
+
     /// The index of an output by name (case-insensitive).
     pub fn output(&self, name: &str) -> Option<usize> {
         self.outputs.iter().position(|o| o.name.eq_ignore_ascii_case(name))

@@ -172,12 +172,10 @@ pub enum SweepError {
         path: PathBuf,
     },
     /// A rows file's (or the journal's) columns are another sweep's.
-    #[error("{}: its columns are not this sweep's: {}", path.display(), if *journal { START_OVER } else { "give --new to start over" })]
+    #[error("{}: its columns are not this sweep's: {START_OVER}", path.display())]
     OtherColumns {
         /// The file.
         path: PathBuf,
-        /// Whether it is the journal.
-        journal: bool,
     },
     /// A journal line has the wrong number of cells or no member.
     #[error("{}: a damaged line ({cells} cells) at byte {byte}: {START_OVER}", path.display())]

@@ -64,7 +64,7 @@ fn write_merged(
     let mut old = RowLines::open(path)?;
     if let Some(o) = &old {
         if o.header != header {
-            return Err(SweepError::OtherColumns { path: path.to_path_buf(), journal: false });
+            return Err(SweepError::OtherColumns { path: path.to_path_buf() });
         }
     }
     crate::output::write_atomically(path, |tmp| {

@@ -174,7 +174,7 @@ pub fn scan(
     }
     let wanted = std::iter::once("wall_ms").chain(header.iter().map(String::as_str)).map(str::as_bytes);
     if read(&mut r, &mut rec)? && !rec.iter().eq(wanted) {
-        return Err(SweepError::OtherColumns { path: path.clone(), journal: true });
+        return Err(SweepError::OtherColumns { path: path.clone() });
     }
     let mut count = 0;
     loop {

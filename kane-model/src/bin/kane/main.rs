@@ -175,7 +175,7 @@ fn run(command: Command) -> Result<(), String> {
         Command::Solve { file, set, json } => solve::solve(file, set, json),
         Command::Linearize { file, set, input, json } => linearize(file, set, input, json),
         Command::Gen { file, out, stats, taylor, taylor_orders, lanes } => {
-            gen(file, out, stats, CodeOptions { taylor, taylor_orders, lanes })
+            gen(file, out, stats, CodeOptions { taylor, taylor_orders, lanes, equation_counts: stats })
         }
         Command::Compare { file, hand, up_to_sign } => compare(file, hand, up_to_sign),
         Command::Show { file, name, frame } => show(file, name, frame),
@@ -315,7 +315,7 @@ fn linearize(file: PathBuf, set: Vec<String>, inputs: Vec<String>, json: bool) -
     let mut y: Vec<f64> = info.state_names.iter().map(|s| values[&upper(s)]).collect();
     let mut positions = Vec::with_capacity(inputs.len());
     for i in &inputs {
-        let at = info.param_names.iter().position(|s| s.eq_ignore_ascii_case(i));
+        let at = info.param(i);
         positions.push(at.ok_or_else(|| format!("--input {i}: not a constant the equations read"))?);
     }
     let assembly =

@@ -1,6 +1,6 @@
 //! The model module printed: in come a spec and its lowered program; out go the items of a Rust
 //! module (`Params`, `param_constants`, `rhs_with_constants`, `rhs`, `output`, `jacobian`,
-//! `INFO` and a `Model` implementing [`crate::runtime::GeneratedModel`]; `taylor_derived` and
+//! `INFO` and a `Model` implementing [`crate::runtime::GeneratedModel`]; `taylor_with_constants` and
 //! `rhs_lanes` with [`crate::runtime::LaneModel`] where asked).
 
 use proc_macro2::{Ident, TokenStream};
@@ -17,7 +17,7 @@ use super::section::{self, Scalar, SectionStyle};
 
 /// What the module holds beyond `rhs` and the outputs.
 pub struct Extras<'a> {
-    /// Taylor coefficients (`taylor_derived` and its loop).
+    /// Taylor coefficients (`taylor_with_constants` and its loop).
     pub taylor: bool,
     /// Orders with straight-line Taylor code (see
     /// [`super::super::taylor::TaylorProgram::straight_line_orders`]).
@@ -215,7 +215,7 @@ fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident], taylor: boo
     let taylor_method = taylor.then(|| {
         quote! {
             fn taylor(t: f64, y: &[f64], p: &Params, d: &ParamConstants, order: usize, out: &mut [f64], work: &mut ::kane_model::runtime::TaylorWork) -> bool {
-                taylor_derived(t, y, p, d, order, out, work)
+                taylor_with_constants(t, y, p, d, order, out, work)
             }
         }
     });

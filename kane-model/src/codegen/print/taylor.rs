@@ -1,7 +1,7 @@
 //! The Taylor coefficients printed: in comes a [`TaylorProgram`] and how its inputs are read;
-//! out goes `taylor_derived_loop`, straight-line in the operations (one call of a recurrence of
+//! out goes `taylor_with_constants_loop`, straight-line in the operations (one call of a recurrence of
 //! `kane_model::__private::taylor` per operation) with a loop over the order; one straight-line
-//! function per order asked ([`super::unrolled`]); and `taylor_derived`, which
+//! function per order asked ([`super::unrolled`]); and `taylor_with_constants`, which
 //! takes the straight-line function of the order asked where there is one and the CPU has fused
 //! multiply-add, else the loop.
 
@@ -13,8 +13,8 @@ use super::super::taylor::{TKind, TaylorProgram};
 use super::section::{constant, Scalar};
 use super::unrolled::{order_fn, order_fn_name};
 
-/// `taylor_derived` (the dispatch by order), the straight-line functions it calls and
-/// `taylor_derived_loop`: the normalised Taylor coefficients of the solution through `(t, y)`;
+/// `taylor_with_constants` (the dispatch by order), the straight-line functions it calls and
+/// `taylor_with_constants_loop`: the normalised Taylor coefficients of the solution through `(t, y)`;
 /// straight-line code for `orders` only.
 pub fn taylor_fn(
     program: &TaylorProgram,
@@ -32,18 +32,18 @@ pub fn taylor_fn(
         /// The normalised Taylor coefficients of the solution through `(t, y)`, orders
         /// `0..=order`, into `out` (state `i`'s coefficient `k` at `out[i * (order + 1) + k]`),
         /// with `d = param_constants(p)`; `work` is scratch. Straight-line code for the orders of
-        /// `INFO.taylor_straight_line` on CPUs with fused multiply-add, `taylor_derived_loop`
+        /// `INFO.taylor_straight_line` on CPUs with fused multiply-add, `taylor_with_constants_loop`
         /// otherwise. False (nothing done) for an order above
         /// `kane_model::runtime::TAYLOR_MAX_ORDER`.
         #[allow(unused_variables, unused_imports, clippy::all)]
-        pub fn taylor_derived<T: ::kane_model::__private::num_traits::Float>(
+        pub fn taylor_with_constants<T: ::kane_model::__private::num_traits::Float>(
             t: T, y: &[T], p: &Params, __constants: &ParamConstants, order: usize, out: &mut [T],
             work: &mut Vec<::kane_model::__private::taylor::Row<T>>,
         ) -> bool {
             use ::kane_model::__private::taylor as __t;
             match order {
                 #(#arms)*
-                _ => taylor_derived_loop(t, y, p, __constants, order, out, work),
+                _ => taylor_with_constants_loop(t, y, p, __constants, order, out, work),
             }
         }
         #looped
@@ -51,7 +51,7 @@ pub fn taylor_fn(
     }
 }
 
-/// `taylor_derived_loop`: the coefficients by a loop over the order.
+/// `taylor_with_constants_loop`: the coefficients by a loop over the order.
 fn loop_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream) -> TokenStream {
     let scalar = Scalar::Generic(format_ident!("T"));
     let lit = Literal::usize_unsuffixed;
@@ -99,10 +99,10 @@ fn loop_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream) -> Tok
         None => quote!(None),
     };
     quote! {
-        /// `taylor_derived` by a loop over the order (any order): one call of a recurrence per
+        /// `taylor_with_constants` by a loop over the order (any order): one call of a recurrence per
         /// operation and order.
         #[allow(unused_variables, clippy::all)]
-        pub fn taylor_derived_loop<T: ::kane_model::__private::num_traits::Float>(
+        pub fn taylor_with_constants_loop<T: ::kane_model::__private::num_traits::Float>(
             t: T, y: &[T], p: &Params, __constants: &ParamConstants, order: usize, out: &mut [T],
             work: &mut Vec<::kane_model::__private::taylor::Row<T>>,
         ) -> bool {

@@ -1,5 +1,5 @@
 //! Straight-line Taylor coefficients for one order: in comes a [`TaylorProgram`] and an order
-//! `p`; out goes `taylor_order_p`, which computes what `taylor_derived_loop` computes at order `p`
+//! `p`; out goes `taylor_order_p`, which computes what `taylor_with_constants_loop` computes at order `p`
 //! with every pass written out: coefficient `k` of value `v` is the local `__c{v}_{k}`, every
 //! index a constant, every Cauchy sum term by term (no loop, no work array, no bounds checks but
 //! one on `out`). Products are added by fused multiply-adds (the function is compiled for CPUs
@@ -138,7 +138,7 @@ pub fn order_fn(program: &TaylorProgram, input: &dyn Fn(Input) -> TokenStream, o
     let finish = finish(program, order);
     let n_out = Literal::usize_unsuffixed(program.results.len() * (order + 1));
     let doc = format!(
-        " `taylor_derived` at order {order}, straight-line with fused multiply-adds (the numbers of `taylor_derived_loop` to rounding)."
+        " `taylor_with_constants` at order {order}, straight-line with fused multiply-adds (the numbers of `taylor_with_constants_loop` to rounding)."
     );
     quote! {
         #[doc = #doc]
