@@ -72,7 +72,8 @@ impl<'a, S: System + ?Sized> Integration<'a, S> {
     /// Integrates through the increasing output `times` (none before `t0`), calling `out(t, y)`
     /// at each; `ControlFlow::Break` ends the run there, which is no error
     /// ([`StopReason::OutputBreak`]). A Runge-Kutta method's steps are unrolled for the
-    /// system's [`System::FIXED_DIM`] (1 to 8) when its dimension is that one.
+    /// system's [`System::FIXED_DIM`] or [`System::REDUCED_DIM`] (1 to 8) when its dimension
+    /// is that one.
     pub fn run(
         self,
         times: &[f64],
@@ -82,20 +83,29 @@ impl<'a, S: System + ?Sized> Integration<'a, S> {
         if let Method::Taylor(tol) = start.method {
             return start.run_taylor(tol, times, unwatched, out);
         }
-        if start.sys.dim() != S::FIXED_DIM {
-            return start.run_erk::<0>(times, unwatched, out);
+        // Matched on a constant after monomorphisation: only the arm taken is compiled for `S`.
+        macro_rules! unrolled_for {
+            ($n:expr) => {
+                match $n {
+                    1 => start.run_erk::<1>(times, unwatched, out),
+                    2 => start.run_erk::<2>(times, unwatched, out),
+                    3 => start.run_erk::<3>(times, unwatched, out),
+                    4 => start.run_erk::<4>(times, unwatched, out),
+                    5 => start.run_erk::<5>(times, unwatched, out),
+                    6 => start.run_erk::<6>(times, unwatched, out),
+                    7 => start.run_erk::<7>(times, unwatched, out),
+                    8 => start.run_erk::<8>(times, unwatched, out),
+                    _ => start.run_erk::<0>(times, unwatched, out),
+                }
+            };
         }
-        // A constant after monomorphisation: only the arm taken is compiled for `S`.
-        match S::FIXED_DIM {
-            1 => start.run_erk::<1>(times, unwatched, out),
-            2 => start.run_erk::<2>(times, unwatched, out),
-            3 => start.run_erk::<3>(times, unwatched, out),
-            4 => start.run_erk::<4>(times, unwatched, out),
-            5 => start.run_erk::<5>(times, unwatched, out),
-            6 => start.run_erk::<6>(times, unwatched, out),
-            7 => start.run_erk::<7>(times, unwatched, out),
-            8 => start.run_erk::<8>(times, unwatched, out),
-            _ => start.run_erk::<0>(times, unwatched, out),
+        let dim = start.sys.dim();
+        if dim == S::FIXED_DIM {
+            unrolled_for!(S::FIXED_DIM)
+        } else if dim == S::REDUCED_DIM {
+            unrolled_for!(S::REDUCED_DIM)
+        } else {
+            start.run_erk::<0>(times, unwatched, out)
         }
     }
 }

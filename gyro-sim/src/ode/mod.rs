@@ -49,6 +49,10 @@ pub trait System {
     /// state count): the built-in tableaux then take steps unrolled for it at compile time.
     /// 0 (the default): general steps only, so no unrolled code is compiled for the type.
     const FIXED_DIM: usize = 0;
+    /// A second dimension unrolled as [`System::FIXED_DIM`] is (0: none): a generated model's
+    /// state count without its cyclic coordinates, which a run that reads none of them leaves
+    /// out ([`crate::Reduced`]).
+    const REDUCED_DIM: usize = 0;
     /// Number of states.
     fn dim(&self) -> usize;
     /// Writes `f(t, y)` into `dy`.

@@ -51,6 +51,7 @@ impl<M: GeneratedModel> BoundModel for ModelSystem<M> {
 
 impl<M: GeneratedModel> System for ModelSystem<M> {
     const FIXED_DIM: usize = M::INFO.state_names.len();
+    const REDUCED_DIM: usize = M::INFO.state_names.len() - M::INFO.cyclic.len();
     fn dim(&self) -> usize {
         M::INFO.state_names.len()
     }
@@ -99,8 +100,10 @@ impl<'a, S: System> Reduced<'a, S> {
 }
 
 impl<S: System> System for Reduced<'_, S> {
-    // The full dimension: a run that keeps fewer states takes general steps.
+    // The full dimension, and the one without every cyclic coordinate: a run that keeps
+    // another number of states takes general steps.
     const FIXED_DIM: usize = S::FIXED_DIM;
+    const REDUCED_DIM: usize = S::REDUCED_DIM;
     fn dim(&self) -> usize {
         self.keep.len()
     }
