@@ -68,8 +68,8 @@ pub use problem::{
 pub use resolve::{resolve, sleeping_threshold, steady_precession};
 pub use run::{run, run_with, RunError, RunSummary};
 pub use scene::{
-    ArrowView, BodyView, IntegratorOverrides, Length, Orientation, Scene, SceneError, Shape, TraceView,
-    ViewError, ViewSpec,
+    ArrowView, BodyView, IntegratorOverrides, Length, Orientation, PointView, Scene, SceneError, Shape,
+    TraceView, ViewError, ViewSpec,
 };
 pub use solve::{solve_bound, BoundModel, ModelSystem, Reduced};
 pub use study::batch::final_states;

@@ -63,6 +63,7 @@ fn view() -> ViewSpec {
                 offset: [ARM.into(), 0.0.into(), 0.0.into()],
                 opacity: 1.0,
                 axis: 3,
+                position: None,
             },
             BodyView {
                 name: "arm".to_string(),
@@ -72,6 +73,7 @@ fn view() -> ViewSpec {
                 offset: [(ARM / 2.0).into(), 0.0.into(), 0.0.into()],
                 opacity: 1.0,
                 axis: 3,
+                position: None,
             },
         ],
         arrows: vec![ArrowView {
@@ -85,8 +87,9 @@ fn view() -> ViewSpec {
             point: [ARM.into(), 0.0.into(), 0.0.into()],
             colour: "#202020".to_string(),
         }],
-        up: 3,
-        frame: "N".to_string(),
+        up: Some(3),
+        frame: Some("N".to_string()),
+        ..ViewSpec::default()
     }
 }
 
@@ -252,7 +255,7 @@ fn the_ball_is_where_the_run_puts_it() {
 #[test]
 fn space_axis_two_drawn_up_turns_the_picture() {
     let dir = folder("up");
-    let page = page_of(&dir, &ViewSpec { up: 2, ..view() });
+    let page = page_of(&dir, &ViewSpec { up: Some(2), ..view() });
     // Drawn axes (x, y, z) are space (N3, N1, N2): at t = 0.5 the ball, at N2 * ARM in space,
     // is drawn straight above the support.
     let shot = screenshot(&page, &fragment(0.5, ""), "up2");

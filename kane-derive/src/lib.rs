@@ -1,7 +1,7 @@
 //! `model!("path/to/model.al")`: expands a model file into its generated module items (`rhs`,
 //! outputs, metadata); `model!("path/to/model.al", taylor, lanes, taylor_orders = [8, 12, 16])`
-//! adds Taylor coefficients (straight-line at those orders) and `rhs_lanes`, each only where a
-//! run needs it.
+//! adds Taylor coefficients (straight-line at those orders) and `rhs_lanes`, and `drawing` the
+//! outputs placing every frame and point (a default view's), each only where a run needs it.
 //!
 //! A thin shell: it reads the file (relative to the calling crate's manifest), asks
 //! `kane_model` for the code, and turns any error into a compile error showing the model file's
@@ -21,7 +21,7 @@ use syn::punctuated::Punctuated;
 use syn::{parse_macro_input, LitInt, LitStr, Token};
 
 /// A macro's input: the model (a path or a name) and what to generate beyond `rhs`:
-/// `taylor`, `lanes`, `taylor_orders = [..]`, comma-separated.
+/// `taylor`, `lanes`, `drawing`, `taylor_orders = [..]`, comma-separated.
 struct MacroInput {
     model: LitStr,
     options: CodeOptions,
@@ -36,6 +36,7 @@ impl Parse for MacroInput {
             match key.to_string().as_str() {
                 "taylor" => options.taylor = true,
                 "lanes" => options.lanes = true,
+                "drawing" => options.drawing = true,
                 "taylor_orders" => {
                     input.parse::<Token![=]>()?;
                     let list;
@@ -47,7 +48,7 @@ impl Parse for MacroInput {
                 _ => {
                     return Err(syn::Error::new(
                         key.span(),
-                        "expected `taylor`, `lanes` or `taylor_orders = [..]`",
+                        "expected `taylor`, `lanes`, `drawing` or `taylor_orders = [..]`",
                     ))
                 }
             }

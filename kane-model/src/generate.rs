@@ -56,8 +56,11 @@ pub fn generate_file(path: &Path, source: &str, options: &CodeOptions) -> Result
     let shown = path.display().to_string();
     let loaded = crate::lang::check_for_generation(&shown, source)?.model;
     let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
-    let mut spec =
-        loaded.into_spec(&name).map_err(|source| BuildError::Spec { model: shown.clone(), source })?;
+    let spec = match options.drawing {
+        true => loaded.into_spec_drawn(&name).map(|(spec, _)| spec),
+        false => loaded.into_spec(&name),
+    };
+    let mut spec = spec.map_err(|source| BuildError::Spec { model: shown.clone(), source })?;
     crate::codegen::generate(&mut spec, options)
         .map_err(|source| BuildError::Codegen { model: shown, source })
 }
@@ -69,6 +72,9 @@ pub fn generate_builtin(name: &str, options: &CodeOptions) -> Result<Emitted, Bu
         .ok_or_else(|| BuildError::UnknownBuiltin { name: name.to_string(), known })?;
     let codegen = |source| BuildError::Codegen { model: name.to_string(), source };
     let mut spec = spec.map_err(|e| codegen(CodegenError::Mechanics(e)))?;
+    if options.drawing {
+        spec.add_drawing(None).map_err(|e| codegen(CodegenError::Mechanics(e)))?;
+    }
     crate::codegen::generate(&mut spec, options).map_err(codegen)
 }
 

@@ -585,6 +585,7 @@ fn a_rate_turning_nan_in_a_fixed_step_run_is_named_with_the_time_and_the_state_w
         program: None,
         source: None,
         mechanics: None,
+        drawing: None,
     };
     let problem = gyro_sim::Problem {
         title: "blowup".into(),

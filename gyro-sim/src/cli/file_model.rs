@@ -12,7 +12,7 @@ use crate::scene::Scene;
 pub(super) fn with_file_model(scene: &Scene, registry: Registry) -> Result<Registry, CliError> {
     let Some(path) = model_file_of(scene) else { return Ok(registry) };
     let source = crate::models::source_with(&path, &scene.specified)?;
-    let file = ModelFile::from_source(&path, source)?;
+    let file = ModelFile::from_source(&path, source, scene.draws_model())?;
     eprint!("{}", file.warnings);
     Ok(registry.with_entry(&scene.model, crate::models::file_entry(&file)))
 }

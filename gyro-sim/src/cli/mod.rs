@@ -160,6 +160,10 @@ struct RunArgs {
     /// Print the scene a --model run uses (to save and edit) and stop.
     #[arg(long, requires = "model")]
     print_scene: bool,
+    /// Write no 3-D view of a --model run (by default it draws the model's frames and
+    /// points, computing their placement at the output times).
+    #[arg(long, requires = "model")]
+    no_view: bool,
     /// Integrate this many times more and print the median and the least wall time (a
     /// quick timing; files are written once).
     #[arg(long, default_value_t = 0)]
@@ -260,17 +264,19 @@ fn run_command(
         return finish(&scene, &registry, args);
     };
     let specified = scene.as_ref().map_or(&[][..], |s| &s.specified[..]);
+    // The default drawing's outputs only for a view that draws the model.
+    let drawn = scene.as_ref().map_or(!args.no_view, Scene::draws_model);
     let source = crate::models::source_with(&file_path, specified)?;
     let key = crate::models::registry_key(&source);
     let (entry, run, file) = match compiled.filter(|c| c.key == key) {
         Some(c) => {
             // The binary's equations; INPUT values (perhaps edited since it was built) from the file.
-            let file = ModelFile::from_source(&file_path, source)?;
+            let file = ModelFile::from_source(&file_path, source, drawn)?;
             let current = crate::models::file_entry(&file);
             (with_values_of(c.entry, &current), file.run.clone(), None)
         }
         None => {
-            let file = ModelFile::from_source(&file_path, source)?;
+            let file = ModelFile::from_source(&file_path, source, drawn)?;
             eprint!("{}", file.warnings);
             let entry = crate::models::file_entry(&file);
             (entry, file.run.clone(), Some(file))
@@ -303,7 +309,8 @@ fn run_scene(
     if let Some(file) = file {
         crate::resolve::resolve(scene, &registry)?;
         if args.engine == EngineChoice::Compiled {
-            return run_compiled(file, scene.integrator.method.name() == crate::ode::TAYLOR);
+            let taylor = scene.integrator.method.name() == crate::ode::TAYLOR;
+            return run_compiled(file, taylor, scene.draws_model());
         }
     }
     finish(scene, &registry, args)
@@ -324,6 +331,7 @@ fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
         initial_state: std::sync::Arc::new(move || state_values.clone()),
         program: current.program.clone(),
         mechanics: current.mechanics.clone(),
+        drawing: current.drawing.clone(),
         ..compiled
     }
 }
@@ -334,6 +342,7 @@ fn model_scene(given: &origins::Given<'_>, run: &FileRun, entry: &ModelEntry) ->
         sets: given.sets.to_vec(),
         t_final: given.t_final,
         integrator: given.integrator.clone(),
+        view: entry.drawing.is_some(),
     };
     let text = scene_text(&given.model.display().to_string(), run, entry.info, &model_args)?;
     let mut scene =
@@ -349,26 +358,27 @@ fn at_arguments(e: CliError, source: &str, given: &origins::Given<'_>) -> CliErr
     CliError::AtArguments { message, source: Box::new(e) }
 }
 
-/// Builds (or finds) the compiled binary (with Taylor coefficients when `taylor`) and runs it
+/// Builds (or finds) the compiled binary (with Taylor coefficients when `taylor`, the default
+/// drawing's outputs when `drawn`) and runs it
 /// with the same arguments: on Unix in place of this process, so signals reach it directly. A
 /// cached binary that cannot be started (damaged) is removed and rebuilt once.
-fn run_compiled(file: &ModelFile, taylor: bool) -> Result<ExitCode, CliError> {
-    let first = start_compiled(file, taylor)?;
+fn run_compiled(file: &ModelFile, taylor: bool, drawn: bool) -> Result<ExitCode, CliError> {
+    let first = start_compiled(file, taylor, drawn)?;
     eprintln!(
         "the cached compiled model {} cannot be started ({}): rebuilding it",
         first.0.display(),
         first.1
     );
     let _ = std::fs::remove_file(&first.0);
-    let (binary, why) = start_compiled(file, taylor)?;
+    let (binary, why) = start_compiled(file, taylor, drawn)?;
     Err(CliError::CannotStart { binary, why, cache: crate::models::cache_dir() })
 }
 
 /// Builds (or finds) the binary and runs it in place of this process; returns only when it
 /// could not be started: its path and why. Elsewhere than on Unix, runs it and returns its
 /// exit code.
-fn start_compiled(file: &ModelFile, taylor: bool) -> Result<(PathBuf, String), CliError> {
-    let (binary, built) = crate::models::ensure_binary(file, taylor)?;
+fn start_compiled(file: &ModelFile, taylor: bool, drawn: bool) -> Result<(PathBuf, String), CliError> {
+    let (binary, built) = crate::models::ensure_binary(file, taylor, drawn)?;
     if built {
         eprintln!("compiled: {}", binary.display());
     }

@@ -27,6 +27,8 @@ pub struct ModelRunArgs {
     pub t_final: Option<f64>,
     /// The integrator settings given (`--method`, `--rtol`, `--atol`).
     pub integrator: IntegratorOverrides,
+    /// A view drawing the model's frames and points (`[view] draw_model = true`).
+    pub view: bool,
 }
 
 /// A `--method` value: a method's name or `auto`.
@@ -57,8 +59,8 @@ pub fn parse_set(text: &str) -> Result<(String, String), CliError> {
 }
 
 /// The scene text for `model_path`: times, method, tolerances and outputs from the file (command
-/// line first), `--set` values under `[parameters]` or `[initial]`; an error naming a `--set` that
-/// is neither a parameter nor a state.
+/// line first), `--set` values under `[parameters]` or `[initial]`, a view drawing the model when
+/// asked; an error naming a `--set` that is neither a parameter nor a state.
 pub fn scene_text(
     model_path: &str,
     run: &FileRun,
@@ -106,6 +108,9 @@ pub fn scene_text(
     if !initial.is_empty() {
         text.push_str(&format!("\n[initial]\n{initial}"));
     }
+    if args.view {
+        text.push_str("\n[view]\ndraw_model = true\n");
+    }
     Ok(text)
 }
 
@@ -138,6 +143,7 @@ mod tests {
             sets: sets.iter().map(|(n, v)| (n.to_string(), v.to_string())).collect(),
             t_final: None,
             integrator: IntegratorOverrides::default(),
+            view: true,
         }
     }
 

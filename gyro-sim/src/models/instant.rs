@@ -55,7 +55,9 @@ impl BoundModel for InstantSystem<'_> {
 
 /// The registry entry running the model file `file` on the instant path, its mechanics known.
 pub fn file_entry(file: &ModelFile) -> ModelEntry {
-    instant_entry(file.program.clone()).with_mechanics(MechanicsSource::ready(file.model.clone()))
+    let entry =
+        instant_entry(file.program.clone()).with_mechanics(MechanicsSource::ready(file.model.clone()));
+    ModelEntry { drawing: file.drawing.clone(), ..entry }
 }
 
 /// The registry entry running `model` on the instant path.
@@ -72,5 +74,6 @@ pub fn instant_entry(model: Arc<ProgramModel>) -> ModelEntry {
         program: Some(ProgramSource(Arc::new(move || Some(d.clone())))),
         source: None,
         mechanics: None,
+        drawing: None,
     }
 }

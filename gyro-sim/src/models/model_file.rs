@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use kane_model::codegen::ProgramModel;
 use kane_model::mechanics::Model;
+use kane_model::spec::Drawing;
 use thiserror::Error;
 
 /// Why a model file cannot be run.
@@ -77,25 +78,31 @@ pub struct ModelFile {
     pub run: FileRun,
     /// Warnings `kane check` would print (empty when none).
     pub warnings: String,
+    /// Its default drawing, when loaded with it (its outputs are then in the program).
+    pub drawing: Option<Arc<Drawing>>,
 }
 
 impl ModelFile {
     /// Reads, checks and lowers the model file at `path`.
     pub fn load(path: &Path) -> Result<ModelFile, ModelFileError> {
-        ModelFile::from_source(path, source_with(path, &[])?)
+        ModelFile::from_source(path, source_with(path, &[])?, false)
     }
 
-    /// Checks and lowers `source`, the text of the model file at `path` (see `source_with`).
-    pub fn from_source(path: &Path, source: String) -> Result<ModelFile, ModelFileError> {
+    /// Checks and lowers `source`, the text of the model file at `path` (see `source_with`),
+    /// with the outputs of its default drawing when `drawn`.
+    pub fn from_source(path: &Path, source: String, drawn: bool) -> Result<ModelFile, ModelFileError> {
         let shown = path.display().to_string();
         let checked = kane_model::lang::check(&shown, &source)?;
         let warnings = checked.warnings.to_string();
         let loaded = checked.model;
         let name = model_name(path);
         let run = file_run(&loaded);
-        let mut spec = loaded
-            .into_spec(&name)
-            .map_err(|source| ModelFileError::Spec { path: path.to_path_buf(), source })?;
+        let spec = match drawn {
+            true => loaded.into_spec_drawn(&name).map(|(spec, drawing)| (spec, Some(Arc::new(drawing)))),
+            false => loaded.into_spec(&name).map(|spec| (spec, None)),
+        };
+        let (mut spec, drawing) =
+            spec.map_err(|source| ModelFileError::Spec { path: path.to_path_buf(), source })?;
         let program = ProgramModel::new(&mut spec)
             .map_err(|source| ModelFileError::Lower { path: path.to_path_buf(), source })?;
         Ok(ModelFile {
@@ -106,6 +113,7 @@ impl ModelFile {
             program: Arc::new(program),
             run,
             warnings,
+            drawing,
         })
     }
 }

@@ -22,6 +22,7 @@ impl ModelEntry {
             program: None,
             source: None,
             mechanics: None,
+            drawing: None,
         }
     }
 
@@ -29,8 +30,11 @@ impl ModelEntry {
     /// model file at `path` it was generated from.
     pub fn with_source(self, path: &'static str, source: &'static str) -> ModelEntry {
         let program = move || {
-            let file =
-                super::model_file::ModelFile::from_source(std::path::Path::new(path), source.to_string());
+            let file = super::model_file::ModelFile::from_source(
+                std::path::Path::new(path),
+                source.to_string(),
+                false,
+            );
             file.ok().map(|f| f.program)
         };
         let mechanics = move || kane_model::lang::load_for_generation(path, source).ok().map(|l| l.model);

@@ -164,6 +164,9 @@ pub struct ModelEntry {
     pub source: Option<(&'static str, &'static str)>,
     /// Its mechanics, when known: a run's masses and inertias are checked against them.
     pub mechanics: Option<MechanicsSource>,
+    /// Its default drawing, when its outputs place its frames and points (a model file loaded
+    /// for a view that draws the model).
+    pub drawing: Option<Arc<kane_model::spec::Drawing>>,
 }
 
 impl ModelEntry {

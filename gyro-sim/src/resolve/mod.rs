@@ -40,10 +40,11 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
     let method = method(scene);
     let written = picks(scene, info)?;
     let params = parameters(scene, entry)?;
+    let view = scene_view(scene, entry)?;
     let problem = Problem {
         title: scene.title.clone(),
         model: entry.clone(),
-        view: view_with(scene, info, &params)?,
+        view: view_with(scene, info, view.as_ref(), &params)?,
         params,
         initial: initial_state(scene, entry)?,
         times: times.clone(),
@@ -56,7 +57,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
         max_steps: scene.integrator.max_steps,
         accuracy: scene.integrator.accuracy,
         written_picks: written.len(),
-        picks: with_view_picks(scene, info, written)?,
+        picks: with_view_picks(scene, info, view.as_ref(), written)?,
         unit_norms: unit_norms(scene, info)?,
         events: event_binding::events(scene, info)?,
     };
@@ -67,10 +68,32 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
     Ok(problem)
 }
 
-/// The scene's `[view]` with its lengths given by `params` (`offset = [0, 0, "D"]`); an error
-/// at `[view]` for a name that is not a parameter or a length that is not positive.
-fn view_with(scene: &Scene, info: &ModelInfo, params: &[f64]) -> Result<Option<ViewSpec>, SceneError> {
+/// The scene's `[view]`, with the model's frames and points when it draws the model; an error
+/// at `[view]` when the model has no drawing.
+fn scene_view(scene: &Scene, entry: &ModelEntry) -> Result<Option<ViewSpec>, SceneError> {
     let Some(view) = &scene.view else { return Ok(None) };
+    if !view.draw_model {
+        return Ok(Some(view.clone()));
+    }
+    match &entry.drawing {
+        Some(drawing) => Ok(Some(view.with_drawing(drawing))),
+        None => Err(scene.error_at(
+            scene.view_span.clone(),
+            format!("[view]: draw_model = true, but {} is not a model file loaded with its drawing", entry.info.name),
+            "draw_model draws a model file's frames and points; a built-in model's scene draws its bodies with [[view.bodies]]",
+        )),
+    }
+}
+
+/// `view` with its lengths given by `params` (`offset = [0, 0, "D"]`); an error at `[view]`
+/// for a name that is not a parameter or a length that is not positive.
+fn view_with(
+    scene: &Scene,
+    info: &ModelInfo,
+    view: Option<&ViewSpec>,
+    params: &[f64],
+) -> Result<Option<ViewSpec>, SceneError> {
+    let Some(view) = view else { return Ok(None) };
     let value_of = |name: &str| info.param(name).map(|i| params[i]);
     let view = view.with_parameters(&value_of).map_err(|e| {
         let message = match e {
@@ -346,10 +369,15 @@ fn picks(scene: &Scene, info: &ModelInfo) -> Result<Vec<Pick>, SceneError> {
         .collect()
 }
 
-/// `written` and after them the outputs the scene's `[view]` reads that `written` lacks; an
+/// `written` and after them the outputs `view` (the scene's) reads that `written` lacks; an
 /// error at `[view]` for a column the model does not have.
-fn with_view_picks(scene: &Scene, info: &ModelInfo, mut picks: Vec<Pick>) -> Result<Vec<Pick>, SceneError> {
-    let Some(view) = &scene.view else { return Ok(picks) };
+fn with_view_picks(
+    scene: &Scene,
+    info: &ModelInfo,
+    view: Option<&ViewSpec>,
+    mut picks: Vec<Pick>,
+) -> Result<Vec<Pick>, SceneError> {
+    let Some(view) = view else { return Ok(picks) };
     for (user, column) in view.columns() {
         let pick = if let Some(i) = info.state(column) {
             Pick::State(i)

@@ -5,7 +5,8 @@
 //!
 //! Files: this one what a scene holds; `parse` reading and checking the TOML; `text` errors at a
 //! span of it; `controls` the `[[controls]]` and moving their values; `event_decls` the
-//! `[[events]]` tables; `specified_table` a SPECIFIED quantity's table; `view_spec` the `[view]`;
+//! `[[events]]` tables; `specified_table` a SPECIFIED quantity's table; `view_spec` the `[view]`, `view_drawing`
+//! a model's default drawing in it;
 //! `grid` the output times.
 
 mod controls;
@@ -14,13 +15,16 @@ mod grid;
 mod parse;
 mod specified_table;
 mod text;
+mod view_drawing;
 mod view_length;
 mod view_spec;
 
 pub use event_decls::{Direction, EventDecl, EventSource, Preset};
 pub use grid::{output_times, plot_times, too_many_rows};
 pub use text::SceneError;
-pub use view_spec::{ArrowView, BodyView, Length, Orientation, Shape, TraceView, ViewError, ViewSpec};
+pub use view_spec::{
+    ArrowView, BodyView, Length, Orientation, PointView, Shape, TraceView, ViewError, ViewSpec,
+};
 
 use std::path::PathBuf;
 
@@ -191,5 +195,10 @@ impl Scene {
     /// An error at a span of this scene's text.
     pub fn error_at(&self, span: Span, message: String, help: &str) -> SceneError {
         error_at(&self.path.display().to_string(), &self.source, span, message, help)
+    }
+
+    /// Whether its view draws the model's frames and points (`[view] draw_model = true`).
+    pub fn draws_model(&self) -> bool {
+        self.view.as_ref().is_some_and(|v| v.draw_model)
     }
 }

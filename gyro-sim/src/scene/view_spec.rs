@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 pub use super::view_length::Length;
 
 /// What the page draws: bodies, arrows and traces, all about the support at the origin.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ViewSpec {
     /// The rigid bodies drawn.
@@ -19,18 +19,21 @@ pub struct ViewSpec {
     /// Points fixed in a body whose paths are drawn.
     #[serde(default)]
     pub traces: Vec<TraceView>,
-    /// The space axis drawn upward: 1, 2 or 3 (N3, the default).
-    #[serde(default = "third")]
-    pub up: u8,
-    /// The space frame's name, labelling its axes (`N`, the default).
-    #[serde(default = "newtonian")]
-    pub frame: String,
-}
-
-impl Default for ViewSpec {
-    fn default() -> Self {
-        ViewSpec { bodies: Vec::new(), arrows: Vec::new(), traces: Vec::new(), up: 3, frame: newtonian() }
-    }
+    /// Points moving in space, each a marker (and a line to the point it hangs from).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub points: Vec<PointView>,
+    /// The space axis drawn upward: 1, 2 or 3, or -1, -2, -3 for the axis pointing down (3
+    /// unless given, or the model's drawing gives it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub up: Option<i8>,
+    /// The space frame's name, labelling its axes (`N` unless given, or the model's drawing
+    /// gives it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub frame: Option<String>,
+    /// Draw the model's frames (axes at their mass centres) and points (markers joined to the
+    /// points they were located from) besides anything else given: a model file's.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub draw_model: bool,
 }
 
 /// One rigid body: a shape turning with the body's orientation about the origin.
@@ -50,6 +53,10 @@ pub struct BodyView {
     /// rotor at distance `d` along the body's z axis (`[0, 0, "D"]`: the parameter D's value).
     #[serde(default = "origin")]
     pub offset: [Length; 3],
+    /// The columns giving, in space axes, where the body's origin is (at the origin when not
+    /// given): a body moving through space.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub position: Option<[String; 3]>,
     /// 1 opaque (the default) down to 0 unseen: below 1, arrows inside the body show through.
     #[serde(default = "one")]
     pub opacity: f64,
@@ -100,6 +107,12 @@ pub enum Shape {
         /// Radius of its tube.
         tube: Length,
     },
+    /// The body's axes x, y, z (red, green, blue), labelled with its name: a frame.
+    Axes {
+        /// Their length (a fifth of the drawing's size unless given).
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        length: Option<Length>,
+    },
 }
 
 /// Which columns give a body's orientation, body axes to space axes.
@@ -149,12 +162,27 @@ fn origin() -> [Length; 3] {
     [Length::Number(0.0), Length::Number(0.0), Length::Number(0.0)]
 }
 
-fn newtonian() -> String {
-    "N".to_string()
-}
-
 fn third() -> u8 {
     3
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
+}
+
+/// A point moving in space: a marker at its position, labelled with its name.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PointView {
+    /// Its name.
+    pub name: String,
+    /// Its three coordinates in space axes (`P_O_P_N1, P_O_P_N2, P_O_P_N3`).
+    pub position: [String; 3],
+    /// Its colour, `#rrggbb`.
+    pub colour: String,
+    /// Another point of the view a line joins it to (the one it was located from).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub from: Option<String>,
 }
 
 /// A point fixed in a body whose path in space is drawn up to the current time.
@@ -206,6 +234,16 @@ pub enum ViewError {
         /// What is wrong.
         what: String,
     },
+    /// A point's line names a point the view does not have.
+    #[error("view: {user} is joined to point `{point}`, which the view does not have (it has: {known})")]
+    MissingPoint {
+        /// The point joined.
+        user: String,
+        /// The point it names.
+        point: String,
+        /// The view's points, comma separated.
+        known: String,
+    },
     /// The trajectory has no rows.
     #[error("view: the run has no rows to show")]
     Empty,
@@ -222,7 +260,9 @@ pub enum ViewError {
 impl ViewSpec {
     /// Checks colours, numbers, axes and body names (columns are checked against a trajectory).
     pub fn check(&self) -> Result<(), ViewError> {
-        check_axis("up", self.up)?;
+        if let Some(up) = self.up {
+            check_axis("up", up.unsigned_abs())?;
+        }
         for b in &self.bodies {
             let user = format!("body {}", b.name);
             check_axis(&format!("{user}: axis"), b.axis)?;
@@ -250,19 +290,39 @@ impl ViewSpec {
                 return Err(ViewError::MissingBody { body: t.body.clone(), known: known.join(", ") });
             }
         }
+        for p in &self.points {
+            let user = format!("point {}", p.name);
+            check_colour(&user, &p.colour)?;
+            let known = || self.points.iter().map(|p| p.name.as_str()).collect::<Vec<_>>().join(", ");
+            match &p.from {
+                Some(from) if !self.points.iter().any(|q| &q.name == from) => {
+                    return Err(ViewError::MissingPoint { user, point: from.clone(), known: known() })
+                }
+                _ => {}
+            }
+        }
         Ok(())
     }
 
     /// Every column the view reads, each with what reads it, in the order the view gives them.
     pub fn columns(&self) -> Vec<(String, &str)> {
         let bodies = self.bodies.iter().flat_map(|b| {
-            b.orientation.columns().iter().map(move |c| (format!("body {}", b.name), c.as_str()))
+            let position = b.position.iter().flatten();
+            b.orientation
+                .columns()
+                .iter()
+                .chain(position)
+                .map(move |c| (format!("body {}", b.name), c.as_str()))
         });
         let arrows = self
             .arrows
             .iter()
             .flat_map(|a| a.columns.iter().map(move |c| (format!("arrow {}", a.label), c.as_str())));
-        bodies.chain(arrows).collect()
+        let points = self
+            .points
+            .iter()
+            .flat_map(|p| p.position.iter().map(move |c| (format!("point {}", p.name), c.as_str())));
+        bodies.chain(arrows).chain(points).collect()
     }
 }
 
@@ -298,8 +358,15 @@ fn numbers(lengths: &[Length]) -> Vec<f64> {
 
 impl Shape {
     /// Its sizes, in the order written.
-    fn sizes(&self) -> Vec<Length> {
-        self.clone().sizes_mut().into_iter().map(|l| l.clone()).collect()
+    fn sizes(&self) -> Vec<&Length> {
+        match self {
+            Shape::Ellipsoid { a, b, c } => vec![a, b, c],
+            Shape::Cylinder { radius, length } => vec![radius, length],
+            Shape::Box { x, y, z } => vec![x, y, z],
+            Shape::Rod { length } => vec![length],
+            Shape::Ring { radius, tube } => vec![radius, tube],
+            Shape::Axes { length } => length.iter().collect(),
+        }
     }
 
     /// Its sizes to set, in the order written.
@@ -310,6 +377,7 @@ impl Shape {
             Shape::Box { x, y, z } => vec![x, y, z],
             Shape::Rod { length } => vec![length],
             Shape::Ring { radius, tube } => vec![radius, tube],
+            Shape::Axes { length } => length.iter_mut().collect(),
         }
     }
 }
@@ -342,7 +410,7 @@ impl ViewSpec {
 }
 
 fn check_shape(user: &str, shape: &Shape) -> Result<(), ViewError> {
-    let sizes = numbers(&shape.sizes());
+    let sizes: Vec<f64> = shape.sizes().into_iter().filter_map(|l| l.number()).collect();
     if sizes.iter().all(|s| s.is_finite() && *s > 0.0) {
         Ok(())
     } else {

@@ -65,6 +65,9 @@ pub struct CodeOptions {
     /// The operation counts of `M` and `f` as `kane check` counts them
     /// ([`Emitted::equation_ops`]), for `kane gen --stats`: a tape of each, not built otherwise.
     pub equation_counts: bool,
+    /// The outputs of the model's default drawing ([`crate::spec::Drawing`]): where each
+    /// frame and point is, for a view drawn without a hand-written scene.
+    pub drawing: bool,
 }
 
 impl CodeOptions {
@@ -72,7 +75,7 @@ impl CodeOptions {
     /// [`crate::runtime::TAYLOR_UNROLLED_ORDERS`], and lanes.
     pub fn everything() -> CodeOptions {
         let taylor_orders = crate::runtime::TAYLOR_UNROLLED_ORDERS.to_vec();
-        CodeOptions { taylor: true, taylor_orders, lanes: true, equation_counts: false }
+        CodeOptions { taylor: true, taylor_orders, lanes: true, equation_counts: false, drawing: false }
     }
 }
 

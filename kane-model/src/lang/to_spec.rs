@@ -5,7 +5,7 @@
 use thiserror::Error;
 
 use crate::mechanics::FrameId;
-use crate::spec::{ModelSpec, OrientationForm};
+use crate::spec::{Drawing, ModelSpec, OrientationForm};
 
 use super::{LoadedModel, Value};
 
@@ -28,7 +28,18 @@ pub enum SpecError {
 
 impl LoadedModel {
     /// The spec of this model file, named `name` (the model moves into it).
-    pub fn into_spec(mut self, name: &str) -> Result<ModelSpec, SpecError> {
+    pub fn into_spec(self, name: &str) -> Result<ModelSpec, SpecError> {
+        Ok(self.spec_with(name, false)?.0)
+    }
+
+    /// The spec of this model file with the outputs of its default drawing, and that drawing.
+    pub fn into_spec_drawn(self, name: &str) -> Result<(ModelSpec, Drawing), SpecError> {
+        let (spec, drawing) = self.spec_with(name, true)?;
+        Ok((spec, drawing.expect("asked for")))
+    }
+
+    /// The spec, with the default drawing's outputs when `drawn`.
+    fn spec_with(mut self, name: &str, drawn: bool) -> Result<(ModelSpec, Option<Drawing>), SpecError> {
         let eqs = self.equations.clone().ok_or(SpecError::NoEquations)?;
         let mut formulas = super::interp::specified_formulas(&mut self.model, &self.bindings)?;
         // Auxiliary speeds are zero in every motion the outputs are computed along.
@@ -59,10 +70,11 @@ impl LoadedModel {
             let unit = spec.unit("KE").to_string();
             spec.add_kinetic_energy("KE", &unit)?;
         }
+        let drawing = if drawn { Some(spec.add_drawing(self.gravity.as_ref())?) } else { None };
         for o in &mut spec.outputs {
             o.components = spec.model.ar.subs_many(&o.components, &formulas)?;
         }
-        Ok(spec)
+        Ok((spec, drawing))
     }
 
     /// The OUTPUT names other than `T` and the states, each a scalar or a vector (`L>`, written

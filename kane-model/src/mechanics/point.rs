@@ -120,7 +120,7 @@ impl Model {
     }
 
     /// `point`, the point it is located from, and so on.
-    fn point_chain(&self, point: PointId) -> Vec<PointId> {
+    pub(crate) fn point_chain(&self, point: PointId) -> Vec<PointId> {
         let mut chain = vec![point];
         let mut p = point;
         while let Some((q, _)) = &self.points[p.index()].position {

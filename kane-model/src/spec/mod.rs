@@ -3,6 +3,7 @@
 //! that [`crate::codegen`] lowers and prints. The model language builds one from a model file
 //! ([`crate::lang::LoadedModel::into_spec`]); a Rust-API model builds one by hand.
 
+mod drawing;
 mod outputs;
 
 use rustc_hash::FxHashMap;
@@ -10,6 +11,7 @@ use rustc_hash::FxHashMap;
 use crate::expr::{ExprId, SymbolId};
 use crate::mechanics::{KaneEquations, Model};
 
+pub use drawing::{Drawing, DrawnFrame, DrawnPoint};
 pub use outputs::{OrientationForm, OutputKind, OutputSpec};
 
 /// Everything code generation needs: the equations, defaults, units and outputs of one model.

@@ -10,12 +10,15 @@ const FOV = numbers('fov', 1)?.[0] ?? data.fov; // vertical field of view, degre
 const DEFAULT_AZIMUTH = 40; // degrees from N1 toward N2
 const DEFAULT_ELEVATION = 20; // degrees above the horizontal plane
 
-/** The rotation from space axes to drawn axes that puts space axis `up` (1, 2, 3) upward. */
+/** The rotation from space axes to drawn axes that puts space axis `up` (1, 2, 3) upward, or
+ * its negative (-1, -2, -3) downward. */
 function spaceTurn(up) {
   const m = new THREE.Matrix4();
-  if (up === 1) m.set(0, 1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0, 0, 0, 1);
-  if (up === 2) m.set(0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 1);
-  return new THREE.Quaternion().setFromRotationMatrix(m);
+  if (Math.abs(up) === 1) m.set(0, 1, 0, 0, 0, 0, 1, 0, 1, 0, 0, 0, 0, 0, 0, 1);
+  if (Math.abs(up) === 2) m.set(0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 1);
+  const q = new THREE.Quaternion().setFromRotationMatrix(m);
+  if (up < 0) q.premultiply(new THREE.Quaternion().setFromAxisAngle(new THREE.Vector3(1, 0, 0), Math.PI));
+  return q;
 }
 
 /** The rotation turning a shape's z axis to body axis `axis` (1, 2, 3). */
@@ -81,6 +84,16 @@ function quaternionAt(orientation, at) {
   return q;
 }
 
+/** The point whose space coordinates are the columns `names`, drawn, at a row position. */
+function placeAt(names, at) {
+  return new THREE.Vector3(...names.map((n) => valueAt(n, at))).applyQuaternion(SPACE);
+}
+
+/** A body's origin, drawn, at a row position: its position columns', else the origin. */
+function bodyOrigin(body, at) {
+  return body.position ? placeAt(body.position, at) : new THREE.Vector3();
+}
+
 /** An arrow's vector (space axes, scaled) at a row position. */
 function arrowAt(arrow, at) {
   const v = new THREE.Vector3(...arrow.columns.map((n) => valueAt(n, at)));
@@ -116,6 +129,8 @@ function shapeReach(shape) {
       return Math.hypot(shape.x, shape.y, shape.z) / 2;
     case 'ring':
       return shape.radius + shape.tube;
+    case 'axes':
+      return shape.length ?? 0;
     default:
       return shape.length / 2;
   }
@@ -157,13 +172,28 @@ function sceneBox() {
     const at = { i, f: 0 };
     for (const b of data.view.bodies) {
       const centre = new THREE.Vector3(...b.offset).applyQuaternion(quaternionAtRow(b.orientation, i));
+      centre.add(bodyOrigin(b, at));
       box.expandByPoint(centre.clone().addScalar(shapeReach(b.shape)));
       box.expandByPoint(centre.addScalar(-shapeReach(b.shape)));
     }
     for (const t of data.view.traces) box.expandByPoint(tracePoint(t, i));
     for (const a of data.view.arrows) box.expandByPoint(arrowAt(a, at));
+    for (const p of data.view.points ?? []) box.expandByPoint(placeAt(p.position, at));
   }
   return box;
+}
+
+/** The drawing's scale for frames' axes and points' markers: the median distance between the
+ * joined points at the start, else half the scene's size (at most that). */
+function drawScale() {
+  const points = data.view.points ?? [];
+  const at = { i: 0, f: 0 };
+  const lengths = points
+    .filter((p) => p.from)
+    .map((p) => placeAt(p.position, at).distanceTo(placeAt(points.find((q) => q.name === p.from).position, at)))
+    .filter((d) => d > size * 1e-6)
+    .sort((a, b) => a - b);
+  return lengths.length ? Math.min(lengths[lengths.length >> 1], size / 2) : size / 2;
 }
 
 /** A trace's point in space axes at row `i`. */
@@ -225,10 +255,29 @@ function addFurniture(scene, box, size) {
   }
 }
 
-/** The bodies: a group per body turning about the origin, its shape at the offset. */
+/** A frame's axes (x red, y green, z blue) with its name, `length` long. */
+function axesMesh(name, colour, length, labelled) {
+  const axes = new THREE.AxesHelper(length);
+  if (labelled) {
+    const tag = label(name, colour, 0.3 * length);
+    tag.position.set(0.25 * length, 0.25 * length, 0.25 * length);
+    axes.add(tag);
+  }
+  return axes;
+}
+
+/** The bodies: a group per body turning about its origin (the origin unless its position
+ * columns move it), its shape at the offset. */
 function addBodies(scene) {
+  const framed = data.view.bodies.filter((b) => b.shape.kind === 'axes').length;
   return data.view.bodies.map((b) => {
     const group = new THREE.Group();
+    if (b.shape.kind === 'axes') {
+      const length = b.shape.length ?? 0.6 * scale;
+      group.add(axesMesh(b.name, b.colour, length, framed <= MAX_LABELS));
+      scene.add(group);
+      return { spec: b, group };
+    }
     const mesh = new THREE.Mesh(
       shapeGeometry(b.shape),
       new THREE.MeshStandardMaterial({
@@ -282,6 +331,46 @@ function addArrows(scene, size) {
   });
 }
 
+/** The points: a marker each (named when few) and a line to the point it hangs from. */
+function addPoints(scene) {
+  const points = data.view.points ?? [];
+  return points.map((p) => {
+    const marker = new THREE.Mesh(
+      new THREE.SphereGeometry(0.06 * scale, 16, 8),
+      new THREE.MeshStandardMaterial({ color: p.colour, roughness: 0.5 }),
+    );
+    if (points.length <= MAX_LABELS) {
+      const tag = label(p.name, p.colour, 0.18 * scale);
+      tag.position.set(0.12 * scale, 0, 0.12 * scale);
+      marker.add(tag);
+    }
+    scene.add(marker);
+    let line = null;
+    if (p.from) {
+      line = new THREE.Line(
+        new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(), new THREE.Vector3()]),
+        new THREE.LineBasicMaterial({ color: p.colour }),
+      );
+      line.frustumCulled = false;
+      scene.add(line);
+    }
+    return { spec: p, from: points.find((q) => q.name === p.from), marker, line };
+  });
+}
+
+/** Every point's marker and line at a row position. */
+function placePoints(at) {
+  for (const p of points) {
+    p.marker.position.copy(placeAt(p.spec.position, at));
+    if (!p.line) continue;
+    const ends = p.line.geometry.attributes.position;
+    const from = placeAt(p.from.position, at);
+    ends.setXYZ(0, from.x, from.y, from.z);
+    ends.setXYZ(1, p.marker.position.x, p.marker.position.y, p.marker.position.z);
+    ends.needsUpdate = true;
+  }
+}
+
 /** The traces: each point's whole path, drawn up to the current row. */
 function addTraces(scene) {
   return data.view.traces.map((t) => {
@@ -299,7 +388,11 @@ function addTraces(scene) {
 /** Sets every moving thing to time `state.t` and renders. */
 function update() {
   const at = rowAt(state.t);
-  for (const b of bodies) b.group.quaternion.copy(quaternionAt(b.spec.orientation, at));
+  for (const b of bodies) {
+    b.group.quaternion.copy(quaternionAt(b.spec.orientation, at));
+    b.group.position.copy(bodyOrigin(b.spec, at));
+  }
+  placePoints(at);
   for (const a of arrows) {
     const v = arrowAt(a.spec, at);
     const length = v.length();
@@ -385,7 +478,9 @@ function tick(now) {
   requestAnimationFrame(tick);
 }
 
-let scene, camera, renderer, bodies, arrows, traces, size, orbit, state, SPACE;
+let scene, camera, renderer, bodies, arrows, traces, points, size, scale, orbit, state, SPACE;
+/** Frames or points beyond this many are drawn without their names. */
+const MAX_LABELS = 24;
 const slider = document.getElementById('slider');
 const timeText = document.getElementById('time');
 const playButton = document.getElementById('play');
@@ -395,11 +490,14 @@ const speedSelect = document.getElementById('speed');
 function main() {
   SPACE = spaceTurn(data.view.up ?? 3);
   const box = sceneBox();
-  size = Math.max(box.getSize(new THREE.Vector3()).length() / 2, 1e-6);
+  // A drawing of points all at the origin has no size of its own: unit size.
+  size = box.getSize(new THREE.Vector3()).length() / 2 || 1;
+  scale = drawScale();
   scene = new THREE.Scene();
   scene.background = new THREE.Color(0xf2f2ee);
   addFurniture(scene, box, size);
   bodies = addBodies(scene);
+  points = addPoints(scene);
   arrows = addArrows(scene, size);
   traces = addTraces(scene);
   const home = () => ({
@@ -442,6 +540,7 @@ function main() {
  * parameters), keeping the time and the camera. */
 function load(next) {
   const reshaped = JSON.stringify(next.view.bodies) !== JSON.stringify(data.view.bodies);
+  const repointed = JSON.stringify(next.view.points) !== JSON.stringify(data.view.points);
   data = next;
   if (reshaped) {
     for (const b of bodies) {
@@ -449,6 +548,15 @@ function load(next) {
       b.group.traverse((o) => o.geometry?.dispose());
     }
     bodies = addBodies(scene);
+  }
+  if (repointed) {
+    for (const p of points) {
+      scene.remove(p.marker);
+      if (p.line) scene.remove(p.line);
+      p.marker.geometry.dispose();
+      p.line?.geometry.dispose();
+    }
+    points = addPoints(scene);
   }
   for (const line of traces) {
     scene.remove(line);
@@ -484,7 +592,16 @@ function expose() {
           const mesh = b.group.children[0];
           mesh.geometry.computeBoundingBox();
           const size = mesh.geometry.boundingBox.getSize(new THREE.Vector3());
-          return [b.spec.name, { centre: mesh.position.toArray(), size: size.toArray() }];
+          const origin = b.group.position.clone().applyQuaternion(SPACE.clone().invert());
+          return [b.spec.name, { centre: mesh.position.toArray(), size: size.toArray(), origin: origin.toArray() }];
+        }),
+      ),
+    /** Each point's drawn place in space axes, and the point its line comes from. */
+    pointsDrawn: () =>
+      Object.fromEntries(
+        points.map((p) => {
+          const at = p.marker.position.clone().applyQuaternion(SPACE.clone().invert());
+          return [p.spec.name, { at: at.toArray(), from: p.spec.from ?? null, line: p.line !== null }];
         }),
       ),
   };

@@ -174,9 +174,12 @@ fn run(command: Command) -> Result<(), String> {
         Command::Eval { file, set, json } => eval(file, set, json),
         Command::Solve { file, set, json } => solve::solve(file, set, json),
         Command::Linearize { file, set, input, json } => linearize(file, set, input, json),
-        Command::Gen { file, out, stats, taylor, taylor_orders, lanes } => {
-            gen(file, out, stats, CodeOptions { taylor, taylor_orders, lanes, equation_counts: stats })
-        }
+        Command::Gen { file, out, stats, taylor, taylor_orders, lanes } => gen(
+            file,
+            out,
+            stats,
+            CodeOptions { taylor, taylor_orders, lanes, equation_counts: stats, drawing: false },
+        ),
         Command::Compare { file, hand, up_to_sign } => compare(file, hand, up_to_sign),
         Command::Show { file, name, frame } => show(file, name, frame),
     }

@@ -113,6 +113,8 @@ pub struct LoadedModel {
     pub outputs: Vec<(String, Option<String>)>,
     /// CODE requests.
     pub code: Vec<CodeRequest>,
+    /// The acceleration of gravity GRAVITY gave, if any.
+    pub gravity: Option<Vector>,
     /// Commands that only keep Autolev's books (UNITSYSTEM, AUTOZ, ENCODE, ...), in order.
     pub bookkeeping: Vec<Bookkeeping>,
     pub(crate) bindings: FxHashMap<String, Binding>,
@@ -312,6 +314,7 @@ impl Interpreter {
             units: self.units,
             outputs: self.outputs,
             code: self.code,
+            gravity: self.gravity.map(|(g, _)| g),
             bookkeeping: self.bookkeeping,
             bindings: self.bindings,
             arrays: self.arrays,

@@ -1,0 +1,96 @@
+//! A view with the model's default drawing: in come a [`ViewSpec`] asking for it
+//! (`draw_model = true`) and the model's [`Drawing`]; out goes the view with a body of axes per
+//! frame and a marker per point, joined to the points they were located from.
+
+use kane_model::spec::Drawing;
+
+use super::view_spec::{BodyView, Length, Orientation, PointView, Shape, ViewSpec};
+
+/// Colours of the frames' labels, in turn.
+const FRAME_COLOURS: [&str; 6] = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#8c564b", "#e377c2"];
+/// The points' colour.
+const POINT_COLOUR: &str = "#333333";
+
+impl ViewSpec {
+    /// This view with `drawing`'s frames and points added after its own bodies and points (and
+    /// its up axis and frame name, unless the view gives them).
+    pub fn with_drawing(&self, drawing: &Drawing) -> ViewSpec {
+        let mut view = self.clone();
+        view.draw_model = false;
+        view.up.get_or_insert(drawing.up);
+        view.frame.get_or_insert_with(|| drawing.newtonian.clone());
+        let position_of =
+            |name: &str| drawing.points.iter().find(|p| p.name == name).map(|p| p.position.clone());
+        for (i, frame) in drawing.frames.iter().enumerate() {
+            view.bodies.push(BodyView {
+                name: frame.name.clone(),
+                shape: Shape::Axes { length: None },
+                colour: FRAME_COLOURS[i % FRAME_COLOURS.len()].to_string(),
+                orientation: Orientation::Dcm(frame.dcm.clone()),
+                offset: [Length::Number(0.0), Length::Number(0.0), Length::Number(0.0)],
+                opacity: 1.0,
+                axis: 3,
+                position: frame.at.as_deref().and_then(position_of),
+            });
+        }
+        for point in &drawing.points {
+            view.points.push(PointView {
+                name: point.name.clone(),
+                position: point.position.clone(),
+                colour: POINT_COLOUR.to_string(),
+                from: point.from.clone(),
+            });
+        }
+        view
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use kane_model::spec::{DrawnFrame, DrawnPoint};
+
+    use super::*;
+
+    fn columns<const N: usize>(name: &str, suffixes: [&str; N]) -> [String; N] {
+        suffixes.map(|s| format!("{name}_{s}"))
+    }
+
+    fn drawing() -> Drawing {
+        let dcm = ["11", "12", "13", "21", "22", "23", "31", "32", "33"];
+        let xyz = ["N1", "N2", "N3"];
+        Drawing {
+            newtonian: "N".into(),
+            origin: Some("O".into()),
+            up: -1,
+            frames: vec![
+                DrawnFrame { name: "A".into(), dcm: columns("N_A", dcm), at: Some("AO".into()) },
+                DrawnFrame { name: "C".into(), dcm: columns("N_C", dcm), at: None },
+            ],
+            points: vec![
+                DrawnPoint { name: "O".into(), position: columns("P_O_O", xyz), from: None },
+                DrawnPoint { name: "AO".into(), position: columns("P_O_AO", xyz), from: Some("O".into()) },
+            ],
+        }
+    }
+
+    #[test]
+    fn frames_become_axes_at_their_mass_centres_and_points_markers_joined_up() {
+        let view = ViewSpec { draw_model: true, ..ViewSpec::default() }.with_drawing(&drawing());
+        assert!(!view.draw_model);
+        assert_eq!((view.up, view.frame.as_deref()), (Some(-1), Some("N")));
+        assert_eq!(view.bodies[0].position.as_ref().map(|p| p[0].as_str()), Some("P_O_AO_N1"));
+        assert_eq!(view.bodies[1].position, None, "a frame without a body stands at the origin");
+        assert_eq!(view.bodies[1].orientation.columns()[4], "N_C_22");
+        assert_eq!(view.points[1].from.as_deref(), Some("O"));
+        view.check().unwrap();
+        let read: Vec<&str> = view.columns().into_iter().map(|(_, c)| c).collect();
+        assert_eq!(read.len(), 9 + 3 + 9 + 3 + 3);
+    }
+
+    #[test]
+    fn the_scene_keeps_its_own_bodies_up_axis_and_frame_name() {
+        let own = ViewSpec { up: Some(2), frame: Some("A".into()), ..ViewSpec::default() };
+        let view = own.with_drawing(&drawing());
+        assert_eq!((view.up, view.frame.as_deref()), (Some(2), Some("A")));
+    }
+}

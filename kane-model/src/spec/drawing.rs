@@ -1,0 +1,250 @@
+//! A model's default drawing: in comes a spec (its frames, points, bodies and gravity); out go
+//! outputs placing each frame and point in the Newtonian frame (direction cosines `N_F`,
+//! positions `P_O_P`) and a [`Drawing`] naming their columns, for a view that draws the model
+//! without a hand-written scene.
+
+use crate::expr::ExprId;
+use crate::mechanics::{FrameId, PointId, Result, Vector};
+
+use super::{ModelSpec, OrientationForm, OutputKind};
+
+/// The frames and points of a model a default view draws, each with the columns placing it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Drawing {
+    /// The Newtonian frame's name.
+    pub newtonian: String,
+    /// The point positions are measured from (drawn at the origin), when any point is placed.
+    pub origin: Option<String>,
+    /// The Newtonian axis drawn upward, against gravity: 1, 2, 3, or -1, -2, -3 (3 without
+    /// gravity along one axis).
+    pub up: i8,
+    /// The frames other than the Newtonian one whose orientation in it is known.
+    pub frames: Vec<DrawnFrame>,
+    /// The points whose position from the origin is known.
+    pub points: Vec<DrawnPoint>,
+}
+
+/// A frame drawn as axes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DrawnFrame {
+    /// Its name.
+    pub name: String,
+    /// The columns of its direction cosines `N_i . F_j`, row by row.
+    pub dcm: [String; 9],
+    /// The drawn point it stands at (its body's mass centre), or none: at the origin.
+    pub at: Option<String>,
+}
+
+/// A point drawn as a marker.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DrawnPoint {
+    /// Its name.
+    pub name: String,
+    /// The columns of its position from the origin, in Newtonian axes.
+    pub position: [String; 3],
+    /// The drawn point it was located from (a line joins them), if any.
+    pub from: Option<String>,
+}
+
+impl ModelSpec {
+    /// Adds the outputs that place every frame and point the model can place, reusing an
+    /// output of the same name and meaning; `gravity` decides the upward axis.
+    pub fn add_drawing(&mut self, gravity: Option<&Vector>) -> Result<Drawing> {
+        let n = self.model.newtonian();
+        let newtonian = self.model.frame_name(n).to_string();
+        let origin = self.drawing_origin();
+        let mut points = Vec::new();
+        if let Some(o) = origin {
+            for index in 0..self.model.points.len() {
+                let p = PointId(index as u32);
+                let Ok(r) = self.model.position(p, o) else { continue };
+                let name = format!("P_{}_{}", self.model.point_name(o), self.model.point_name(p));
+                let columns = self.drawing_vector(&name, &r, n)?;
+                points.push((p, columns));
+            }
+        }
+        let drawn_name = |p: PointId| points.iter().any(|(q, _)| *q == p);
+        let mut frames = Vec::new();
+        for index in 0..self.model.frames.len() {
+            let f = FrameId(index as u32);
+            if f == n || self.model.dcm(n, f).is_err() {
+                continue;
+            }
+            let body = self.model.bodies().iter().find(|b| b.frame == f).map(|b| b.mass_center);
+            let at = body.filter(|p| drawn_name(*p)).map(|p| self.model.point_name(p).to_string());
+            let name = format!("{newtonian}_{}", self.model.frame_name(f));
+            let dcm = self.drawing_orientation(&name, f)?;
+            frames.push(DrawnFrame { name: self.model.frame_name(f).to_string(), dcm, at });
+        }
+        let points = points
+            .iter()
+            .map(|(p, position)| {
+                let parent = self.model.points[p.index()].position.as_ref().map(|(q, _)| *q);
+                DrawnPoint {
+                    name: self.model.point_name(*p).to_string(),
+                    position: position.clone(),
+                    from: parent.filter(|q| drawn_name(*q)).map(|q| self.model.point_name(q).to_string()),
+                }
+            })
+            .collect();
+        let origin = origin.map(|o| self.model.point_name(o).to_string());
+        let up = match gravity {
+            Some(g) => self.upward_axis(g)?,
+            None => 3,
+        };
+        Ok(Drawing { newtonian, origin, up, frames, points })
+    }
+
+    /// The root of the largest tree of position relations (the first such point on a tie).
+    fn drawing_origin(&self) -> Option<PointId> {
+        let count = self.model.points.len();
+        let mut members = vec![0usize; count];
+        let roots: Vec<PointId> = (0..count)
+            .map(|i| *self.model.point_chain(PointId(i as u32)).last().expect("a chain holds its point"))
+            .collect();
+        for r in &roots {
+            members[r.index()] += 1;
+        }
+        let most = *members.iter().max()?;
+        (0..count).find(|&i| members[i] == most && most > 0).map(|i| PointId(i as u32))
+    }
+
+    /// The columns of the vector output `name` of `v` in `frame`: an output of that name
+    /// already measured in `frame`, else a new one (named `name_VIEW` when `name` is taken).
+    fn drawing_vector(&mut self, name: &str, v: &Vector, frame: FrameId) -> Result<[String; 3]> {
+        let frame_name = self.model.frame_name(frame).to_string();
+        let same = |kind: &OutputKind| matches!(kind, OutputKind::Vector { frame } if *frame == frame_name);
+        let name = match self.output_named(name) {
+            Some(k) if same(&self.outputs[k].kind) => return Ok(three(self.outputs[k].columns())),
+            Some(_) => format!("{name}_VIEW"),
+            None => name.to_string(),
+        };
+        self.add_vector(&name, v, frame, "")?;
+        Ok(three(self.outputs.last().expect("just added").columns()))
+    }
+
+    /// The columns of the direction cosines of `frame` named `name`, reused or added as
+    /// [`ModelSpec::drawing_vector`] does.
+    fn drawing_orientation(&mut self, name: &str, frame: FrameId) -> Result<[String; 9]> {
+        let frame_name = self.model.frame_name(frame).to_string();
+        let same = |kind: &OutputKind| matches!(kind, OutputKind::Orientation { frame, form: OrientationForm::Dcm } if *frame == frame_name);
+        let name = match self.output_named(name) {
+            Some(k) if same(&self.outputs[k].kind) => return Ok(nine(self.outputs[k].columns())),
+            Some(_) => format!("{name}_VIEW"),
+            None => name.to_string(),
+        };
+        self.add_orientation(&name, frame, OrientationForm::Dcm)?;
+        Ok(nine(self.outputs.last().expect("just added").columns()))
+    }
+
+    /// The index of the output named `name` (case-insensitive).
+    fn output_named(&self, name: &str) -> Option<usize> {
+        self.outputs.iter().position(|o| o.name.eq_ignore_ascii_case(name))
+    }
+
+    /// The Newtonian axis against `g` when `g` lies along one axis (its sign from the defaults
+    /// when they give it, else taken as pointing down the axis), else 3.
+    fn upward_axis(&mut self, g: &Vector) -> Result<i8> {
+        let n = self.model.newtonian();
+        let m = self.model.express(g, n)?;
+        let zero = self.model.ar.zero();
+        let along: Vec<(usize, ExprId)> = m.iter().copied().enumerate().filter(|(_, e)| *e != zero).collect();
+        let [(axis, component)] = along[..] else { return Ok(3) };
+        let ar = &self.model.ar;
+        let value_of = |s| self.defaults.get(&ar.symbol_info(s).name.to_ascii_uppercase()).copied();
+        let downward_positive = ar.eval::<f64>(&[component], value_of).is_ok_and(|x| x[0] > 0.0);
+        let axis = axis as i8 + 1;
+        Ok(if downward_positive { -axis } else { axis })
+    }
+}
+
+fn three(columns: Vec<String>) -> [String; 3] {
+    columns.try_into().expect("a vector output has three columns")
+}
+
+fn nine(columns: Vec<String>) -> [String; 9] {
+    columns.try_into().expect("a direction-cosine output has nine columns")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A double pendulum hinged at O: rod A from O to P, rod B from P on.
+    const DOUBLE: &str = "NEWTONIAN N\nBODIES A, B\nPOINTS O, P\nCONSTANTS L, G, M\nVARIABLES Q{2}', U{2}'\n\
+        SIMPROT(N, A, 3, Q1)\nSIMPROT(A, B, 3, Q2)\nQ1' = U1\nQ2' = U2\nP_O_AO> = L/2*A1>\nP_O_P> = L*A1>\n\
+        P_P_BO> = L/2*B1>\nV_O_N> = 0>\nV2PTS(N, A, O, AO)\nV2PTS(N, A, O, P)\nV2PTS(N, B, P, BO)\n\
+        MASS A = M, B = M\nINERTIA A, 0, 0, M*L^2/12\nINERTIA B, 0, 0, M*L^2/12\nGRAVITY(DOWN)\n\
+        ZERO = FR() + FRSTAR()\nKANE()\nINPUT L = 1, G = 9.81, M = 1\n";
+
+    fn drawn(gravity: &str, extra: &str) -> (ModelSpec, Drawing) {
+        let text = DOUBLE.replace("DOWN", gravity) + extra;
+        crate::lang::load("double.al", &text).unwrap().into_spec_drawn("double").unwrap()
+    }
+
+    /// The values of the output `name` at `q1`, `q2` and L = 1.
+    fn values(spec: &ModelSpec, name: &str, q1: f64, q2: f64) -> Vec<f64> {
+        let output = spec.outputs.iter().find(|o| o.name == name).unwrap();
+        let ar = &spec.model.ar;
+        let value_of = |s| match ar.symbol_info(s).name.as_str() {
+            "Q1" => Some(q1),
+            "Q2" => Some(q2),
+            "L" => Some(1.0),
+            _ => None,
+        };
+        ar.eval::<f64>(&output.components, value_of).unwrap()
+    }
+
+    #[test]
+    fn frames_stand_at_their_mass_centres_and_points_join_the_points_they_were_located_from() {
+        let (_, d) = drawn("-G*N2>", "");
+        assert_eq!((d.newtonian.as_str(), d.origin.as_deref(), d.up), ("N", Some("O"), 2));
+        let frames: Vec<(&str, Option<&str>, &str)> =
+            d.frames.iter().map(|f| (f.name.as_str(), f.at.as_deref(), f.dcm[0].as_str())).collect();
+        assert_eq!(frames, [("A", Some("AO"), "N_A_11"), ("B", Some("BO"), "N_B_11")]);
+        let points: Vec<(&str, Option<&str>, &str)> =
+            d.points.iter().map(|p| (p.name.as_str(), p.from.as_deref(), p.position[2].as_str())).collect();
+        assert_eq!(
+            points,
+            [
+                ("AO", Some("O"), "P_O_AO_N3"),
+                ("BO", Some("P"), "P_O_BO_N3"),
+                ("O", None, "P_O_O_N3"),
+                ("P", Some("O"), "P_O_P_N3")
+            ]
+        );
+    }
+
+    #[test]
+    fn positions_and_direction_cosines_are_the_hand_derived_ones() {
+        let (spec, _) = drawn("-G*N2>", "");
+        let (q1, q2) = (0.3, 0.5);
+        let bo = values(&spec, "P_O_BO", q1, q2);
+        let hand = [q1.cos() + 0.5 * (q1 + q2).cos(), q1.sin() + 0.5 * (q1 + q2).sin(), 0.0];
+        for (got, want) in bo.iter().zip(hand) {
+            assert!((got - want).abs() < 1e-14, "{bo:?} against {hand:?}");
+        }
+        let (c, s) = ((q1 + q2).cos(), (q1 + q2).sin());
+        let dcm = values(&spec, "N_B", q1, q2);
+        let hand = [c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0];
+        for (got, want) in dcm.iter().zip(hand) {
+            assert!((got - want).abs() < 1e-14, "{dcm:?} against {hand:?}");
+        }
+    }
+
+    #[test]
+    fn up_is_against_gravity_with_its_sign_from_the_defaults() {
+        assert_eq!(drawn("G*N1>", "").1.up, -1, "G = 9.81 pulls along +N1");
+        assert_eq!(drawn("-G*N3>", "").1.up, 3);
+        assert_eq!(drawn("-G*N1> - G*N2>", "").1.up, 3, "not along one axis");
+    }
+
+    #[test]
+    fn an_output_of_the_same_name_and_meaning_is_reused_and_one_of_another_is_not() {
+        let (spec, d) = drawn("-G*N2>", "P_O_AO = L\nOUTPUT N_A, P_O_AO\n");
+        let named = |n: &str| spec.outputs.iter().filter(|o| o.name == n).count();
+        assert_eq!((named("N_A"), named("P_O_AO"), named("P_O_AO_VIEW")), (1, 1, 1));
+        assert_eq!(d.frames[0].dcm[8], "N_A_33");
+        assert_eq!(d.points[0].position[0], "P_O_AO_VIEW_N1");
+    }
+}
