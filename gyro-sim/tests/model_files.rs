@@ -17,6 +17,7 @@ const PRESCRIBED: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/tes
 const DISC_CONTACT: &str =
     concat!(env!("CARGO_MANIFEST_DIR"), "/../kane-model/tests/data/rolling_disc_contact.al");
 const STALLING: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/stalling_slider.al");
+const DOUBLE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/double_pendulum.al");
 
 /// A fresh folder for one test.
 fn folder(name: &str) -> PathBuf {
@@ -49,6 +50,83 @@ fn text(o: &Output) -> String {
 fn rows(dir: &Path) -> Vec<Vec<f64>> {
     let csv = std::fs::read_to_string(dir.join("trajectory.csv")).unwrap();
     csv.lines().skip(1).map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect()
+}
+
+/// The data a run's `view.html` embeds (`t`, the columns the view reads, the view).
+fn view_data(dir: &Path) -> serde_json::Value {
+    let page = std::fs::read_to_string(dir.join("view.html")).unwrap();
+    let start = r#"<script id="view-data" type="application/json">"#;
+    let json = page.split_once(start).unwrap().1.split_once("</script>").unwrap().0;
+    serde_json::from_str(json).unwrap()
+}
+
+/// The view data's column `name`.
+fn view_column(data: &serde_json::Value, name: &str) -> Vec<f64> {
+    let column = data["columns"][name].as_array().unwrap_or_else(|| panic!("no column {name}"));
+    column.iter().map(|x| x.as_f64().unwrap()).collect()
+}
+
+#[test]
+fn a_model_run_draws_its_frames_and_points_where_its_coordinates_put_them() {
+    let dir = folder("drawing");
+    let out = dir.join("out");
+    let run = gyro_sim(&["--model", DOUBLE, "--engine", "instant", "--out", out.to_str().unwrap()], &dir);
+    assert!(run.status.success(), "{}", text(&run));
+    let csv = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
+    assert!(csv.starts_with("t,q1,q2\n"), "the drawing's columns stay out of the CSV: {}", &csv[..40]);
+    let data = view_data(&out);
+    let view = &data["view"];
+    assert_eq!((view["up"].as_i64(), view["frame"].as_str()), (Some(2), Some("N")), "gravity along -N2");
+    let bodies: Vec<(&str, &str, &str)> = view["bodies"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|b| {
+            (
+                b["name"].as_str().unwrap(),
+                b["shape"]["kind"].as_str().unwrap(),
+                b["position"][0].as_str().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(bodies, [("A", "axes", "P_O_AO_N1"), ("B", "axes", "P_O_BO_N1")]);
+    let joined: Vec<(&str, Option<&str>)> = view["points"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| (p["name"].as_str().unwrap(), p["from"].as_str()))
+        .collect();
+    assert_eq!(joined, [("AO", Some("O")), ("BO", Some("P")), ("O", None), ("P", Some("O"))]);
+    // Against the run's own coordinates, by hand (L = 1): BO is at A1 + B1/2, B turned by q1 + q2.
+    let rows = rows(&out);
+    let (x, y, z) =
+        (view_column(&data, "P_O_BO_N1"), view_column(&data, "P_O_BO_N2"), view_column(&data, "P_O_BO_N3"));
+    let (b11, b21) = (view_column(&data, "N_B_11"), view_column(&data, "N_B_21"));
+    assert_eq!(rows.len(), x.len());
+    for (k, row) in rows.iter().enumerate() {
+        let (q1, q12) = (row[1], row[1] + row[2]);
+        let hand = [q1.cos() + 0.5 * q12.cos(), q1.sin() + 0.5 * q12.sin(), 0.0, q12.cos(), q12.sin()];
+        let drawn = [x[k], y[k], z[k], b11[k], b21[k]];
+        for (d, h) in drawn.iter().zip(hand) {
+            assert!((d - h).abs() < 1e-12, "row {k}: drawn {drawn:?}, by hand {hand:?}");
+        }
+    }
+}
+
+#[test]
+fn without_a_view_the_drawing_is_neither_asked_for_nor_written() {
+    let dir = folder("no_view");
+    let out = dir.join("out");
+    let printed = gyro_sim(&["--model", DOUBLE, "--print-scene"], &dir);
+    assert!(text(&printed).contains("[view]\ndraw_model = true\n"), "{}", text(&printed));
+    let printed = gyro_sim(&["--model", DOUBLE, "--print-scene", "--no-view"], &dir);
+    assert!(printed.status.success() && !text(&printed).contains("[view]"), "{}", text(&printed));
+    let run = gyro_sim(
+        &["--model", DOUBLE, "--engine", "instant", "--no-view", "--out", out.to_str().unwrap()],
+        &dir,
+    );
+    assert!(run.status.success(), "{}", text(&run));
+    assert!(out.join("trajectory.csv").is_file() && !out.join("view.html").exists());
 }
 
 #[test]
@@ -453,6 +531,7 @@ fn the_compiled_path_builds_once_per_file_version() {
     assert!(text(&first).contains("compiling the model"), "{}", text(&first));
     assert!(text(&first).contains("model my_gimbal ran compiled"), "{}", text(&first));
     let compiled_rows = rows(&out);
+    let compiled_view = view_data(&out);
     let again = gyro_sim(&args, &dir);
     assert!(again.status.success() && !text(&again).contains("compiling"), "{}", text(&again));
     let instant = gyro_sim(&[&args[..], &["--engine", "instant"]].concat(), &dir);
@@ -461,6 +540,16 @@ fn the_compiled_path_builds_once_per_file_version() {
     let worst = compiled_rows.iter().flatten().zip(instant_rows.iter().flatten());
     let worst = worst.map(|(x, y)| (x - y).abs() / x.abs().max(1.0)).fold(0.0, f64::max);
     assert!(worst < 1e-12, "compiled vs instant {worst:e}");
+    // The compiled binary computes the model's drawing as the instant path does.
+    let instant_view = view_data(&out);
+    assert_eq!(compiled_view["view"], instant_view["view"]);
+    let names: Vec<&String> = instant_view["columns"].as_object().unwrap().keys().collect();
+    assert!(names.iter().any(|n| n.starts_with("P_O_")) && names.len() > 20, "{names:?}");
+    for name in names {
+        let pairs = view_column(&compiled_view, name).into_iter().zip(view_column(&instant_view, name));
+        let worst = pairs.map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+        assert!(worst < 1e-12, "{name}: compiled vs instant {worst:e}");
+    }
     // An edit of INPUT values alone needs no build, and the binary runs with the new values.
     let edited = std::fs::read_to_string(&model).unwrap().replace("OFF = 0.05", "OFF = 0.08");
     std::fs::write(&model, &edited).unwrap();

@@ -295,3 +295,11 @@ fn a_view_length_naming_no_parameter_is_an_error_at_the_view() {
     let e = error(&format!("{head}{}", view.replace("\"R\"", "\"R+1\"")));
     assert!(e.contains("`R+1` is not a length: give a number, a parameter's name"), "{e}");
 }
+
+#[test]
+fn a_built_in_model_has_no_drawing_to_draw() {
+    let e =
+        error("model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[view]\ndraw_model = true\n");
+    assert!(e.starts_with("bad.toml:4:1: error: [view]: draw_model = true"), "{e}");
+    assert!(e.contains("[[view.bodies]]"), "{e}");
+}

@@ -1,8 +1,11 @@
 //! The 3-D view in a real browser: in comes a synthetic run (a ball on an arm turning about z at
 //! half a turn per second, its quaternion as columns, a constant arrow); out go screenshots by
 //! headless Chromium, checked pixel by pixel against where the run puts the ball and whether
-//! the arrow is shown. Needs `chromium` (Debian: `apt-get install chromium`; `tests/run` installs
-//! it); without it these tests fail.
+//! the arrow is shown; and a model file's default drawing (`gyro-sim run --model`), its frames
+//! and points read from the page's state. Needs `chromium` (Debian: `apt-get install chromium`;
+//! `tests/run` installs it); without it these tests fail.
+
+mod serve_support;
 
 use std::f64::consts::PI;
 use std::path::{Path, PathBuf};
@@ -356,4 +359,43 @@ fn the_page_fetches_nothing() {
     for needle in ["fetch(", "XMLHttpRequest", "import ", "src =", ".src=", "href"] {
         assert!(!script.contains(needle), "the page's script loads something: {needle}");
     }
+}
+
+#[test]
+fn a_model_file_s_frames_and_points_are_drawn_where_its_run_puts_them() {
+    let dir = folder("model_drawing");
+    let out = dir.join("out");
+    let model = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/double_pendulum.al");
+    let run = Command::new(serve_support::BIN)
+        .args(["run", "--model", model, "--engine", "instant", "--out", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    // The rows at t = 1.5 s: the coordinates, and where BO and P are by hand (L = 1).
+    let csv = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
+    let row: Vec<f64> =
+        csv.lines().find(|l| l.starts_with("1.5,")).unwrap().split(',').map(|x| x.parse().unwrap()).collect();
+    let (q1, q12) = (row[1], row[1] + row[2]);
+    let hand_bo = [q1.cos() + 0.5 * q12.cos(), q1.sin() + 0.5 * q12.sin(), 0.0];
+    let hand_ao = [0.5 * q1.cos(), 0.5 * q1.sin(), 0.0];
+    chromium();
+    let url = format!("file://{}#t=1.5&play=0", out.join("view.html").display());
+    let mut browser = serve_support::cdp::Browser::open(&url, &dir.join("profile"));
+    browser.wait_for("window.gyroView !== undefined && gyroView.time() === 1.5");
+    let points = browser.eval("gyroView.pointsDrawn()");
+    let bodies = browser.eval("gyroView.bodiesDrawn()");
+    let xyz = |v: &serde_json::Value| -> Vec<f64> {
+        v.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect()
+    };
+    let close = |a: &[f64], b: &[f64]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-6);
+    let bo = xyz(&points["BO"]["at"]);
+    assert!(close(&bo, &hand_bo), "BO drawn at {bo:?}, by hand {hand_bo:?}");
+    assert_eq!((points["BO"]["from"].as_str(), points["BO"]["line"].as_bool()), (Some("P"), Some(true)));
+    assert_eq!((points["O"]["from"].as_str(), points["O"]["line"].as_bool()), (None, Some(false)));
+    // Gravity along -N2: N2 is drawn upward (three's z).
+    let drawn = xyz(&points["BO"]["drawn"]);
+    assert!((drawn[2] - hand_bo[1]).abs() < 1e-6, "BO's N2 {} drawn at height {}", hand_bo[1], drawn[2]);
+    // Frame A's axes stand at its mass centre AO.
+    let a_origin = xyz(&bodies["A"]["origin"]);
+    assert!(close(&a_origin, &hand_ao), "A's axes at {a_origin:?}, AO by hand {hand_ao:?}");
 }

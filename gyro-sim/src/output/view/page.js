@@ -596,12 +596,13 @@ function expose() {
           return [b.spec.name, { centre: mesh.position.toArray(), size: size.toArray(), origin: origin.toArray() }];
         }),
       ),
-    /** Each point's drawn place in space axes, and the point its line comes from. */
+    /** Each point's place in space axes and as drawn (z up), and the point its line comes from. */
     pointsDrawn: () =>
       Object.fromEntries(
         points.map((p) => {
           const at = p.marker.position.clone().applyQuaternion(SPACE.clone().invert());
-          return [p.spec.name, { at: at.toArray(), from: p.spec.from ?? null, line: p.line !== null }];
+          const drawn = p.marker.position.toArray();
+          return [p.spec.name, { at: at.toArray(), drawn, from: p.spec.from ?? null, line: p.line !== null }];
         }),
       ),
   };

@@ -102,6 +102,10 @@ enum Command {
         /// `rhs_lanes` too, for batches of members integrated in lock step.
         #[arg(long)]
         lanes: bool,
+        /// The default drawing's outputs too: each frame's direction cosines `N_F` and each
+        /// point's position `P_O_P` from the root point.
+        #[arg(long)]
+        drawing: bool,
     },
     /// Check hand-derived equations (`U1' = ...` or `ZERO[1] = ...`) and quantities (V_P_A> = ...)
     /// against the derived ones, and say how they differ.
@@ -174,11 +178,11 @@ fn run(command: Command) -> Result<(), String> {
         Command::Eval { file, set, json } => eval(file, set, json),
         Command::Solve { file, set, json } => solve::solve(file, set, json),
         Command::Linearize { file, set, input, json } => linearize(file, set, input, json),
-        Command::Gen { file, out, stats, taylor, taylor_orders, lanes } => gen(
+        Command::Gen { file, out, stats, taylor, taylor_orders, lanes, drawing } => gen(
             file,
             out,
             stats,
-            CodeOptions { taylor, taylor_orders, lanes, equation_counts: stats, drawing: false },
+            CodeOptions { taylor, taylor_orders, lanes, equation_counts: stats, drawing },
         ),
         Command::Compare { file, hand, up_to_sign } => compare(file, hand, up_to_sign),
         Command::Show { file, name, frame } => show(file, name, frame),
