@@ -143,6 +143,7 @@ fn output_kind(kind: &spec::OutputKind) -> OutputKind {
         S::ConfigurationResiduals { .. } => OutputKind::ConfigurationResiduals,
         S::MotionResiduals => OutputKind::MotionResiduals,
         S::ConstraintMatrix { .. } => OutputKind::ConstraintMatrix,
+        S::Drawing { .. } => OutputKind::Drawing,
     }
 }
 

@@ -25,6 +25,8 @@ pub enum OutputKind {
     MotionResiduals,
     /// The motion constraints' matrix of the dependent speeds, row by row.
     ConstraintMatrix,
+    /// A model's default drawing: frames' direction cosines and points' positions.
+    Drawing,
 }
 
 /// One output of a generated model.

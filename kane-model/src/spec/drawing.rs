@@ -46,20 +46,29 @@ pub struct DrawnPoint {
     pub from: Option<String>,
 }
 
+/// The drawing's columns and components, gathered before they become one output.
+#[derive(Default)]
+struct Gathered {
+    columns: Vec<String>,
+    components: Vec<ExprId>,
+}
+
 impl ModelSpec {
-    /// Adds the outputs that place every frame and point the model can place, reusing an
-    /// output of the same name and meaning; `gravity` decides the upward axis.
+    /// Adds one output placing every frame and point the model can place (columns an output
+    /// of the same name and meaning has already are read from it); `gravity` decides the
+    /// upward axis.
     pub fn add_drawing(&mut self, gravity: Option<&Vector>) -> Result<Drawing> {
         let n = self.model.newtonian();
         let newtonian = self.model.frame_name(n).to_string();
         let origin = self.drawing_origin();
+        let mut gathered = Gathered::default();
         let mut points = Vec::new();
         if let Some(o) = origin {
             for index in 0..self.model.points.len() {
                 let p = PointId(index as u32);
                 let Ok(r) = self.model.position(p, o) else { continue };
                 let name = format!("P_{}_{}", self.model.point_name(o), self.model.point_name(p));
-                let columns = self.drawing_vector(&name, &r, n)?;
+                let columns = self.drawing_position(&mut gathered, &name, &r)?;
                 points.push((p, columns));
             }
         }
@@ -72,8 +81,7 @@ impl ModelSpec {
             }
             let body = self.model.bodies().iter().find(|b| b.frame == f).map(|b| b.mass_center);
             let at = body.filter(|p| drawn_name(*p)).map(|p| self.model.point_name(p).to_string());
-            let name = format!("{newtonian}_{}", self.model.frame_name(f));
-            let dcm = self.drawing_orientation(&name, f)?;
+            let dcm = self.drawing_orientation(&mut gathered, f)?;
             frames.push(DrawnFrame { name: self.model.frame_name(f).to_string(), dcm, at });
         }
         let points = points
@@ -92,6 +100,11 @@ impl ModelSpec {
             Some(g) => self.upward_axis(g)?,
             None => 3,
         };
+        if !gathered.components.is_empty() {
+            let name = self.unused_name("DRAWING");
+            let Gathered { columns, components } = gathered;
+            self.push(&name, "", OutputKind::Drawing { columns }, components);
+        }
         Ok(Drawing { newtonian, origin, up, frames, points })
     }
 
@@ -99,47 +112,79 @@ impl ModelSpec {
     fn drawing_origin(&self) -> Option<PointId> {
         let count = self.model.points.len();
         let mut members = vec![0usize; count];
-        let roots: Vec<PointId> = (0..count)
-            .map(|i| *self.model.point_chain(PointId(i as u32)).last().expect("a chain holds its point"))
-            .collect();
-        for r in &roots {
-            members[r.index()] += 1;
+        for i in 0..count {
+            let chain = self.model.point_chain(PointId(i as u32));
+            members[chain.last().expect("a chain holds its point").index()] += 1;
         }
         let most = *members.iter().max()?;
         (0..count).find(|&i| members[i] == most && most > 0).map(|i| PointId(i as u32))
     }
 
-    /// The columns of the vector output `name` of `v` in `frame`: an output of that name
-    /// already measured in `frame`, else a new one (named `name_VIEW` when `name` is taken).
-    fn drawing_vector(&mut self, name: &str, v: &Vector, frame: FrameId) -> Result<[String; 3]> {
-        let frame_name = self.model.frame_name(frame).to_string();
+    /// The columns of the position `r` named `name` (`P_O_P`) in Newtonian axes: an output's
+    /// of that name already measured there, else gathered.
+    fn drawing_position(&mut self, gathered: &mut Gathered, name: &str, r: &Vector) -> Result<[String; 3]> {
+        let n = self.model.newtonian();
+        let frame_name = self.model.frame_name(n).to_string();
         let same = |kind: &OutputKind| matches!(kind, OutputKind::Vector { frame } if *frame == frame_name);
-        let name = match self.output_named(name) {
-            Some(k) if same(&self.outputs[k].kind) => return Ok(three(self.outputs[k].columns())),
-            Some(_) => format!("{name}_VIEW"),
-            None => name.to_string(),
-        };
-        self.add_vector(&name, v, frame, "")?;
-        Ok(three(self.outputs.last().expect("just added").columns()))
+        if let Some(k) = self.output_named(name).filter(|k| same(&self.outputs[*k].kind)) {
+            return Ok(three(self.outputs[k].columns()));
+        }
+        let m = self.model.express(r, n)?;
+        let columns: Vec<String> =
+            (1..=3).map(|i| self.unused_column(&format!("{name}_{frame_name}{i}"), gathered)).collect();
+        gathered.columns.extend_from_slice(&columns);
+        for e in m {
+            let e = self.in_states(e)?;
+            gathered.components.push(e);
+        }
+        Ok(three(columns))
     }
 
-    /// The columns of the direction cosines of `frame` named `name`, reused or added as
-    /// [`ModelSpec::drawing_vector`] does.
-    fn drawing_orientation(&mut self, name: &str, frame: FrameId) -> Result<[String; 9]> {
+    /// The columns of the direction cosines of `frame` (`N_F`): an output's of that name and
+    /// meaning, else gathered.
+    fn drawing_orientation(&mut self, gathered: &mut Gathered, frame: FrameId) -> Result<[String; 9]> {
+        let n = self.model.newtonian();
         let frame_name = self.model.frame_name(frame).to_string();
+        let name = format!("{}_{frame_name}", self.model.frame_name(n));
         let same = |kind: &OutputKind| matches!(kind, OutputKind::Orientation { frame, form: OrientationForm::Dcm } if *frame == frame_name);
-        let name = match self.output_named(name) {
-            Some(k) if same(&self.outputs[k].kind) => return Ok(nine(self.outputs[k].columns())),
-            Some(_) => format!("{name}_VIEW"),
-            None => name.to_string(),
-        };
-        self.add_orientation(&name, frame, OrientationForm::Dcm)?;
-        Ok(nine(self.outputs.last().expect("just added").columns()))
+        if let Some(k) = self.output_named(&name).filter(|k| same(&self.outputs[*k].kind)) {
+            return Ok(nine(self.outputs[k].columns()));
+        }
+        let dcm = self.model.dcm(n, frame)?;
+        let mut columns = Vec::with_capacity(9);
+        for i in 1..=3 {
+            for j in 1..=3 {
+                columns.push(self.unused_column(&format!("{name}_{i}{j}"), gathered));
+            }
+        }
+        gathered.columns.extend_from_slice(&columns);
+        gathered.components.extend(dcm.iter().flatten());
+        Ok(nine(columns))
     }
 
     /// The index of the output named `name` (case-insensitive).
     fn output_named(&self, name: &str) -> Option<usize> {
         self.outputs.iter().position(|o| o.name.eq_ignore_ascii_case(name))
+    }
+
+    /// `name`, or `name_VIEW` when another output's column or one gathered has that name.
+    fn unused_column(&self, name: &str, gathered: &Gathered) -> String {
+        let taken = |c: &String| c.eq_ignore_ascii_case(name);
+        let used =
+            self.outputs.iter().any(|o| o.columns().iter().any(taken)) || gathered.columns.iter().any(taken);
+        if used {
+            format!("{name}_VIEW")
+        } else {
+            name.to_string()
+        }
+    }
+
+    /// `name`, or `name_VIEW` when an output has that name.
+    fn unused_name(&self, name: &str) -> String {
+        match self.output_named(name) {
+            Some(_) => format!("{name}_VIEW"),
+            None => name.to_string(),
+        }
     }
 
     /// The Newtonian axis against `g` when `g` lies along one axis (its sign from the defaults
@@ -159,11 +204,11 @@ impl ModelSpec {
 }
 
 fn three(columns: Vec<String>) -> [String; 3] {
-    columns.try_into().expect("a vector output has three columns")
+    columns.try_into().expect("a position has three columns")
 }
 
 fn nine(columns: Vec<String>) -> [String; 9] {
-    columns.try_into().expect("a direction-cosine output has nine columns")
+    columns.try_into().expect("direction cosines have nine columns")
 }
 
 #[cfg(test)]
@@ -182,9 +227,16 @@ mod tests {
         crate::lang::load("double.al", &text).unwrap().into_spec_drawn("double").unwrap()
     }
 
-    /// The values of the output `name` at `q1`, `q2` and L = 1.
+    /// The values of the columns `NAME_suffix` at `q1`, `q2` and L = 1.
     fn values(spec: &ModelSpec, name: &str, q1: f64, q2: f64) -> Vec<f64> {
-        let output = spec.outputs.iter().find(|o| o.name == name).unwrap();
+        let output = spec.outputs.iter().find(|o| o.name == "DRAWING").unwrap();
+        let picked: Vec<ExprId> = output
+            .columns()
+            .iter()
+            .zip(&output.components)
+            .filter(|(c, _)| c.starts_with(&format!("{name}_")))
+            .map(|(_, e)| *e)
+            .collect();
         let ar = &spec.model.ar;
         let value_of = |s| match ar.symbol_info(s).name.as_str() {
             "Q1" => Some(q1),
@@ -192,7 +244,7 @@ mod tests {
             "L" => Some(1.0),
             _ => None,
         };
-        ar.eval::<f64>(&output.components, value_of).unwrap()
+        ar.eval::<f64>(&picked, value_of).unwrap()
     }
 
     #[test]
@@ -241,10 +293,11 @@ mod tests {
 
     #[test]
     fn an_output_of_the_same_name_and_meaning_is_reused_and_one_of_another_is_not() {
-        let (spec, d) = drawn("-G*N2>", "P_O_AO = L\nOUTPUT N_A, P_O_AO\n");
-        let named = |n: &str| spec.outputs.iter().filter(|o| o.name == n).count();
-        assert_eq!((named("N_A"), named("P_O_AO"), named("P_O_AO_VIEW")), (1, 1, 1));
-        assert_eq!(d.frames[0].dcm[8], "N_A_33");
-        assert_eq!(d.points[0].position[0], "P_O_AO_VIEW_N1");
+        let (spec, d) = drawn("-G*N2>", "P_O_AO_N1 = L\nOUTPUT N_A, P_O_AO_N1\n");
+        assert_eq!(d.frames[0].dcm[8], "N_A_33", "the file's own N_A");
+        assert_eq!(d.points[0].position[0], "P_O_AO_N1_VIEW", "not the file's scalar");
+        let drawing = spec.outputs.iter().find(|o| o.name == "DRAWING").unwrap();
+        assert!(!drawing.columns().iter().any(|c| c.starts_with("N_A_")));
+        assert_eq!(drawing.columns().len(), drawing.components.len());
     }
 }

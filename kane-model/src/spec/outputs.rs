@@ -52,6 +52,12 @@ pub enum OutputKind {
         /// The number of dependent speeds (rows and columns).
         size: usize,
     },
+    /// A model's default drawing: every frame's direction cosines and every point's position,
+    /// in one output (so that they share their subexpressions), under these column names.
+    Drawing {
+        /// The column names, one per component.
+        columns: Vec<String>,
+    },
     /// The angular momentum about `point` in the Newtonian frame, measured in `frame`.
     AngularMomentum {
         /// The point's name.
@@ -91,6 +97,7 @@ impl OutputSpec {
             OutputKind::ConfigurationResiduals { .. } | OutputKind::MotionResiduals => {
                 (1..=self.components.len()).map(|i| i.to_string()).collect()
             }
+            OutputKind::Drawing { columns } => return columns.clone(),
             OutputKind::ConstraintMatrix { size } => {
                 (1..=*size).flat_map(|i| (1..=*size).map(move |j| format!("{i}{j}"))).collect()
             }
@@ -201,7 +208,7 @@ impl ModelSpec {
         es.iter().map(|e| self.in_states(*e)).collect()
     }
 
-    fn push(&mut self, name: &str, unit: &str, kind: OutputKind, components: Vec<ExprId>) {
+    pub(super) fn push(&mut self, name: &str, unit: &str, kind: OutputKind, components: Vec<ExprId>) {
         self.outputs.push(OutputSpec { name: name.to_string(), unit: unit.to_string(), kind, components });
     }
 }
