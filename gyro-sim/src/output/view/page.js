@@ -257,10 +257,11 @@ function addFurniture(scene, box, size) {
 
 /** A frame's axes (x red, y green, z blue) with its name, `length` long. */
 function axesMesh(name, colour, length, labelled) {
-  const axes = new THREE.AxesHelper(length);
+  const axes = new THREE.AxesHelper(length).setColors(0xb04040, 0x40a040, 0x4040b0);
   if (labelled) {
+    // Past the tip of its x axis, apart from the label of a point at its origin.
     const tag = label(name, colour, 0.3 * length);
-    tag.position.set(0.25 * length, 0.25 * length, 0.25 * length);
+    tag.position.set(1.2 * length, 0, 0);
     axes.add(tag);
   }
   return axes;
