@@ -1,12 +1,13 @@
 //! What a 3-D view shows: in comes plain data (built in Rust or read from a scene's `[view]`
 //! TOML table); out go the checks against a trajectory's column names. Lengths are in model
-//! units; every body hangs from the origin (the support) and turns about it.
+//! units; a body turns about its origin: the support at the origin, or where its position
+//! columns put it. Points are markers at their position columns.
 
 use serde::{Deserialize, Serialize};
 
 pub use super::view_length::Length;
 
-/// What the page draws: bodies, arrows and traces, all about the support at the origin.
+/// What the page draws: bodies, arrows, traces and points.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ViewSpec {
