@@ -93,6 +93,8 @@ fn toggles_hide_arrows_and_bad_values_show_the_error() {
     let dir = folder("browser_errors");
     let mut browser = Browser::open(&format!("http://{}/", server.address), &dir.join("profile"));
     browser.wait_for("window.gyroState?.ready === true");
+    let title = browser.eval("document.querySelector('#plot .title').textContent");
+    assert_eq!(title.as_str(), Some("Elevation against time"));
     let result = browser.eval(&format!(
         "(async () => {{ {UNTIL}
            await until(() => window.gyroState?.ready);
@@ -122,6 +124,9 @@ fn trial_three_redraws_the_run_for_its_rotor_speed() {
     let mut browser = Browser::open(&format!("http://{}/", server.address), &dir.join("profile"));
     browser.wait_for("window.gyroState?.ready === true");
     browser.eval("gyroView.pause()");
+    // The second window says what it plots: the gimbal's angles, not a top's elevation.
+    let title = browser.eval("document.querySelector('#plot .title').textContent");
+    assert_eq!(title.as_str(), Some("Q1, Q2, Q3 against time"));
     let speeds: Vec<f64> = (0..20).map(|k| 120.0 + 2.0 * k as f64).collect();
     report("trial3", "U3", move_slider(&mut browser, "U3", &speeds));
     let u3 = speeds[speeds.len() - 1];

@@ -54,6 +54,11 @@ function drawPlot(data) {
     series: [{ label: 't' }, ...series],
   };
   plot = new uPlot(opts, plotData(data), document.getElementById('plot-area'));
+  // The EJS window's title for a top; what is plotted for any other model.
+  const elevation = data.plot.some((n) => n === 'ELEVATION' || n === 'L_ELEVATION');
+  document.querySelector('#plot .title').textContent = elevation
+    ? 'Elevation against time'
+    : data.plot.join(', ') + ' against time';
 }
 
 /** A slider, a number box and the unit for one control. */
