@@ -130,6 +130,48 @@ fn without_a_view_the_drawing_is_neither_asked_for_nor_written() {
 }
 
 #[test]
+fn a_model_that_cannot_be_drawn_runs_without_its_view_and_says_why() {
+    // H is a variable with no equation: the point it places cannot be computed in a run.
+    let dir = folder("undrawable");
+    let model = dir.join("undrawable.al");
+    let source = std::fs::read_to_string(DOUBLE).unwrap();
+    std::fs::write(
+        &model,
+        source.replace("OUTPUT Q1, Q2", "VARIABLES H\nPOINTS Q\nP_O_Q> = H*N1>\nOUTPUT Q1, Q2"),
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let run = gyro_sim(
+        &["--model", model.to_str().unwrap(), "--engine", "instant", "--out", out.to_str().unwrap()],
+        &dir,
+    );
+    assert!(run.status.success(), "{}", text(&run));
+    assert!(text(&run).contains("warning: the model's frames and points cannot be drawn"), "{}", text(&run));
+    assert!(out.join("trajectory.csv").is_file() && !out.join("view.html").exists());
+}
+
+#[test]
+fn a_scene_drawing_the_model_without_outputs_writes_no_drawing_columns() {
+    let dir = folder("drawn_scene");
+    std::fs::copy(DOUBLE, dir.join("double_pendulum.al")).unwrap();
+    let scene = dir.join("scene.toml");
+    let text_of_scene =
+        "model = \"double_pendulum.al\"\nt_final = 1.0\noutput_step = 0.1\n\n[view]\ndraw_model = true\n";
+    std::fs::write(&scene, text_of_scene).unwrap();
+    let out = dir.join("out");
+    let run =
+        gyro_sim(&[scene.to_str().unwrap(), "--engine", "instant", "--out", out.to_str().unwrap()], &dir);
+    assert!(run.status.success(), "{}", text(&run));
+    let csv = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
+    let header = csv.lines().next().unwrap().to_ascii_uppercase();
+    assert!(
+        header.starts_with("T,Q1,Q2,U1,U2") && !header.contains("P_O_") && !header.contains("N_A"),
+        "{header}"
+    );
+    assert!(view_data(&out)["columns"]["P_O_BO_N1"].is_array());
+}
+
+#[test]
 fn a_forty_link_chain_swings_with_its_energy_kept() {
     // The order-n form on the instant engine: a 40-link chain falls from 0.1 rad for 2 s.
     let dir = folder("chain40");

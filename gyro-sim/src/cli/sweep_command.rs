@@ -38,7 +38,8 @@ pub struct SweepArgs<'a> {
 /// journaling each as it ends, and rewrites `sweep.csv` and `timing.csv` with all of them; the
 /// folder must hold this sweep (or none) and no other sweep may be running in it.
 pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCode, CliError> {
-    let scene = Scene::load(args.scene)?;
+    // A sweep writes no view: neither its columns nor a model's drawing are computed.
+    let scene = Scene { view: None, ..Scene::load(args.scene)? };
     let registry = super::file_model::with_file_model(&scene, registry.clone())?;
     let design = match args.samples {
         Some(count) => Design::Samples { count, seed: args.seed },

@@ -83,14 +83,35 @@ pub struct ModelFile {
 }
 
 impl ModelFile {
-    /// Reads, checks and lowers the model file at `path`.
+    /// Reads, checks and lowers the model file at `path` (without its drawing).
     pub fn load(path: &Path) -> Result<ModelFile, ModelFileError> {
         ModelFile::from_source(path, source_with(path, &[])?, false)
     }
 
     /// Checks and lowers `source`, the text of the model file at `path` (see `source_with`),
-    /// with the outputs of its default drawing when `drawn`.
+    /// with the outputs of its default drawing when `drawn` and they can be computed (else
+    /// without them, a warning saying why).
     pub fn from_source(path: &Path, source: String, drawn: bool) -> Result<ModelFile, ModelFileError> {
+        if !drawn {
+            return ModelFile::lowered(path, source, false);
+        }
+        match ModelFile::lowered(path, source.clone(), true) {
+            Err(e @ (ModelFileError::Spec { .. } | ModelFileError::Lower { .. })) => {
+                let mut file = ModelFile::lowered(path, source, false)?;
+                let why = e.to_string();
+                let why = why.strip_prefix(&format!("{}: ", path.display())).unwrap_or(&why);
+                file.warnings.push_str(&format!(
+                    "{}: warning: the model's frames and points cannot be drawn ({why}): no view of them\n",
+                    path.display()
+                ));
+                Ok(file)
+            }
+            other => other,
+        }
+    }
+
+    /// The file checked and lowered, with its drawing's outputs when `drawn`.
+    fn lowered(path: &Path, source: String, drawn: bool) -> Result<ModelFile, ModelFileError> {
         let shown = path.display().to_string();
         let checked = kane_model::lang::check(&shown, &source)?;
         let warnings = checked.warnings.to_string();

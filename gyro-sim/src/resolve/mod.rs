@@ -11,7 +11,7 @@ mod presets;
 pub use initial::{sleeping_threshold, steady_precession};
 
 use kane_model::lang::units::normalised;
-use kane_model::runtime::ModelInfo;
+use kane_model::runtime::{ModelInfo, OutputKind};
 
 use crate::models::Registry;
 use crate::ode::{Method, Tolerances};
@@ -79,7 +79,7 @@ fn scene_view(scene: &Scene, entry: &ModelEntry) -> Result<Option<ViewSpec>, Sce
         Some(drawing) => Ok(Some(view.with_drawing(drawing))),
         None => Err(scene.error_at(
             scene.view_span.clone(),
-            format!("[view]: draw_model = true, but {} is not a model file loaded with its drawing", entry.info.name),
+            format!("[view]: draw_model = true, but the model {} has no drawing (a model file's warning above says why)", entry.info.name),
             "draw_model draws a model file's frames and points; a built-in model's scene draws its bodies with [[view.bodies]]",
         )),
     }
@@ -342,11 +342,13 @@ fn unit_euler_parameters(
     ))
 }
 
-/// The states and outputs asked for (every state and output when none are named).
+/// The states and outputs asked for (every state and output but the default drawing's when
+/// none are named).
 fn picks(scene: &Scene, info: &ModelInfo) -> Result<Vec<Pick>, SceneError> {
     if scene.outputs.is_empty() {
         let states = (0..info.state_names.len()).map(Pick::State);
-        return Ok(states.chain((0..info.outputs.len()).map(Pick::Output)).collect());
+        let outputs = (0..info.outputs.len()).filter(|k| info.outputs[*k].kind != OutputKind::Drawing);
+        return Ok(states.chain(outputs.map(Pick::Output)).collect());
     }
     scene
         .outputs

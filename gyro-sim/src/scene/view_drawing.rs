@@ -22,8 +22,9 @@ impl ViewSpec {
         let position_of =
             |name: &str| drawing.points.iter().find(|p| p.name == name).map(|p| p.position.clone());
         for (i, frame) in drawing.frames.iter().enumerate() {
+            let taken = |n: &str| view.bodies.iter().any(|b| b.name == n);
             view.bodies.push(BodyView {
-                name: frame.name.clone(),
+                name: unused(&frame.name, taken),
                 shape: Shape::Axes { length: None },
                 colour: FRAME_COLOURS[i % FRAME_COLOURS.len()].to_string(),
                 orientation: Orientation::Dcm(frame.dcm.clone()),
@@ -33,16 +34,26 @@ impl ViewSpec {
                 position: frame.at.as_deref().and_then(position_of),
             });
         }
+        // The drawing's points under names the view's own points do not have.
+        let own = self.points.clone();
+        let named = |name: &str| unused(name, |n| own.iter().any(|p| p.name == n));
         for point in &drawing.points {
             view.points.push(PointView {
-                name: point.name.clone(),
+                name: named(&point.name),
                 position: point.position.clone(),
                 colour: POINT_COLOUR.to_string(),
-                from: point.from.clone(),
+                from: point.from.as_deref().map(named),
             });
         }
         view
     }
+}
+
+/// `name`, else `name (drawn)`, `name (drawn 2)`, ...: the first not `taken`.
+fn unused(name: &str, taken: impl Fn(&str) -> bool) -> String {
+    let suffixed =
+        (1..).map(|k| if k == 1 { format!("{name} (drawn)") } else { format!("{name} (drawn {k})") });
+    std::iter::once(name.to_string()).chain(suffixed).find(|n| !taken(n)).expect("a free name")
 }
 
 #[cfg(test)]
@@ -88,9 +99,37 @@ mod tests {
     }
 
     #[test]
-    fn the_scene_keeps_its_own_bodies_up_axis_and_frame_name() {
-        let own = ViewSpec { up: Some(2), frame: Some("A".into()), ..ViewSpec::default() };
+    fn the_scene_keeps_its_own_bodies_points_up_axis_and_frame_name() {
+        let body = BodyView {
+            name: "A".into(),
+            shape: Shape::Rod { length: Length::Number(1.0) },
+            colour: "#000000".into(),
+            orientation: Orientation::Fixed,
+            offset: [Length::Number(0.0), Length::Number(0.0), Length::Number(0.0)],
+            opacity: 1.0,
+            axis: 3,
+            position: None,
+        };
+        let point = PointView {
+            name: "O".into(),
+            position: ["X", "Y", "Z"].map(String::from),
+            colour: "#000000".into(),
+            from: None,
+        };
+        let own = ViewSpec {
+            up: Some(2),
+            frame: Some("A".into()),
+            bodies: vec![body],
+            points: vec![point],
+            ..ViewSpec::default()
+        };
         let view = own.with_drawing(&drawing());
         assert_eq!((view.up, view.frame.as_deref()), (Some(2), Some("A")));
+        let bodies: Vec<&str> = view.bodies.iter().map(|b| b.name.as_str()).collect();
+        assert_eq!(bodies, ["A", "A (drawn)", "C"]);
+        let points: Vec<(&str, Option<&str>)> =
+            view.points.iter().map(|p| (p.name.as_str(), p.from.as_deref())).collect();
+        assert_eq!(points, [("O", None), ("O (drawn)", None), ("AO", Some("O (drawn)"))]);
+        view.check().unwrap();
     }
 }

@@ -37,7 +37,8 @@ pub struct ViewSpec {
     pub draw_model: bool,
 }
 
-/// One rigid body: a shape turning with the body's orientation about the origin.
+/// One rigid body: a shape turning with the body's orientation about the body's origin (the
+/// support at the origin, unless its position columns move it).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct BodyView {
@@ -50,7 +51,7 @@ pub struct BodyView {
     /// How its axes turn in space (fixed when not given).
     #[serde(default)]
     pub orientation: Orientation,
-    /// Where the shape's centre is along the body's axes from the origin: `[0, 0, d]` for a
+    /// Where the shape's centre is along the body's axes from the body's origin: `[0, 0, d]` for a
     /// rotor at distance `d` along the body's z axis (`[0, 0, "D"]`: the parameter D's value).
     #[serde(default = "origin")]
     pub offset: [Length; 3],
@@ -110,7 +111,8 @@ pub enum Shape {
     },
     /// The body's axes x, y, z (red, green, blue), labelled with its name: a frame.
     Axes {
-        /// Their length (a fifth of the drawing's size unless given).
+        /// Their length (unless given, 0.6 of the median distance between joined points, at
+        /// most 0.3 of the drawing's size).
         #[serde(default, skip_serializing_if = "Option::is_none")]
         length: Option<Length>,
     },
@@ -192,7 +194,7 @@ pub struct PointView {
 pub struct TraceView {
     /// The body's name.
     pub body: String,
-    /// The point in body axes from the origin (the axle tip: `[0, 0, length]`).
+    /// The point in body axes from the body's origin (the axle tip: `[0, 0, length]`).
     pub point: [Length; 3],
     /// Its colour, `#rrggbb`.
     pub colour: String,

@@ -68,8 +68,10 @@ impl ModelSpec {
                 let p = PointId(index as u32);
                 let Ok(r) = self.model.position(p, o) else { continue };
                 let name = format!("P_{}_{}", self.model.point_name(o), self.model.point_name(p));
-                let columns = self.drawing_position(&mut gathered, &name, &r)?;
-                points.push((p, columns));
+                // A position through a frame not oriented in N is not drawn.
+                if let Ok(columns) = self.drawing_position(&mut gathered, &name, &r) {
+                    points.push((p, columns));
+                }
             }
         }
         let drawn_name = |p: PointId| points.iter().any(|(q, _)| *q == p);
@@ -96,10 +98,7 @@ impl ModelSpec {
             })
             .collect();
         let origin = origin.map(|o| self.model.point_name(o).to_string());
-        let up = match gravity {
-            Some(g) => self.upward_axis(g)?,
-            None => 3,
-        };
+        let up = gravity.and_then(|g| self.upward_axis(g).ok()).unwrap_or(3);
         if !gathered.components.is_empty() {
             let name = self.unused_name("DRAWING");
             let Gathered { columns, components } = gathered;
@@ -121,7 +120,7 @@ impl ModelSpec {
     }
 
     /// The columns of the position `r` named `name` (`P_O_P`) in Newtonian axes: an output's
-    /// of that name already measured there, else gathered.
+    /// of that name already measured there, else gathered (nothing gathered on an error).
     fn drawing_position(&mut self, gathered: &mut Gathered, name: &str, r: &Vector) -> Result<[String; 3]> {
         let n = self.model.newtonian();
         let frame_name = self.model.frame_name(n).to_string();
@@ -130,14 +129,9 @@ impl ModelSpec {
             return Ok(three(self.outputs[k].columns()));
         }
         let m = self.model.express(r, n)?;
-        let columns: Vec<String> =
-            (1..=3).map(|i| self.unused_column(&format!("{name}_{frame_name}{i}"), gathered)).collect();
-        gathered.columns.extend_from_slice(&columns);
-        for e in m {
-            let e = self.in_states(e)?;
-            gathered.components.push(e);
-        }
-        Ok(three(columns))
+        let m = [self.in_states(m[0])?, self.in_states(m[1])?, self.in_states(m[2])?];
+        let names = (1..=3).map(|i| format!("{name}_{frame_name}{i}"));
+        Ok(three(self.gather(gathered, names, &m)))
     }
 
     /// The columns of the direction cosines of `frame` (`N_F`): an output's of that name and
@@ -151,15 +145,26 @@ impl ModelSpec {
             return Ok(nine(self.outputs[k].columns()));
         }
         let dcm = self.model.dcm(n, frame)?;
-        let mut columns = Vec::with_capacity(9);
-        for i in 1..=3 {
-            for j in 1..=3 {
-                columns.push(self.unused_column(&format!("{name}_{i}{j}"), gathered));
-            }
+        let names = (1..=3).flat_map(|i| (1..=3).map(move |j| (i, j))).map(|(i, j)| format!("{name}_{i}{j}"));
+        let entries: Vec<ExprId> = dcm.iter().flatten().copied().collect();
+        Ok(nine(self.gather(gathered, names, &entries)))
+    }
+
+    /// Gathers `components` under `names` (each made unused), giving the columns' names.
+    fn gather(
+        &self,
+        gathered: &mut Gathered,
+        names: impl Iterator<Item = String>,
+        components: &[ExprId],
+    ) -> Vec<String> {
+        let mut columns = Vec::with_capacity(components.len());
+        for name in names {
+            let column = self.unused_column(&name, gathered);
+            gathered.columns.push(column.clone());
+            columns.push(column);
         }
-        gathered.columns.extend_from_slice(&columns);
-        gathered.components.extend(dcm.iter().flatten());
-        Ok(nine(columns))
+        gathered.components.extend_from_slice(components);
+        columns
     }
 
     /// The index of the output named `name` (case-insensitive).
@@ -167,24 +172,22 @@ impl ModelSpec {
         self.outputs.iter().position(|o| o.name.eq_ignore_ascii_case(name))
     }
 
-    /// `name`, or `name_VIEW` when another output's column or one gathered has that name.
+    /// `name`, else `name_VIEW`, `name_VIEW2`, ...: the first that no state, output column or
+    /// column gathered has.
     fn unused_column(&self, name: &str, gathered: &Gathered) -> String {
-        let taken = |c: &String| c.eq_ignore_ascii_case(name);
-        let used =
-            self.outputs.iter().any(|o| o.columns().iter().any(taken)) || gathered.columns.iter().any(taken);
-        if used {
-            format!("{name}_VIEW")
-        } else {
-            name.to_string()
-        }
+        let states: Vec<&str> = self.states().iter().map(|s| self.symbol_name(*s)).collect();
+        let taken = |candidate: &str| {
+            let same = |c: &str| c.eq_ignore_ascii_case(candidate);
+            states.iter().any(|s| same(s))
+                || self.outputs.iter().any(|o| o.columns().iter().any(|c| same(c)))
+                || gathered.columns.iter().any(|c| same(c))
+        };
+        first_free(name, taken)
     }
 
-    /// `name`, or `name_VIEW` when an output has that name.
+    /// `name`, else `name_VIEW`, ...: the first that no output has.
     fn unused_name(&self, name: &str) -> String {
-        match self.output_named(name) {
-            Some(_) => format!("{name}_VIEW"),
-            None => name.to_string(),
-        }
+        first_free(name, |candidate| self.output_named(candidate).is_some())
     }
 
     /// The Newtonian axis against `g` when `g` lies along one axis (its sign from the defaults
@@ -201,6 +204,15 @@ impl ModelSpec {
         let axis = axis as i8 + 1;
         Ok(if downward_positive { -axis } else { axis })
     }
+}
+
+/// `name`, else `name_VIEW`, `name_VIEW2`, ...: the first that is not `taken`.
+fn first_free(name: &str, taken: impl Fn(&str) -> bool) -> String {
+    let suffixed = (1..).map(|k| if k == 1 { format!("{name}_VIEW") } else { format!("{name}_VIEW{k}") });
+    std::iter::once(name.to_string())
+        .chain(suffixed)
+        .find(|candidate| !taken(candidate))
+        .expect("an unbounded sequence of names has a free one")
 }
 
 fn three(columns: Vec<String>) -> [String; 3] {
@@ -282,6 +294,13 @@ mod tests {
         for (got, want) in dcm.iter().zip(hand) {
             assert!((got - want).abs() < 1e-14, "{dcm:?} against {hand:?}");
         }
+    }
+
+    #[test]
+    fn a_point_placed_through_a_frame_not_oriented_in_n_is_left_out() {
+        let (_, d) = drawn("-G*N2>", "FRAMES C\nPOINTS Q\nP_O_Q> = L*C1>\n");
+        assert!(!d.points.iter().any(|p| p.name == "Q") && d.points.len() == 4, "{:?}", d.points);
+        assert!(!d.frames.iter().any(|f| f.name == "C"));
     }
 
     #[test]

@@ -165,7 +165,7 @@ function sampleRows() {
   return rows;
 }
 
-/** The box holding the origin, every body, trace and arrow over the run. */
+/** The box holding the origin, every body, trace, arrow and point over the run. */
 function sceneBox() {
   const box = new THREE.Box3(new THREE.Vector3(), new THREE.Vector3());
   for (const i of sampleRows()) {
@@ -199,7 +199,8 @@ function drawScale() {
 /** A trace's point in space axes at row `i`. */
 function tracePoint(trace, i) {
   const body = data.view.bodies.find((b) => b.name === trace.body);
-  return new THREE.Vector3(...trace.point).applyQuaternion(quaternionAtRow(body.orientation, i));
+  const point = new THREE.Vector3(...trace.point).applyQuaternion(quaternionAtRow(body.orientation, i));
+  return point.add(bodyOrigin(body, { i, f: 0 }));
 }
 
 /** A text label that always faces the camera, `height` tall. */
@@ -256,8 +257,10 @@ function addFurniture(scene, box, size) {
 }
 
 /** A frame's axes (x red, y green, z blue) with its name, `length` long. */
-function axesMesh(name, colour, length, labelled) {
+function axesMesh(name, colour, length, labelled, opacity) {
   const axes = new THREE.AxesHelper(length).setColors(0xb04040, 0x40a040, 0x4040b0);
+  axes.material.transparent = opacity < 1;
+  axes.material.opacity = opacity;
   if (labelled) {
     // Past the tip of its x axis, apart from the label of a point at its origin.
     const tag = label(name, colour, 0.3 * length);
@@ -274,8 +277,10 @@ function addBodies(scene) {
   return data.view.bodies.map((b) => {
     const group = new THREE.Group();
     if (b.shape.kind === 'axes') {
-      const length = b.shape.length ?? 0.6 * scale;
-      group.add(axesMesh(b.name, b.colour, length, framed <= MAX_LABELS));
+      const axes = axesMesh(b.name, b.colour, b.shape.length ?? 0.6 * scale, framed <= MAX_LABELS, b.opacity);
+      axes.position.set(...b.offset);
+      axes.quaternion.copy(axisTurn(b.axis));
+      group.add(axes);
       scene.add(group);
       return { spec: b, group };
     }
@@ -552,10 +557,15 @@ function load(next) {
   }
   if (repointed) {
     for (const p of points) {
-      scene.remove(p.marker);
-      if (p.line) scene.remove(p.line);
-      p.marker.geometry.dispose();
-      p.line?.geometry.dispose();
+      for (const o of [p.marker, p.line]) {
+        if (!o) continue;
+        scene.remove(o);
+        o.traverse((part) => {
+          part.geometry?.dispose();
+          part.material?.map?.dispose();
+          part.material?.dispose();
+        });
+      }
     }
     points = addPoints(scene);
   }
