@@ -37,6 +37,26 @@ fn a_run_with_a_value_is_what_gyro_sim_run_gives() {
 }
 
 #[test]
+fn a_model_file_drawn_by_the_page_moves_its_points_with_a_slider() {
+    let dir = folder("drawn_model");
+    let model = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/double_pendulum.al");
+    std::fs::copy(model, dir.join("double_pendulum.al")).unwrap();
+    let scene = dir.join("scene.toml");
+    let text = "model = \"double_pendulum.al\"\nt_final = 1.0\noutput_step = 0.1\noutputs = [\"Q1\", \"Q2\"]\n\n\
+        [parameters]\nL = 1.0\n\n[[controls]]\nname = \"L\"\nmin = 0.5\nmax = 2.0\nstep = 0.1\n\n[view]\ndraw_model = true\n";
+    std::fs::write(&scene, text).unwrap();
+    let server = serve(&scene);
+    let (status, data) = post_json(&server.address, "/api/run", r#"{"values": {"L": 2.0}}"#);
+    assert_eq!(status, 200, "{data}");
+    let points: Vec<&str> =
+        data["view"]["points"].as_array().unwrap().iter().map(|p| p["name"].as_str().unwrap()).collect();
+    assert_eq!(points, ["AO", "BO", "O", "P"]);
+    // P is at L A1> from the hinge: 2 cos q1 along N1 at the start (q1 = -1.2 rad).
+    let x0 = data["columns"]["P_O_P_N1"][0].as_f64().unwrap();
+    assert!((x0 - 2.0 * (-1.2f64).cos()).abs() < 1e-12, "P_O_P_N1 at t = 0: {x0}");
+}
+
+#[test]
 fn bad_requests_get_a_4xx_and_the_server_goes_on() {
     let server = serve(&scene_path("paper/trial3.toml"));
     let a = server.address.as_str();
