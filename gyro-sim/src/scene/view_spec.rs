@@ -360,16 +360,9 @@ fn numbers(lengths: &[Length]) -> Vec<f64> {
 }
 
 impl Shape {
-    /// Its sizes, in the order written.
-    fn sizes(&self) -> Vec<&Length> {
-        match self {
-            Shape::Ellipsoid { a, b, c } => vec![a, b, c],
-            Shape::Cylinder { radius, length } => vec![radius, length],
-            Shape::Box { x, y, z } => vec![x, y, z],
-            Shape::Rod { length } => vec![length],
-            Shape::Ring { radius, tube } => vec![radius, tube],
-            Shape::Axes { length } => length.iter().collect(),
-        }
+    /// Its sizes, in the order written (a shape is a few numbers: copied for the check).
+    fn sizes(&self) -> Vec<Length> {
+        self.clone().sizes_mut().into_iter().map(|l| l.clone()).collect()
     }
 
     /// Its sizes to set, in the order written.

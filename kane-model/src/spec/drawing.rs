@@ -3,6 +3,8 @@
 //! positions `P_O_P`) and a [`Drawing`] naming their columns, for a view that draws the model
 //! without a hand-written scene.
 
+use rustc_hash::FxHashSet;
+
 use crate::expr::ExprId;
 use crate::mechanics::{FrameId, PointId, Result, Vector};
 
@@ -46,11 +48,12 @@ pub struct DrawnPoint {
     pub from: Option<String>,
 }
 
-/// The drawing's columns and components, gathered before they become one output.
-#[derive(Default)]
+/// The drawing's columns and components, gathered before they become one output, and every
+/// name a column may not take (states', outputs' and gathered columns', upper-cased).
 struct Gathered {
     columns: Vec<String>,
     components: Vec<ExprId>,
+    taken: FxHashSet<String>,
 }
 
 impl ModelSpec {
@@ -61,7 +64,10 @@ impl ModelSpec {
         let n = self.model.newtonian();
         let newtonian = self.model.frame_name(n).to_string();
         let origin = self.drawing_origin();
-        let mut gathered = Gathered::default();
+        let states = self.states().into_iter().map(|s| self.symbol_name(s).to_ascii_uppercase());
+        let columns = self.outputs.iter().flat_map(|o| o.columns()).map(|c| c.to_ascii_uppercase());
+        let taken = states.chain(columns).collect();
+        let mut gathered = Gathered { columns: Vec::new(), components: Vec::new(), taken };
         let mut points = Vec::new();
         if let Some(o) = origin {
             for index in 0..self.model.points.len() {
@@ -101,7 +107,7 @@ impl ModelSpec {
         let up = gravity.and_then(|g| self.upward_axis(g).ok()).unwrap_or(3);
         if !gathered.components.is_empty() {
             let name = self.unused_name("DRAWING");
-            let Gathered { columns, components } = gathered;
+            let Gathered { columns, components, .. } = gathered;
             self.push(&name, "", OutputKind::Drawing { columns }, components);
         }
         Ok(Drawing { newtonian, origin, up, frames, points })
@@ -150,7 +156,8 @@ impl ModelSpec {
         Ok(nine(self.gather(gathered, names, &entries)))
     }
 
-    /// Gathers `components` under `names` (each made unused), giving the columns' names.
+    /// Gathers `components` under `names` (each, when taken, suffixed `_VIEW`, `_VIEW2`, ...),
+    /// giving the columns' names.
     fn gather(
         &self,
         gathered: &mut Gathered,
@@ -159,7 +166,8 @@ impl ModelSpec {
     ) -> Vec<String> {
         let mut columns = Vec::with_capacity(components.len());
         for name in names {
-            let column = self.unused_column(&name, gathered);
+            let column = first_free(&name, |c| gathered.taken.contains(&c.to_ascii_uppercase()));
+            gathered.taken.insert(column.to_ascii_uppercase());
             gathered.columns.push(column.clone());
             columns.push(column);
         }
@@ -170,19 +178,6 @@ impl ModelSpec {
     /// The index of the output named `name` (case-insensitive).
     fn output_named(&self, name: &str) -> Option<usize> {
         self.outputs.iter().position(|o| o.name.eq_ignore_ascii_case(name))
-    }
-
-    /// `name`, else `name_VIEW`, `name_VIEW2`, ...: the first that no state, output column or
-    /// column gathered has.
-    fn unused_column(&self, name: &str, gathered: &Gathered) -> String {
-        let states: Vec<&str> = self.states().iter().map(|s| self.symbol_name(*s)).collect();
-        let taken = |candidate: &str| {
-            let same = |c: &str| c.eq_ignore_ascii_case(candidate);
-            states.iter().any(|s| same(s))
-                || self.outputs.iter().any(|o| o.columns().iter().any(|c| same(c)))
-                || gathered.columns.iter().any(|c| same(c))
-        };
-        first_free(name, taken)
     }
 
     /// `name`, else `name_VIEW`, ...: the first that no output has.
