@@ -20,9 +20,9 @@ fn scalar_where_a_vector_is_needed() {
 }
 
 #[test]
-fn frame_oriented_twice() {
+fn orientation_loop() {
     insta::assert_snapshot!(rendered(
-        "NEWTONIAN N\nFRAMES A\nVARIABLES Q1, Q2\nSIMPROT(N, A, 1, Q1)\nSIMPROT(N, A, 2, Q2)\n"
+        "NEWTONIAN N\nFRAMES A, B\nVARIABLES Q1, Q2\nSIMPROT(N, A, 1, Q1)\nSIMPROT(A, B, 2, Q2)\nSIMPROT(B, N, 3, Q1)\n"
     ));
 }
 

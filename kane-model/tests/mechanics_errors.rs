@@ -3,29 +3,54 @@
 use kane_model::mechanics::{MechanicsError, Model, Orientation, Vector};
 
 #[test]
-fn a_frame_oriented_twice() {
+fn a_frame_oriented_again_takes_the_later_orientation() {
     let mut m = Model::new("N");
     let n = m.newtonian();
     let a = m.add_frame("A").unwrap();
     let q = m.ar.variable("q").unwrap();
     m.orient(a, n, Orientation::Axis { axis: 3, angle: q }).unwrap();
-    let err = m.orient(a, n, Orientation::Axis { axis: 1, angle: q }).unwrap_err();
-    assert_eq!(err, MechanicsError::FrameOrientedTwice { frame: "A".into(), parent: "N".into() });
-    assert_eq!(err.to_string(), "frame A is already oriented relative to N; a frame is oriented once");
+    let first = m.dcm(n, a).unwrap();
+    m.orient(a, n, Orientation::Axis { axis: 1, angle: q }).unwrap();
+    let later = m.dcm(n, a).unwrap();
+    assert_ne!(first, later);
+    assert_eq!(later[0][0], m.ar.one(), "a rotation about N1 keeps N1");
 }
 
 #[test]
-fn a_cycle_of_orientations() {
+fn a_loop_of_orientations() {
     let mut m = Model::new("N");
     let a = m.add_frame("A").unwrap();
     let b = m.add_frame("B").unwrap();
+    let c = m.add_frame("C").unwrap();
     let q = m.ar.variable("q").unwrap();
     m.orient(b, a, Orientation::Axis { axis: 3, angle: q }).unwrap();
-    let err = m.orient(a, b, Orientation::Axis { axis: 3, angle: q }).unwrap_err();
+    m.orient(c, b, Orientation::Axis { axis: 3, angle: q }).unwrap();
+    let err = m.orient(a, c, Orientation::Axis { axis: 3, angle: q }).unwrap_err();
     assert!(
-        matches!(&err, MechanicsError::OrientationCycle { frame, parent } if frame == "A" && parent == "B")
+        matches!(&err, MechanicsError::OrientationCycle { frame, parent } if frame == "A" && parent == "C")
     );
-    assert!(err.to_string().contains("makes a cycle"), "{err}");
+    assert!(err.to_string().contains("closes a loop"), "{err}");
+}
+
+#[test]
+fn a_tree_written_from_its_leaves_turns_around() {
+    // N -> F, then A -> B -> C, then C -> F: the chain A, B, C hangs from F.
+    let mut m = Model::new("N");
+    let n = m.newtonian();
+    let [f, a, b, c] = ["F", "A", "B", "C"].map(|x| m.add_frame(x).unwrap());
+    let q: Vec<_> = (1..=4).map(|i| m.ar.variable(&format!("q{i}")).unwrap()).collect();
+    m.orient(f, n, Orientation::Axis { axis: 3, angle: q[0] }).unwrap();
+    m.orient(b, a, Orientation::Axis { axis: 3, angle: q[1] }).unwrap();
+    m.orient(c, b, Orientation::Axis { axis: 3, angle: q[2] }).unwrap();
+    m.orient(f, c, Orientation::Axis { axis: 3, angle: q[3] }).unwrap();
+    // N_A is a rotation about N3 by q1 - q4 - q3 - q2.
+    let d = m.dcm(n, a).unwrap();
+    let sum = m.ar.add(&[q[1], q[2], q[3]]).unwrap();
+    let angle = m.ar.sub(q[0], sum).unwrap();
+    let at = |m: &Model, e| m.ar.eval(&[e], |s| Some(0.1 * (s.index() as f64 + 1.0))).unwrap()[0];
+    let (cos, sin) = (m.ar.cos(angle).unwrap(), m.ar.sin(angle).unwrap());
+    assert!((at(&m, d[0][0]) - at(&m, cos)).abs() < 1e-14);
+    assert!((at(&m, d[1][0]) - at(&m, sin)).abs() < 1e-14);
 }
 
 #[test]

@@ -21,8 +21,10 @@ impl Expr {
             ExprKind::Number { .. } | ExprKind::Name { .. } => false,
             ExprKind::Call { args, .. } | ExprKind::Index { args, .. } => args.iter().any(|a| a.any(found)),
             ExprKind::Matrix(rows) => rows.iter().flatten().any(|a| a.any(found)),
-            ExprKind::Neg(a) | ExprKind::NamedArg(_, a) => a.any(found),
-            ExprKind::Binary(_, a, b) | ExprKind::Range(a, b) => a.any(found) || b.any(found),
+            ExprKind::Neg(a) => a.any(found),
+            ExprKind::Binary(_, a, b) | ExprKind::Range(a, b) | ExprKind::NamedArg(a, b) => {
+                a.any(found) || b.any(found)
+            }
         }
     }
 }
@@ -83,8 +85,8 @@ pub enum ExprKind {
     Binary(BinOp, Box<Expr>, Box<Expr>),
     /// `a:b` in arguments.
     Range(Box<Expr>, Box<Expr>),
-    /// `X = value` in arguments.
-    NamedArg(String, Box<Expr>),
+    /// `X = value` in arguments (`Q1' = 0`, `SIN(X) = S`): what is replaced, and by what.
+    NamedArg(Box<Expr>, Box<Expr>),
 }
 
 /// Kinds of declaration statements.
@@ -194,11 +196,11 @@ pub enum StmtKind {
     /// upper-cased; its arguments are not kept.
     Session(String),
     /// `UNITS a = unit, ...`.
-    Units(Vec<(String, Span, Expr)>),
+    Units(Vec<UnitsItem>),
     /// `INPUT a = value [unit], ...`.
     Input(Vec<InputItem>),
     /// `OUTPUT a [unit], ...`.
-    Output(Vec<(String, Span, Option<String>)>),
+    Output(Vec<OutputItem>),
     /// `CODE KIND(args) file`.
     Code {
         /// DYNAMICS, ALGEBRAIC, NONLINEAR, ODE.
@@ -208,6 +210,8 @@ pub enum StmtKind {
         /// The rest of the line (file name).
         file: String,
     },
+    /// `RUN FILE.AL`: another model file's statements, run here.
+    Run(String),
     /// An assignment.
     Assign {
         /// The target.
@@ -219,6 +223,32 @@ pub enum StmtKind {
     },
     /// A bare expression or command (`KANE()`, `SIMPROT(A,B,1,Q)`, `EXPAND(E)`).
     Expr(Expr),
+}
+
+/// A UNITS entry: one name and its unit (`[A, B] = M` gives one entry each).
+#[derive(Clone, Debug, PartialEq)]
+pub struct UnitsItem {
+    /// The name, with its primes.
+    pub name: String,
+    /// The unit's text, upper-cased, `.` as `*` (`KG*M^2/S`).
+    pub unit: String,
+    /// Where the unit is written.
+    pub span: Span,
+    /// The unit's words as written, each with where it is.
+    pub words: Vec<(String, Span)>,
+}
+
+/// An OUTPUT entry: a name (`Q1`, `U1'`, `L>`) or an expression (`KE + PE`, `ZERO[1]`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct OutputItem {
+    /// The name, or the expression's text without spaces.
+    pub name: String,
+    /// Where the item is in the file.
+    pub span: Span,
+    /// The unit tag after it, if any.
+    pub unit: Option<String>,
+    /// The expression, for an item that is not a plain name.
+    pub expr: Option<Expr>,
 }
 
 /// An INPUT entry.

@@ -76,26 +76,60 @@ pub fn line_column(src: &str, offset: usize) -> (usize, usize) {
     (line, col)
 }
 
+/// Where one file's text is in a report's source: the model file, or a file it runs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SourcePart {
+    /// The bytes of the source that are this file's text.
+    pub range: Span,
+    /// The file's name (for a macro, with the call it came from).
+    pub file: String,
+}
+
 /// Diagnostics of one file, displayable as `file:line:col: error: message` lines (warnings and
 /// notes likewise) and renderable with source excerpts.
 #[derive(Clone, Debug)]
 pub struct Report {
     /// File name as given.
     pub file: String,
-    /// Its text.
+    /// Its text, followed by the text of each file it runs.
     pub source: String,
     /// The errors, in source order.
     pub diagnostics: Vec<Diagnostic>,
+    /// The files run from the model file, with where their text is in `source`.
+    pub parts: Vec<SourcePart>,
+}
+
+impl Report {
+    /// A report on `file`, whose text is `source`, of `diagnostics`.
+    pub fn new(file: &str, source: &str, diagnostics: Vec<Diagnostic>) -> Report {
+        Report { file: file.to_string(), source: source.to_string(), diagnostics, parts: Vec::new() }
+    }
+
+    /// The file holding byte `offset` of the source, its text, and where that text starts.
+    fn part_of(&self, offset: usize) -> (&str, &str, usize) {
+        match self.parts.iter().skip(1).find(|p| p.range.contains(&offset) || p.range.end == offset) {
+            Some(p) => (&p.file, &self.source[p.range.clone()], p.range.start),
+            None => {
+                let end = self.parts.first().map_or(self.source.len(), |p| p.range.end);
+                (&self.file, &self.source[..end.min(self.source.len())], 0)
+            }
+        }
+    }
+
+    /// `file:line:col` of byte `offset` of the source.
+    fn location(&self, offset: usize) -> String {
+        let (file, text, start) = self.part_of(offset);
+        let (line, col) = line_column(text, offset.saturating_sub(start));
+        format!("{file}:{line}:{col}")
+    }
 }
 
 impl fmt::Display for Report {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         for d in self.diagnostics.iter().take(MAX_SHOWN) {
-            let (line, col) = line_column(&self.source, d.span.start);
-            writeln!(f, "{}:{line}:{col}: {}: {}", self.file, d.severity.label(), d.message)?;
+            writeln!(f, "{}: {}: {}", self.location(d.span.start), d.severity.label(), d.message)?;
             for (span, note) in &d.notes {
-                let (line, col) = line_column(&self.source, span.start);
-                writeln!(f, "{}:{line}:{col}: note: {note}", self.file)?;
+                writeln!(f, "{}: note: {note}", self.location(span.start))?;
             }
             if let Some(h) = &d.help {
                 writeln!(f, "  help: {h}")?;
@@ -114,6 +148,8 @@ struct MietteDiag<'a> {
     d: &'a Diagnostic,
     src: &'a NamedSource<String>,
     location: String,
+    /// Where the text `src` holds starts in the report's source.
+    start: usize,
 }
 
 impl fmt::Debug for MietteDiag<'_> {
@@ -144,13 +180,19 @@ impl miette::Diagnostic for MietteDiag<'_> {
         Some(self.src)
     }
     fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
-        let len = self.src.inner().len().max(1);
-        let source_span = move |s: &Span| SourceSpan::from(s.start..s.end.max(s.start + 1).min(len));
+        let len = self.src.inner().len();
+        let start = self.start;
+        let inside = move |s: &Span| s.start >= start && s.start <= start + len;
+        let source_span = move |s: &Span| {
+            let (a, b) = (s.start - start, s.end.saturating_sub(start));
+            SourceSpan::from(a.min(len)..b.max(a + 1).min(len.max(1)))
+        };
         let here = LabeledSpan::new_with_span(Some("here".into()), source_span(&self.d.span));
         let notes = self
             .d
             .notes
             .iter()
+            .filter(move |(s, _)| inside(s))
             .map(move |(s, n)| LabeledSpan::new_with_span(Some(n.clone()), source_span(s)));
         Some(Box::new(std::iter::once(here).chain(notes)))
     }
@@ -159,14 +201,18 @@ impl miette::Diagnostic for MietteDiag<'_> {
 impl Report {
     /// Each error rendered with the source line, a marker under the fault and the hint.
     pub fn render(&self) -> String {
-        let src = NamedSource::new(self.file.clone(), self.source.clone());
         let handler = GraphicalReportHandler::new_themed(GraphicalTheme::unicode_nocolor());
         let mut out = String::new();
         for d in self.diagnostics.iter().take(MAX_SHOWN) {
-            let (line, col) = line_column(&self.source, d.span.start);
-            let md = MietteDiag { d, src: &src, location: format!("{}:{line}:{col}", self.file) };
+            let (file, text, start) = self.part_of(d.span.start);
+            let src = NamedSource::new(file, text.to_string());
+            let md = MietteDiag { d, src: &src, location: self.location(d.span.start), start };
             if handler.render_report(&mut out, &md).is_err() {
                 out.push_str(&format!("{md}\n"));
+            }
+            // Notes in another file than the error are named by place.
+            for (span, note) in d.notes.iter().filter(|(s, _)| self.part_of(s.start).2 != start) {
+                out.push_str(&format!("  note: {}: {note}\n", self.location(span.start)));
             }
         }
         if let Some(rest) = self.not_shown() {

@@ -19,6 +19,7 @@ mod compare;
 mod diagnostic;
 mod eoms;
 pub mod event;
+mod include;
 mod interp;
 mod parser;
 mod present;
@@ -32,7 +33,7 @@ pub mod units;
 pub use ast::{BinOp, Expr, ExprKind, Stmt, StmtKind};
 pub use check::{bookkeeping_summary, check, check_for_generation, Checked, OVERRIDE_MARKER};
 pub use compare::{compare, Comparison, Outcome, Relation};
-pub use diagnostic::{line_column, Diagnostic, Report, Severity};
+pub use diagnostic::{line_column, Diagnostic, Report, Severity, SourcePart};
 pub use eoms::{printed_eoms, EomsError, EomsText, PrintedEoms, Shown, COLLECT_BUDGET, COLLECT_TOTAL};
 pub use interp::value::Value;
 pub use interp::{Bookkeeping, CodeRequest, InputValue, LoadedModel};
@@ -48,7 +49,7 @@ pub fn parse(file: &str, source: &str) -> Result<Vec<Stmt>, Report> {
     if errors.is_empty() {
         Ok(stmts)
     } else {
-        Err(Report { file: file.to_string(), source: source.to_string(), diagnostics: errors })
+        Err(Report::new(file, source, errors))
     }
 }
 
@@ -65,18 +66,25 @@ pub fn load_for_generation(file: &str, source: &str) -> Result<LoadedModel, Repo
 }
 
 fn load_with(file: &str, source: &str, defer: bool) -> Result<LoadedModel, Report> {
-    let (stmts, mut errors) = parser::parse(source);
+    let (model, errors) = run_file(file, source, defer);
+    if errors.is_empty() {
+        Ok(model)
+    } else {
+        Err(model.report(file, errors))
+    }
+}
+
+/// Runs a model file to its end whatever fails: the model as far as it was built, and every
+/// error (in source order).
+fn run_file(file: &str, source: &str, defer: bool) -> (LoadedModel, Vec<Diagnostic>) {
+    let include::Expanded { source, stmts, mut errors, parts } = include::expand(file, source);
     let mut it = interp::Interpreter::new();
     it.defer = defer;
-    it.run(&stmts, source, &errors);
+    it.run(&stmts, &source, &errors);
     if errors.is_empty() && it.errors.is_empty() {
         it.put_specified_formulas();
     }
     errors.extend(std::mem::take(&mut it.errors));
-    if errors.is_empty() {
-        Ok(it.finish())
-    } else {
-        errors.sort_by_key(|d| d.span.start);
-        Err(Report { file: file.to_string(), source: source.to_string(), diagnostics: errors })
-    }
+    errors.sort_by_key(|d| d.span.start);
+    (it.finish(source, parts), errors)
 }

@@ -1,10 +1,13 @@
 //! Recursive-descent parser: one statement per line; an error skips to the next line so that
 //! every mistake in a file is reported in one run.
 
-use super::ast::{AssignOp, BinOp, DeclItem, DeclKind, Expr, ExprKind, InputItem, Stmt, StmtKind, Target};
+use super::ast::{
+    AssignOp, BinOp, DeclItem, DeclKind, Expr, ExprKind, InputItem, OutputItem, Stmt, StmtKind, Target,
+    UnitsItem,
+};
 use super::diagnostic::Diagnostic;
 use super::sum_tree;
-use super::token::{lex, Span, Tok, Token};
+use super::token::{lex, lex_from, Span, Tok, Token};
 
 /// Deepest nesting an expression may have: parentheses, brackets, function calls, unary signs,
 /// powers and the factors of one product each count one level. Evaluating deeper expressions
@@ -13,7 +16,12 @@ pub const MAX_NESTING: usize = 256;
 
 /// Parses a whole program; returns the statements and every syntax error found.
 pub fn parse(src: &str) -> (Vec<Stmt>, Vec<Diagnostic>) {
-    let (tokens, lex_errors) = lex(src);
+    parse_from(src, 0)
+}
+
+/// As [`parse`], for the text of `src` from byte `from` on (spans stay offsets into `src`).
+pub fn parse_from(src: &str, from: usize) -> (Vec<Stmt>, Vec<Diagnostic>) {
+    let (tokens, lex_errors) = lex_from(src, from);
     let mut bad_lines: Vec<usize> = Vec::new();
     let mut lexed: Vec<Diagnostic> = Vec::new();
     for e in lex_errors {
@@ -254,6 +262,9 @@ impl<'a> Parser<'a> {
         if word == "UNITSYSTEM" {
             return self.unit_system_stmt();
         }
+        if word == "RUN" && next.is_some() {
+            return Ok(self.run_stmt());
+        }
         if SESSION_COMMANDS.contains(&word.as_str()) {
             return Ok(self.session_stmt(word));
         }
@@ -295,6 +306,14 @@ impl<'a> Parser<'a> {
         Ok(StmtKind::UnitSystem(out))
     }
 
+    /// `RUN FILE.AL`: the rest of the statement is the file name.
+    fn run_stmt(&mut self) -> StmtKind {
+        let from = self.toks[self.pos + 1].span.start;
+        let to = self.toks[self.toks.len() - 1].span.end;
+        self.pos = self.toks.len();
+        StmtKind::Run(self.src[from..to].trim().to_string())
+    }
+
     /// A command of Autolev's session (ENCODE, SAVE, PAUSE, AUTOZ ON, ...): the rest of the
     /// statement is its arguments, which change nothing here.
     fn session_stmt(&mut self, command: String) -> StmtKind {
@@ -309,7 +328,7 @@ impl<'a> Parser<'a> {
         loop {
             let (n, _, span) = self.name()?;
             self.expect('=', "after the body or particle name in MASS")?;
-            out.push((n, span, self.expr()?));
+            out.push((n, span, self.arg()?));
             if !self.eat(',') {
                 break;
             }
@@ -331,20 +350,54 @@ impl<'a> Parser<'a> {
         };
         let mut args = Vec::new();
         while self.eat(',') {
-            args.push(self.expr()?);
+            args.push(self.arg()?);
         }
         Ok(StmtKind::Inertia { body, body_span, frame, args })
     }
 
-    /// `UNITS NAME = unit, ...`.
+    /// `UNITS NAME = unit, [A, B] = unit, ...`: a unit is unit words joined by `*`, `/`, `^`
+    /// and `.` (`KG.M^2/S`).
     fn units_stmt(&mut self) -> PResult<StmtKind> {
         self.pos += 1;
         let mut out = Vec::new();
         loop {
-            let (n, _, span) = self.name()?;
-            self.primes();
+            let mut names = Vec::new();
+            if self.eat('[') {
+                loop {
+                    let (n, _, span) = self.name()?;
+                    let p = self.primes();
+                    names.push((format!("{n}{}", "'".repeat(p as usize)), span));
+                    if !self.eat(',') {
+                        break;
+                    }
+                }
+                self.expect(']', "to close the list of names in UNITS")?;
+            } else {
+                let (n, _, span) = self.name()?;
+                let p = self.primes();
+                names.push((format!("{n}{}", "'".repeat(p as usize)), span));
+            }
             self.expect('=', "after the name in UNITS")?;
-            out.push((n, span, self.expr()?));
+            let from = self.pos;
+            let start = self.start();
+            let unit = self.unit_text();
+            if unit.is_empty() {
+                return Err(self.unexpected("expected a unit"));
+            }
+            let words: Vec<(String, Span)> = self.toks[from..self.pos]
+                .iter()
+                .filter_map(|t| match &t.tok {
+                    Tok::Name { text, .. } => Some((text.clone(), t.span.clone())),
+                    _ => None,
+                })
+                .collect();
+            let span = start..self.end();
+            out.extend(names.into_iter().map(|(name, _)| UnitsItem {
+                name,
+                unit: unit.clone(),
+                span: span.clone(),
+                words: words.clone(),
+            }));
             if !self.eat(',') {
                 break;
             }
@@ -378,6 +431,11 @@ impl<'a> Parser<'a> {
         if !matches!(self.peek(), Some(Tok::Name { .. })) {
             return None;
         }
+        Some(self.unit_text())
+    }
+
+    /// The unit text from here to the next `,` outside parentheses (see [`Self::unit_tag`]).
+    fn unit_text(&mut self) -> String {
         let mut text = String::new();
         let mut depth = 0;
         while let Some(t) = self.peek() {
@@ -396,19 +454,29 @@ impl<'a> Parser<'a> {
             });
             self.pos += 1;
         }
-        Some(text)
+        text
     }
 
-    /// `OUTPUT NAME [UNIT], ...`.
+    /// `OUTPUT NAME [UNIT], ...`; an item may be an expression (`KE+PE`, `ZERO[1]`, `DET(J)`).
     fn output_stmt(&mut self) -> PResult<StmtKind> {
         self.pos += 1;
         let mut out = Vec::new();
         loop {
+            let start = self.start();
             let (n, _, span) = self.name()?;
             let p = self.primes();
-            let n = format!("{n}{}", "'".repeat(p as usize));
-            let unit = self.unit_tag();
-            out.push((n, span, unit));
+            let plain = self.at_end() || self.is_punct(',') || matches!(self.peek(), Some(Tok::Name { .. }));
+            let item = if plain {
+                let name = format!("{n}{}", "'".repeat(p as usize));
+                OutputItem { name, span, unit: self.unit_tag(), expr: None }
+            } else {
+                self.pos -= 1 + p as usize;
+                let e = self.expr()?;
+                let text: String =
+                    self.src[start..self.end()].chars().filter(|c| !c.is_whitespace()).collect();
+                OutputItem { name: text, span: start..self.end(), unit: self.unit_tag(), expr: Some(e) }
+            };
+            out.push(item);
             if !self.eat(',') {
                 break;
             }
@@ -486,6 +554,23 @@ impl<'a> Parser<'a> {
         Ok(items)
     }
 
+    /// `DU{4:6}'` in an expression: the row `[DU4', DU5', DU6']` (`{3}` is `{1:3}`).
+    fn name_list(&mut self, name: String, start: usize) -> PResult<Expr> {
+        self.expect('{', "to open the index range")?;
+        let lo = self.integer()?;
+        let (lo, hi) = if self.eat(':') { (lo, self.integer()?) } else { (1, lo) };
+        self.expect('}', "to close the index range")?;
+        let primes = self.primes();
+        let span = start..self.end();
+        let row = (lo..=hi)
+            .map(|i| Expr {
+                kind: ExprKind::Name { name: format!("{name}{i}"), primes, suffix: 0 },
+                span: span.clone(),
+            })
+            .collect();
+        Ok(Expr { kind: ExprKind::Matrix(vec![row]), span })
+    }
+
     fn integer(&mut self) -> PResult<i64> {
         match self.peek() {
             Some(Tok::Number { text, suffix: 0 }) => {
@@ -545,14 +630,21 @@ impl<'a> Parser<'a> {
         Ok(out)
     }
 
+    /// An argument: `e`, a range `lo:hi`, or a substitution `x = value` (`Q1' = 0`,
+    /// `SIN(X) = S`, `Q1 = 0:DQ1`).
     fn arg(&mut self) -> PResult<Expr> {
         let start = self.start();
-        if let (Some(Tok::Name { text, suffix: 0 }), Some(Tok::Punct('='))) = (self.peek(), self.peek_at(1)) {
-            let n = text.clone();
-            self.pos += 2;
-            let v = self.expr()?;
-            return Ok(Expr { kind: ExprKind::NamedArg(n, Box::new(v)), span: start..self.end() });
+        let e = self.range_or_expr()?;
+        if self.eat('=') {
+            let v = self.range_or_expr()?;
+            return Ok(Expr { kind: ExprKind::NamedArg(Box::new(e), Box::new(v)), span: start..self.end() });
         }
+        Ok(e)
+    }
+
+    /// `e` or `lo:hi`.
+    fn range_or_expr(&mut self) -> PResult<Expr> {
+        let start = self.start();
         let e = self.expr()?;
         if self.eat(':') {
             let hi = self.expr()?;
@@ -667,6 +759,9 @@ impl<'a> Parser<'a> {
                     let args = self.nested(Self::args)?;
                     self.expect(']', "to close the index")?;
                     return Ok(Expr { kind: ExprKind::Index { name, args }, span: start..self.end() });
+                }
+                if suffix == 0 && self.is_punct('{') && self.start() == self.end() {
+                    return self.name_list(name, start);
                 }
                 let primes = self.primes();
                 Ok(Expr { kind: ExprKind::Name { name, primes, suffix }, span: start..self.end() })

@@ -7,7 +7,6 @@ use crate::expr::{EquivalenceConfig, SampleAround, SymbolId, SymbolKind};
 
 use super::diagnostic::{Diagnostic, Report};
 use super::interp::Interpreter;
-use super::parser;
 use super::present::Presenter;
 
 /// A model file after its run, with the interpreter that ran it.
@@ -17,21 +16,22 @@ pub(crate) struct Session {
 
 /// A report on `file` holding `diagnostics`.
 pub(crate) fn report(file: &str, source: &str, diagnostics: Vec<Diagnostic>) -> Report {
-    Report { file: file.to_string(), source: source.to_string(), diagnostics }
+    Report::new(file, source, diagnostics)
 }
 
 impl Session {
     /// Parses and runs `source`; every error is reported, with its place in `file`.
     pub(crate) fn open(file: &str, source: &str) -> Result<Session, Report> {
-        let (stmts, mut errors) = parser::parse(source);
+        let super::include::Expanded { source, stmts, mut errors, parts } =
+            super::include::expand(file, source);
         let mut it = Interpreter::new();
         if errors.is_empty() {
-            it.run(&stmts, source, &[]);
+            it.run(&stmts, &source, &[]);
             errors = std::mem::take(&mut it.errors);
         }
         if !errors.is_empty() {
             errors.sort_by_key(|d| d.span.start);
-            return Err(report(file, source, errors));
+            return Err(Report { file: file.to_string(), source, diagnostics: errors, parts });
         }
         Ok(Session { it })
     }

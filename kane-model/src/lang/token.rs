@@ -53,10 +53,15 @@ pub struct LexError {
 /// Splits `src` into tokens: `%` starts a comment, `&` at a line end continues the statement.
 /// Unknown characters are skipped and reported, so every line is still parsed.
 pub fn lex(src: &str) -> (Vec<Token>, Vec<LexError>) {
+    lex_from(src, 0)
+}
+
+/// As [`lex`], for the text of `src` from byte `from` on (spans stay offsets into `src`).
+pub fn lex_from(src: &str, from: usize) -> (Vec<Token>, Vec<LexError>) {
     let mut errors = Vec::new();
     let bytes = src.as_bytes();
     let mut out = Vec::new();
-    let mut i = 0;
+    let mut i = from;
     let suffix = |i: &mut usize| -> u8 {
         let mut n = 0;
         while *i < bytes.len() && bytes[*i] == b'>' && n < 2 {
@@ -65,9 +70,45 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<LexError>) {
         }
         n
     };
+    // Set by a `&` written right after a name or number: a name or number starting the next
+    // line continues that token (`THET&` then `A)` is `THETA)`).
+    let mut glue = false;
     while i < bytes.len() {
         let c = bytes[i];
         let start = i;
+        let after_number = matches!(out.last(), Some(Token { tok: Tok::Number { .. }, .. }));
+        if glue && (c.is_ascii_alphanumeric() || c == b'_') {
+            if let Some(Token {
+                tok: Tok::Name { text, suffix: 0 } | Tok::Number { text, suffix: 0 },
+                span,
+            }) = out.last_mut()
+            {
+                while i < bytes.len()
+                    && (bytes[i].is_ascii_alphanumeric()
+                        || bytes[i] == b'_'
+                        || (after_number && bytes[i] == b'.'))
+                {
+                    i += 1;
+                }
+                text.push_str(&src[start..i]);
+                span.end = i;
+                let joined = text.clone();
+                let s = suffix(&mut i);
+                let last = out.len() - 1;
+                out[last].span.end = i;
+                let is_name = joined.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_');
+                out[last].tok = if is_name {
+                    Tok::Name { text: joined, suffix: s }
+                } else {
+                    Tok::Number { text: joined, suffix: s }
+                };
+                glue = false;
+                continue;
+            }
+        }
+        if !matches!(c, b' ' | b'\t' | b'\r') {
+            glue = false;
+        }
         match c {
             b'%' => {
                 while i < bytes.len() && bytes[i] != b'\n' {
@@ -76,6 +117,7 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<LexError>) {
             }
             b'&' => {
                 // Continuation: skip to the end of the line, newline included.
+                glue = i > 0 && (bytes[i - 1].is_ascii_alphanumeric() || matches!(bytes[i - 1], b'_' | b'.'));
                 i += 1;
                 while i < bytes.len() && bytes[i] != b'\n' {
                     if !bytes[i].is_ascii_whitespace() && bytes[i] != b'%' {
@@ -173,6 +215,16 @@ mod tests {
     fn continuation_joins_lines() {
         let t = toks("E = A&\n+ B");
         assert!(!t[..t.len() - 1].contains(&Tok::Newline));
+    }
+
+    #[test]
+    fn a_name_broken_by_a_continuation_is_one_name() {
+        let t = toks("X = SIN(THET&\n   A) + Q&\n  6 + B &\n C^1.&\n5");
+        assert_eq!(t[4], Tok::Name { text: "THETA".into(), suffix: 0 });
+        assert_eq!(t[7], Tok::Name { text: "Q6".into(), suffix: 0 });
+        assert_eq!(t[9], Tok::Name { text: "B".into(), suffix: 0 }, "a space before & keeps names apart");
+        assert_eq!(t[10], Tok::Name { text: "C".into(), suffix: 0 });
+        assert_eq!(t[12], Tok::Number { text: "1.5".into(), suffix: 0 });
     }
 
     #[test]

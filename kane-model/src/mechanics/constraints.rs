@@ -28,7 +28,7 @@ impl Model {
         }
         // Constraints may be written with coordinate derivatives: apply q' = ... first.
         self.constraints = None;
-        let qdot = self.dependent_map();
+        let qdot = self.kinematics_map();
         let residuals = self.ar.subs_many(constraints, &qdot)?;
         // Auxiliary speeds are zero in every motion the constraints restrict.
         let auxiliary = self.auxiliary_zero_map()?;
@@ -121,7 +121,7 @@ impl Model {
     }
 
     /// Substitution of each declared coordinate derivative `q'` by its kinematic equation.
-    pub(crate) fn dependent_map(&mut self) -> rustc_hash::FxHashMap<ExprId, ExprId> {
+    pub(crate) fn kinematics_map(&mut self) -> rustc_hash::FxHashMap<ExprId, ExprId> {
         let mut map = rustc_hash::FxHashMap::default();
         let rules: Vec<(SymbolId, ExprId)> = self.kinematics.iter().map(|(q, r)| (*q, *r)).collect();
         for (q, rhs) in rules {
@@ -134,9 +134,18 @@ impl Model {
         map
     }
 
+    /// The motion constraints as `(u_d, A_d, A_i, b)` with `A_d u_d + A_i u_i + b = 0` over
+    /// the independent speeds `u_i` in their order, when the model has any.
+    pub(crate) fn motion_constraint_rows(
+        &self,
+    ) -> Option<(Vec<SymbolId>, Vec<Vec<ExprId>>, Vec<Vec<ExprId>>, Vec<ExprId>)> {
+        let c = self.constraints.as_ref()?;
+        Some((c.dependent.clone(), c.a_dependent.clone(), c.a_independent.clone(), c.b.clone()))
+    }
+
     /// `v` with the kinematic equations applied.
     pub(crate) fn eliminate_dependent_vector(&mut self, v: &super::Vector) -> Result<super::Vector> {
-        let map = self.dependent_map();
+        let map = self.kinematics_map();
         if map.is_empty() {
             return Ok(v.clone());
         }

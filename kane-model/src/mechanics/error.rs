@@ -13,14 +13,6 @@ pub enum MechanicsError {
     /// A name is used twice for frames, points or bodies.
     #[error("`{0}` is already defined")]
     Duplicate(String),
-    /// A frame was given a second orientation.
-    #[error("frame {frame} is already oriented relative to {parent}; a frame is oriented once")]
-    FrameOrientedTwice {
-        /// The frame.
-        frame: String,
-        /// Its existing parent.
-        parent: String,
-    },
     /// An angular velocity assigned to a frame oriented through a chain does not determine
     /// its coordinates' rates.
     #[error(
@@ -37,10 +29,8 @@ pub enum MechanicsError {
         /// Their names.
         names: String,
     },
-    /// Orienting a frame would close a cycle of orientations.
-    #[error(
-        "orienting {frame} relative to {parent} makes a cycle: {parent} is already oriented through {frame}"
-    )]
+    /// Orienting a frame would close a loop of orientations.
+    #[error("orienting {frame} relative to {parent} closes a loop: the two are already related through other frames")]
     OrientationCycle {
         /// The frame.
         frame: String,

@@ -8,56 +8,134 @@ use super::model::{Model, Orientation};
 use super::vector::Vector;
 
 impl Model {
-    /// Orients `frame` relative to `parent`; a frame is oriented once, and never in a cycle.
+    /// Orients `frame` relative to `parent` (Autolev's SIMPROT, DIRCOS, `A_B = [...]`).
+    ///
+    /// Orientations form a tree, whichever of the two frames each statement names first: a frame
+    /// already oriented in another tree turns that tree around (the Newtonian frame's tree stays
+    /// rooted at it), and orienting two frames already related directly replaces that relation,
+    /// as a later Autolev statement replaces an earlier one. Relating two frames already related
+    /// through others would close a loop: an error.
     pub fn orient(&mut self, frame: FrameId, parent: FrameId, orientation: Orientation) -> Result<()> {
-        if let Some(p) = self.frames[frame.index()].parent {
-            return Err(MechanicsError::FrameOrientedTwice {
-                frame: self.frame_name(frame).to_string(),
-                parent: self.frame_name(p).to_string(),
-            });
+        match self.link(frame, parent)? {
+            Link::Child => self.frames[frame.index()].orientation = Some(orientation),
+            Link::Parent => {
+                let inverse = self.inverse_orientation(orientation)?;
+                self.frames[parent.index()].orientation = Some(inverse);
+            }
         }
-        if frame == self.newtonian || self.ancestors(parent).contains(&frame) {
-            return Err(MechanicsError::OrientationCycle {
-                frame: self.frame_name(frame).to_string(),
-                parent: self.frame_name(parent).to_string(),
-            });
-        }
-        let f = &mut self.frames[frame.index()];
-        f.parent = Some(parent);
-        f.orientation = Some(orientation);
+        self.clear_orientation_caches();
         Ok(())
     }
 
-    /// Sets the angular velocity of `frame` in its parent explicitly (Autolev `W_B_A> = ...`).
+    /// Sets the angular velocity of `frame` relative to its parent explicitly.
     pub fn set_angular_velocity(&mut self, frame: FrameId, w: Vector) {
         self.frames[frame.index()].ang_vel = Some(w);
         self.clear_kinematics_caches();
     }
 
-    /// Sets the angular velocity of `frame` in `reference`; a frame not yet oriented is attached
-    /// to `reference` with that angular velocity and no orientation (its direction cosines are
-    /// then unknown, and asking for them is an error).
-    pub fn set_angular_velocity_in(&mut self, frame: FrameId, reference: FrameId, w: Vector) -> Result<()> {
-        match self.frames[frame.index()].parent {
-            Some(p) if p == reference => {}
-            Some(p) => {
-                return Err(MechanicsError::FrameOrientedTwice {
-                    frame: self.frame_name(frame).to_string(),
-                    parent: self.frame_name(p).to_string(),
-                })
-            }
-            None => {
-                if frame == self.newtonian || self.ancestors(reference).contains(&frame) {
-                    return Err(MechanicsError::OrientationCycle {
-                        frame: self.frame_name(frame).to_string(),
-                        parent: self.frame_name(reference).to_string(),
-                    });
-                }
-                self.frames[frame.index()].parent = Some(reference);
-            }
+    /// Sets the angular velocity of `frame` in `reference` (Autolev `W_B_A> = ...`) when the two
+    /// are related directly or not yet at all; a frame not yet oriented is related to
+    /// `reference` with that angular velocity and no orientation (its direction cosines are then
+    /// unknown, and asking for them is an error). Returns the frame whose angular velocity in
+    /// its parent was set: `frame`, or `reference` (with `-w`) where the tree has `frame` above.
+    pub fn set_angular_velocity_in(
+        &mut self,
+        frame: FrameId,
+        reference: FrameId,
+        w: Vector,
+    ) -> Result<FrameId> {
+        let (set, w) = match self.link(frame, reference)? {
+            Link::Child => (frame, w),
+            Link::Parent => (reference, self.scale(&w, self.ar.minus_one())?),
+        };
+        self.clear_orientation_caches();
+        self.set_angular_velocity(set, w);
+        Ok(set)
+    }
+
+    /// Whether `frame` and `reference` are related directly (either way round).
+    pub fn frames_related(&self, frame: FrameId, reference: FrameId) -> bool {
+        self.frames[frame.index()].parent == Some(reference)
+            || self.frames[reference.index()].parent == Some(frame)
+    }
+
+    /// Relates `frame` to `parent` in the tree of orientations and says which of the two is the
+    /// child: `frame`, unless `frame` is connected to the Newtonian frame and `parent` is not
+    /// (then `parent`'s tree is turned to hang from `frame`), or the two are related already the
+    /// other way round.
+    fn link(&mut self, frame: FrameId, parent: FrameId) -> Result<Link> {
+        let cycle = || MechanicsError::OrientationCycle {
+            frame: self.frame_name(frame).to_string(),
+            parent: self.frame_name(parent).to_string(),
+        };
+        if frame == parent {
+            return Err(cycle());
         }
-        self.set_angular_velocity(frame, w);
+        if self.frames[frame.index()].parent == Some(parent) {
+            return Ok(Link::Child);
+        }
+        if self.frames[parent.index()].parent == Some(frame) {
+            return Ok(Link::Parent);
+        }
+        let (root_f, root_p) = (self.root(frame), self.root(parent));
+        if root_f == root_p {
+            return Err(cycle());
+        }
+        if root_f == self.newtonian {
+            self.reroot(parent)?;
+            self.frames[parent.index()].parent = Some(frame);
+            return Ok(Link::Parent);
+        }
+        self.reroot(frame)?;
+        self.frames[frame.index()].parent = Some(parent);
+        Ok(Link::Child)
+    }
+
+    /// The root of `frame`'s tree of orientations.
+    fn root(&self, frame: FrameId) -> FrameId {
+        *self.ancestors(frame).last().unwrap_or(&frame)
+    }
+
+    /// Turns `frame`'s tree around so that `frame` is its root: every relation on the way from
+    /// `frame` up to the old root is reversed (orientation inverted, angular velocity negated).
+    fn reroot(&mut self, frame: FrameId) -> Result<()> {
+        let chain = self.ancestors(frame);
+        let mut reversed = Vec::with_capacity(chain.len());
+        for w in chain.windows(2) {
+            let (child, up) = (w[0], w[1]);
+            let f = &self.frames[child.index()];
+            let (orientation, ang_vel) = (f.orientation.clone(), f.ang_vel.clone());
+            let orientation = orientation.map(|o| self.inverse_orientation(o)).transpose()?;
+            let ang_vel = ang_vel.map(|w| self.scale(&w, self.ar.minus_one())).transpose()?;
+            reversed.push((up, child, orientation, ang_vel));
+        }
+        self.frames[frame.index()].parent = None;
+        self.frames[frame.index()].orientation = None;
+        self.frames[frame.index()].ang_vel = None;
+        for (f, parent, orientation, ang_vel) in reversed {
+            let slot = &mut self.frames[f.index()];
+            slot.parent = Some(parent);
+            slot.orientation = orientation;
+            slot.ang_vel = ang_vel;
+        }
+        self.clear_orientation_caches();
         Ok(())
+    }
+
+    /// The orientation of a parent relative to its child, from the child's relative to the
+    /// parent: a simple rotation turns about the opposite axis; anything else is the transposed
+    /// direction cosine matrix.
+    fn inverse_orientation(&mut self, o: Orientation) -> Result<Orientation> {
+        Ok(match o {
+            Orientation::Axis { axis, angle } => Orientation::Axis { axis: -axis, angle },
+            other => Orientation::Dcm(transpose(&self.orientation_dcm(&other)?)),
+        })
+    }
+
+    /// Forgets direction cosines and angular velocities computed for the orientations before.
+    fn clear_orientation_caches(&mut self) {
+        self.dcm_cache.clear();
+        self.clear_kinematics_caches();
     }
 
     /// The frame `frame` is oriented relative to, if any.
@@ -269,7 +347,12 @@ impl Model {
                 b: self.frame_name(self.newtonian).to_string(),
             });
         };
-        Ok(match orientation {
+        self.orientation_dcm(&orientation)
+    }
+
+    /// `parent_i . child_j` of an orientation.
+    fn orientation_dcm(&mut self, orientation: &Orientation) -> Result<Mat3> {
+        Ok(match *orientation {
             Orientation::Axis { axis, angle } => {
                 let angle = if axis < 0 { self.ar.neg(angle)? } else { angle };
                 self.axis_rotation(axis.unsigned_abs(), angle)?
@@ -403,6 +486,14 @@ impl Model {
         let w = self.angular_velocity(b, a)?;
         self.dt_in(&w, a)
     }
+}
+
+/// Which of two frames related by [`Model::orient`] is the child in the tree.
+enum Link {
+    /// The frame named first.
+    Child,
+    /// The frame named second (the relation runs the other way round).
+    Parent,
 }
 
 fn transpose(m: &Mat3) -> Mat3 {

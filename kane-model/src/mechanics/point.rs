@@ -139,13 +139,63 @@ impl Model {
         if point == from {
             return Ok(Vector::zero());
         }
-        // Breadth-first search from `from`; each step remembers the edge it came through.
+        let Some(steps) = self.position_steps(point, from) else {
+            return Err(MechanicsError::NoPositionPath {
+                a: self.point_name(from).to_string(),
+                b: self.point_name(point).to_string(),
+            });
+        };
+        let mut r = Vector::zero();
+        for (k, forward) in steps {
+            let step = self.position_edges[k].2.clone();
+            r = if forward { self.add_vectors(&r, &step)? } else { self.sub_vectors(&r, &step)? };
+        }
+        Ok(r)
+    }
+
+    /// The position relations on the shortest chain from `from` to `point`, each as the pair of
+    /// points it relates (empty when there is none, or the two are one point).
+    pub fn position_path(&self, point: PointId, from: PointId) -> Vec<(PointId, PointId)> {
+        let steps = self.position_steps(point, from).unwrap_or_default();
+        steps.into_iter().map(|(k, _)| (self.position_edges[k].0, self.position_edges[k].1)).collect()
+    }
+
+    /// The points connected to `point` by chains of position relations, `point` included.
+    pub fn position_component(&self, point: PointId) -> Vec<PointId> {
+        let (_, seen) = self.position_search(point, None);
+        (0..self.points.len()).filter(|i| seen[*i]).map(|i| PointId(i as u32)).collect()
+    }
+
+    /// The edges (index, walked forward) from `from` to `point` along the shortest chain.
+    fn position_steps(&self, point: PointId, from: PointId) -> Option<Vec<(usize, bool)>> {
+        let (came, seen) = self.position_search(from, Some(point));
+        if !seen[point.index()] {
+            return None;
+        }
+        let mut steps = Vec::new();
+        let mut p = point;
+        while let Some((prev, k, forward)) = came[p.index()] {
+            steps.push((k, forward));
+            p = prev;
+        }
+        steps.reverse();
+        Some(steps)
+    }
+
+    /// Breadth-first search of the position relations from `from` (until `goal`): for each
+    /// point the edge it was reached through, and which points were reached.
+    #[allow(clippy::type_complexity)]
+    fn position_search(
+        &self,
+        from: PointId,
+        goal: Option<PointId>,
+    ) -> (Vec<Option<(PointId, usize, bool)>>, Vec<bool>) {
         let mut came: Vec<Option<(PointId, usize, bool)>> = vec![None; self.points.len()];
         let mut queue = std::collections::VecDeque::from([from]);
         let mut seen = vec![false; self.points.len()];
         seen[from.index()] = true;
         while let Some(p) = queue.pop_front() {
-            if p == point {
+            if Some(p) == goal {
                 break;
             }
             for (k, (a, b, _)) in self.position_edges.iter().enumerate() {
@@ -163,20 +213,7 @@ impl Model {
                 }
             }
         }
-        if !seen[point.index()] {
-            return Err(MechanicsError::NoPositionPath {
-                a: self.point_name(from).to_string(),
-                b: self.point_name(point).to_string(),
-            });
-        }
-        let mut r = Vector::zero();
-        let mut p = point;
-        while let Some((prev, k, forward)) = came[p.index()] {
-            let step = self.position_edges[k].2.clone();
-            r = if forward { self.add_vectors(&r, &step)? } else { self.sub_vectors(&r, &step)? };
-            p = prev;
-        }
-        Ok(r)
+        (came, seen)
     }
 
     /// Velocity of `point` in `frame` (Autolev `V_P_A>`).

@@ -20,7 +20,8 @@ pub(crate) fn coordinates_without_kinematics(m: &LoadedModel) -> Vec<Diagnostic>
     let mut uses: Vec<(SymbolId, Span, String)> = Vec::new();
     for (i, frame) in model.frames.iter().enumerate() {
         let Some(orientation) = &frame.orientation else { continue };
-        let span = m.sources.orientations.get(&crate::mechanics::FrameId(i as u32)).cloned().unwrap_or(0..0);
+        let span =
+            m.sources.orientation_of(model, crate::mechanics::FrameId(i as u32)).cloned().unwrap_or(0..0);
         for s in model.ar.free_symbols(&orientation_entries(orientation)) {
             uses.push((s, span.clone(), format!("orients {}", frame.name)));
         }

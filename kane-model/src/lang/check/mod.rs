@@ -13,11 +13,14 @@ mod dimensions;
 mod implicit;
 mod loads;
 mod marker;
+mod point_motion;
+mod rotor;
 mod warnings;
 mod zero;
 
 use super::diagnostic::{Report, Severity};
 use super::interp::LoadedModel;
+use consistency::Contradiction;
 
 pub use bookkeeping::bookkeeping_summary;
 pub use marker::MARKER as OVERRIDE_MARKER;
@@ -32,26 +35,36 @@ pub struct Checked {
 
 /// Loads and checks a model file: a velocity, acceleration or angular velocity set in the file
 /// that contradicts the one its positions and orientations imply is an error (unless its line
-/// ends in a `% override` comment); implausible INPUT values are warnings.
+/// ends in a `% override` comment); implausible INPUT values are warnings. A file that fails
+/// to load is checked as far as it loaded, so one report holds every independent problem.
 pub fn check(file: &str, source: &str) -> Result<Checked, Report> {
-    checked(file, source, super::load(file, source)?)
+    checked(file, super::run_file(file, source, false))
 }
 
 /// As [`check`], loaded by [`super::load_for_generation`]: a large tree's `M` and `f` may be
 /// left unformed.
 pub fn check_for_generation(file: &str, source: &str) -> Result<Checked, Report> {
-    checked(file, source, super::load_for_generation(file, source)?)
+    checked(file, super::run_file(file, source, true))
 }
 
-fn checked(file: &str, source: &str, mut model: super::LoadedModel) -> Result<Checked, Report> {
-    let mut diagnostics = consistency::consistency(&mut model, source);
-    diagnostics.extend(coordinates::coordinates_without_kinematics(&model));
-    diagnostics.extend(loads::repeated_loads(&model, source));
-    diagnostics.extend(warnings::input_warnings(&model));
-    diagnostics.extend(implicit::implicit_constants_without_values(&model));
-    diagnostics.extend(dimensions::units_against_use(&model, source));
+fn checked(
+    file: &str,
+    (mut model, errors): (super::LoadedModel, Vec<super::Diagnostic>),
+) -> Result<Checked, Report> {
+    let text = std::mem::take(&mut model.text);
+    let mut found = consistency::consistency(&mut model, &text);
+    found.extend(coordinates::coordinates_without_kinematics(&model));
+    found.extend(loads::repeated_loads(&model, &text));
+    found.extend(warnings::input_warnings(&model));
+    found.extend(implicit::implicit_constants_without_values(&model));
+    found.extend(dimensions::units_against_use(&model, &text));
+    model.text = text;
+    // What a failed statement would have set up is not checked again.
+    found.retain(|d| errors.is_empty() || !model.tainted.explains(&d.message));
+    let mut diagnostics = errors;
+    diagnostics.extend(found);
     diagnostics.sort_by_key(|d| d.span.start);
-    let report = Report { file: file.to_string(), source: source.to_string(), diagnostics };
+    let report = model.report(file, diagnostics);
     if report.diagnostics.iter().any(|d| d.severity == Severity::Error) {
         Err(report)
     } else {

@@ -1,8 +1,10 @@
-//! Whether an assigned vector equals the implied one for every state: their difference
-//! simplified to zero, else compared at random states. Euler parameters are normalised at each
-//! sampled state, so identities that hold only for unit Euler parameters count as equal.
+//! Whether two vectors are equal in every motion the model allows: their difference simplified
+//! to zero, else compared at random states. A state is a random value of every symbol, with
+//! Euler parameters normalised, the kinematic equations applied (`Q' = U` makes `Q'` read `U`),
+//! auxiliary speeds zero and the dependent speeds solved from the motion constraints, so
+//! identities that hold only in motions that satisfy them count as equal.
 //!
-//! In: two vectors and the frame to compare them in. Out: a [`Verdict`].
+//! In: the model, two vectors and the frame to compare them in. Out: a [`Verdict`].
 
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
@@ -27,25 +29,154 @@ pub(crate) enum Verdict {
     Unknown,
 }
 
-/// Compares `assigned` with `implied`, both expressed in `frame`.
-pub(crate) fn compare(
-    model: &mut Model,
-    assigned: &Vector,
-    implied: &Vector,
-    frame: FrameId,
-) -> Result<Verdict> {
-    let a = model.express(assigned, frame)?;
-    let b = model.express(implied, frame)?;
-    let mut proven = true;
-    for i in 0..3 {
-        let d = model.ar.sub(a[i], b[i])?;
-        let d = model.ar.simplify(d)?;
-        proven &= model.ar.is_zero(d);
+/// What the motions of a model are: the substitutions every compared value takes, and the
+/// motion constraints the dependent speeds are solved from.
+pub(crate) struct Motions {
+    /// `Q'` by its kinematic equation, auxiliary speeds (and their rates) by zero.
+    map: FxHashMap<ExprId, ExprId>,
+    /// The symbols of each set of Euler parameters.
+    euler: Vec<Vec<SymbolId>>,
+    /// The dependent speeds and `A_d u_d + A_i u_i + b = 0` as `(A_d, A_i u_i + b)`.
+    constraints: Option<(Vec<SymbolId>, Vec<Vec<ExprId>>, Vec<ExprId>)>,
+}
+
+impl Motions {
+    /// The motions of `model` as it stands.
+    pub(crate) fn of(model: &mut Model) -> Result<Motions> {
+        let mut map = model.kinematics_map();
+        map.extend(model.auxiliary_zero_map()?);
+        let euler = euler_groups(model);
+        let constraints = match model.motion_constraint_rows() {
+            Some((dependent, a_dependent, a_independent, b)) => {
+                let independent = model.independent_speeds();
+                let mut rest = Vec::with_capacity(b.len());
+                for (row, b) in a_independent.iter().zip(&b) {
+                    let mut terms = vec![*b];
+                    for (a, u) in row.iter().zip(&independent) {
+                        let u = model.ar.symbol_expr(*u);
+                        terms.push(model.ar.mul(&[*a, u])?);
+                    }
+                    rest.push(model.ar.add(&terms)?);
+                }
+                let a_dependent = a_dependent
+                    .iter()
+                    .map(|r| model.ar.subs_many(r, &map))
+                    .collect::<std::result::Result<_, _>>()?;
+                let rest = model.ar.subs_many(&rest, &map)?;
+                Some((dependent, a_dependent, rest))
+            }
+            None => None,
+        };
+        Ok(Motions { map, euler, constraints })
     }
-    if proven {
-        return Ok(Verdict::Same);
+
+    /// `e` as every motion reads it: kinematic equations applied, auxiliary speeds zero.
+    pub(crate) fn reading(&self, model: &mut Model, e: &[ExprId]) -> Result<Vec<ExprId>> {
+        Ok(model.ar.subs_many(e, &self.map)?)
     }
-    Ok(sample(model, &a, &b))
+
+    /// Compares `assigned` with `implied`, both expressed in `frame`.
+    pub(crate) fn compare(
+        &self,
+        model: &mut Model,
+        assigned: &Vector,
+        implied: &Vector,
+        frame: FrameId,
+    ) -> Result<Verdict> {
+        let a = model.express(assigned, frame)?;
+        let b = model.express(implied, frame)?;
+        self.compare_scalars(model, &a, &b)
+    }
+
+    /// Compares two lists of scalars entry by entry (`axis` of a difference is the entry).
+    pub(crate) fn compare_scalars(&self, model: &mut Model, a: &[ExprId], b: &[ExprId]) -> Result<Verdict> {
+        let a = self.reading(model, a)?;
+        let b = self.reading(model, b)?;
+        let mut proven = true;
+        for (x, y) in a.iter().zip(&b) {
+            let d = model.ar.sub(*x, *y)?;
+            let d = model.ar.simplify(d)?;
+            proven &= model.ar.is_zero(d);
+        }
+        if proven {
+            return Ok(Verdict::Same);
+        }
+        Ok(self.sample(model, &a, &b))
+    }
+
+    fn sample(&self, model: &Model, a: &[ExprId], b: &[ExprId]) -> Verdict {
+        let n = a.len();
+        let mut roots: Vec<ExprId> = a.iter().chain(b).copied().collect();
+        if let Some((_, ad, rest)) = &self.constraints {
+            roots.extend(ad.iter().flatten().chain(rest));
+        }
+        let syms = model.ar.free_symbols(&roots);
+        let mut rng = StdRng::seed_from_u64(0x636865636b);
+        let mut compared = 0;
+        for _ in 0..SAMPLES * 10 {
+            if compared == SAMPLES {
+                break;
+            }
+            let mut values: FxHashMap<SymbolId, f64> =
+                syms.iter().map(|s| (*s, rng.random_range(-2.0..2.0))).collect();
+            for g in &self.euler {
+                let norm = g.iter().map(|s| values.get(s).map_or(0.0, |v| v * v)).sum::<f64>().sqrt();
+                for s in g {
+                    if let Some(v) = values.get_mut(s) {
+                        *v /= norm;
+                    }
+                }
+            }
+            if let Some(c) = &self.constraints {
+                if !solve_dependent(model, c, &mut values) {
+                    continue;
+                }
+            }
+            let Ok(v) = model.ar.eval(&roots[..2 * n], |s| values.get(&s).copied()) else { continue };
+            if v.iter().any(|x| !x.is_finite()) {
+                continue;
+            }
+            compared += 1;
+            for axis in 0..n {
+                let (x, y) = (v[axis], v[axis + n]);
+                if (x - y).abs() / x.abs().max(y.abs()).max(1.0) > TOLERANCE {
+                    return Verdict::Differs { axis, assigned: x, implied: y };
+                }
+            }
+        }
+        if compared == 0 {
+            Verdict::Unknown
+        } else {
+            Verdict::Same
+        }
+    }
+}
+
+/// Sets the dependent speeds in `values` so that the motion constraints hold; false where
+/// they cannot be solved (a singular `A_d` there).
+fn solve_dependent(
+    model: &Model,
+    (dependent, ad, rest): &(Vec<SymbolId>, Vec<Vec<ExprId>>, Vec<ExprId>),
+    values: &mut FxHashMap<SymbolId, f64>,
+) -> bool {
+    let m = dependent.len();
+    let roots: Vec<ExprId> = ad.iter().flatten().chain(rest).copied().collect();
+    let Ok(v) = model.ar.eval(&roots, |s| values.get(&s).copied()) else { return false };
+    let mut a = nalgebra::DMatrix::from_row_slice(m, m, &v[..m * m]);
+    let b = nalgebra::DVector::from_iterator(m, v[m * m..].iter().map(|x| -x));
+    if a.iter().chain(b.iter()).any(|x| !x.is_finite()) {
+        return false;
+    }
+    let scale = a.amax().max(1.0);
+    a /= scale;
+    let Some(x) = a.lu().solve(&(b / scale)) else { return false };
+    if x.iter().any(|x| !x.is_finite()) {
+        return false;
+    }
+    for (s, x) in dependent.iter().zip(x.iter()) {
+        values.insert(*s, *x);
+    }
+    true
 }
 
 /// The symbols of each set of Euler parameters in the model.
@@ -57,45 +188,6 @@ fn euler_groups(model: &Model) -> Vec<Vec<SymbolId>> {
         }
     }
     groups
-}
-
-fn sample(model: &Model, a: &[ExprId; 3], b: &[ExprId; 3]) -> Verdict {
-    let roots: Vec<ExprId> = a.iter().chain(b).copied().collect();
-    let syms = model.ar.free_symbols(&roots);
-    let groups = euler_groups(model);
-    let mut rng = StdRng::seed_from_u64(0x636865636b);
-    let mut compared = 0;
-    for _ in 0..SAMPLES * 10 {
-        if compared == SAMPLES {
-            break;
-        }
-        let mut values: FxHashMap<SymbolId, f64> =
-            syms.iter().map(|s| (*s, rng.random_range(-2.0..2.0))).collect();
-        for g in &groups {
-            let norm = g.iter().map(|s| values.get(s).map_or(0.0, |v| v * v)).sum::<f64>().sqrt();
-            for s in g {
-                if let Some(v) = values.get_mut(s) {
-                    *v /= norm;
-                }
-            }
-        }
-        let Ok(v) = model.ar.eval(&roots, |s| values.get(&s).copied()) else { continue };
-        if v.iter().any(|x| !x.is_finite()) {
-            continue;
-        }
-        compared += 1;
-        for axis in 0..3 {
-            let (x, y) = (v[axis], v[axis + 3]);
-            if (x - y).abs() / x.abs().max(y.abs()).max(1.0) > TOLERANCE {
-                return Verdict::Differs { axis, assigned: x, implied: y };
-            }
-        }
-    }
-    if compared == 0 {
-        Verdict::Unknown
-    } else {
-        Verdict::Same
-    }
 }
 
 #[cfg(test)]
@@ -113,9 +205,27 @@ mod tests {
         let (s, c) = (m.ar.sin(x).unwrap(), m.ar.cos(x).unwrap());
         let twice = m.ar.mul(&[two, s, c]).unwrap();
         let v = |e| Vector::new(n, [e, z, z]);
-        assert_eq!(compare(&mut m, &v(x), &v(x), n).unwrap(), Verdict::Same);
-        assert_eq!(compare(&mut m, &v(sin2x), &v(twice), n).unwrap(), Verdict::Same);
-        let d = compare(&mut m, &Vector::zero(), &v(x), n).unwrap();
+        let motions = Motions::of(&mut m).unwrap();
+        assert_eq!(motions.compare(&mut m, &v(x), &v(x), n).unwrap(), Verdict::Same);
+        assert_eq!(motions.compare(&mut m, &v(sin2x), &v(twice), n).unwrap(), Verdict::Same);
+        let d = motions.compare(&mut m, &Vector::zero(), &v(x), n).unwrap();
         assert!(matches!(d, Verdict::Differs { axis: 0, assigned, .. } if assigned == 0.0), "{d:?}");
+    }
+
+    #[test]
+    fn rates_read_through_the_kinematic_equations() {
+        let mut m = Model::new("N");
+        let n = m.newtonian();
+        let q = m.ar.variable("q").unwrap();
+        let u = m.ar.variable("u").unwrap();
+        m.set_kinematics(q, u).unwrap();
+        let qs = m.ar.as_symbol(q).unwrap();
+        let qd = m.ar.derivative_symbol(qs).unwrap();
+        let qd = m.ar.symbol_expr(qd);
+        let z = m.ar.zero();
+        let motions = Motions::of(&mut m).unwrap();
+        let same =
+            motions.compare(&mut m, &Vector::new(n, [qd, z, z]), &Vector::new(n, [u, z, z]), n).unwrap();
+        assert_eq!(same, Verdict::Same);
     }
 }

@@ -76,13 +76,21 @@ impl Interpreter {
     }
 
     /// `TAYLOR(F, lo:hi, X = a, Y = b, ...)`: the terms of total order `lo` to `hi` of `F`'s
-    /// series about the point, `sum_k g^(k)(0) / k!` with `g(s) = F(a + s (x - a))`.
+    /// series about the point, `sum_k g^(k)(0) / k!` with `g(s) = F(a + s (x - a))`; an order
+    /// `n` is `0:n`, and `X = a:DX` expands in the perturbation `DX` instead (`g(s) = F(a + s DX)`,
+    /// as Autolev's linearisations write it).
     fn taylor(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
-        let usage = || Diagnostic::error(e.span.clone(), "TAYLOR takes (F, lo:hi, X = a, ...)");
-        let (Some(f), Some(Expr { kind: ExprKind::Range(lo, hi), .. })) = (args.first(), args.get(1)) else {
-            return Err(usage());
+        let usage = || {
+            Diagnostic::error(
+                e.span.clone(),
+                "TAYLOR takes (F, lo:hi, X = a, ...) or (F, order, X = a:DX, ...)",
+            )
         };
-        let (lo, hi) = (self.index_value(lo)?, self.index_value(hi)?);
+        let (Some(f), Some(orders)) = (args.first(), args.get(1)) else { return Err(usage()) };
+        let (lo, hi) = match &orders.kind {
+            ExprKind::Range(lo, hi) => (self.index_value(lo)?, self.index_value(hi)?),
+            _ => (0, self.index_value(orders)?),
+        };
         if lo < 0 || hi < lo || hi > 20 {
             return Err(Diagnostic::error(args[1].span.clone(), "TAYLOR orders must be 0 <= lo <= hi <= 20"));
         }
@@ -91,15 +99,20 @@ impl Interpreter {
         let mut along = FxHashMap::default();
         for a in &args[2..] {
             let ExprKind::NamedArg(name, value) = &a.kind else { return Err(usage()) };
-            let x = self.scalar(&Expr {
-                kind: ExprKind::Name { name: name.clone(), primes: 0, suffix: 0 },
-                span: a.span.clone(),
-            })?;
-            let point = self.scalar(value)?;
-            // x -> a + s (x - a)
+            let x = self.substitution_key(name)?;
+            let (point, step) = match &value.kind {
+                ExprKind::Range(point, step) => {
+                    let (point, step) = (self.scalar(point)?, self.scalar(step)?);
+                    (point, step)
+                }
+                _ => {
+                    let point = self.scalar(value)?;
+                    (point, self.model.ar.sub(x, point).at(&a.span)?)
+                }
+            };
+            // x -> a + s step
             let ar = &mut self.model.ar;
-            let offset = ar.sub(x, point).at(&a.span)?;
-            let moved = ar.mul(&[s, offset]).at(&a.span)?;
+            let moved = ar.mul(&[s, step]).at(&a.span)?;
             along.insert(x, ar.add(&[point, moved]).at(&a.span)?);
         }
         let f = self.eval(f)?;

@@ -39,7 +39,7 @@ impl Interpreter {
                 let m =
                     [[data[0], data[1], data[2]], [data[3], data[4], data[5]], [data[6], data[7], data[8]]];
                 self.model.orient(b, a, crate::mechanics::Orientation::Dcm(m)).at(&target.span)?;
-                self.sources.orientations.insert(b, target.span.clone());
+                self.sources.orientation(a, b, &target.span);
                 return Ok(());
             }
         }

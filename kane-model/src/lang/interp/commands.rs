@@ -11,6 +11,7 @@ use crate::mechanics::{FrameId, Orientation, PointId, Vector};
 use super::super::ast::{BinOp, Expr, ExprKind};
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
+use super::sources::{KinematicSource, Theorem};
 use super::value::Value;
 use super::{At, Binding, IResult, Interpreter};
 
@@ -133,7 +134,7 @@ impl Interpreter {
             angle = self.model.ar.mul(&[k, angle]).at(fail)?;
         }
         self.model.orient(child, parent, Orientation::Axis { axis, angle }).at(fail)?;
-        self.sources.orientations.insert(child, e.span.clone());
+        self.sources.orientation(child, parent, &e.span);
         Ok(())
     }
 
@@ -151,15 +152,15 @@ impl Interpreter {
             _ => self.model.a1pt(frame, body, from, to),
         }
         .at(&e.span)?;
+        let theorem = if upper.contains('2') { Theorem::TwoPoints } else { Theorem::OnePoint };
+        let source =
+            KinematicSource { span: e.span.clone(), theorem: Some((theorem, body, from)), reads: Vec::new() };
         let set = if upper.starts_with('V') {
             &mut self.sources.velocities
         } else {
             &mut self.sources.accelerations
         };
-        set.insert((to, frame), e.span.clone());
-        if upper == "V2PTS" {
-            self.sources.carried_from.insert((to, frame), from);
-        }
+        set.insert((to, frame), source);
         Ok(())
     }
 

@@ -52,10 +52,12 @@ impl Interpreter {
             )
             .with_help("INERTIA B, I11, I22, I33 or INERTIA B, I11, I22, I33, I12, I23, I31"));
         }
+        let mut v = Vec::with_capacity(args.len());
         for a in args {
+            let a = self.inline_definition(a)?;
             self.implicit_constants(a)?;
+            v.push(self.scalar(a)?);
         }
-        let v = args.iter().map(|a| self.scalar(a)).collect::<IResult<Vec<_>>>()?;
         let z = self.model.ar.zero();
         let (p12, p23, p31) = if v.len() == 6 { (v[3], v[4], v[5]) } else { (z, z, z) };
         let d = Dyadic::in_frame(frame, [[v[0], p12, p31], [p12, v[1], p23], [p31, p23, v[2]]]);

@@ -45,7 +45,7 @@ use super::diagnostic::Diagnostic;
 use super::token::Span;
 use super::units::size::UnitSystem;
 pub(crate) use names::edit_distance;
-pub(crate) use sources::{LoadSource, Sources};
+pub(crate) use sources::{KinematicSource, LoadSource, Sources};
 use value::Value;
 
 /// What a name stands for.
@@ -120,9 +120,26 @@ pub struct LoadedModel {
     pub(crate) bindings: FxHashMap<String, Binding>,
     arrays: FxHashMap<String, Vec<(Vec<i64>, Value)>>,
     pub(crate) sources: Sources,
+    /// The text the model ran from: the file's, then the files it runs (spans index it).
+    pub(crate) text: String,
+    /// Where each file's text is in `text`.
+    pub(crate) parts: Vec<super::diagnostic::SourcePart>,
+    /// The names statements that failed mention: checks of what they would have set up are
+    /// follow-on errors.
+    pub(crate) tainted: cascade::Tainted,
 }
 
 impl LoadedModel {
+    /// A report of `diagnostics` on this model's file, `file`.
+    pub(crate) fn report(&self, file: &str, diagnostics: Vec<Diagnostic>) -> super::diagnostic::Report {
+        super::diagnostic::Report {
+            file: file.to_string(),
+            source: self.text.clone(),
+            diagnostics,
+            parts: self.parts.clone(),
+        }
+    }
+
     /// The value a name has at the end of the file (case-insensitive; `V>` for vectors).
     pub fn value(&self, name: &str) -> Option<Value> {
         let key = name.to_ascii_uppercase();
@@ -186,6 +203,10 @@ pub(crate) struct Interpreter {
     /// Names whose value is `FR() + FRSTAR()` as assigned (unchanged since): SOLVE of them for
     /// the speeds' rates forms Kane's equations as KANE() does.
     pub(crate) kane_sums: rustc_hash::FxHashSet<String>,
+    /// The names failed statements mention (see [`cascade`]).
+    pub(crate) tainted: cascade::Tainted,
+    /// The points whose velocities or accelerations the statement running has read.
+    pub(crate) kinematic_reads: Vec<PointId>,
 }
 
 type IResult<T> = Result<T, Diagnostic>;
@@ -207,12 +228,9 @@ impl<T> At<T> for Result<T, crate::mechanics::MechanicsError> {
         use crate::mechanics::MechanicsError as E;
         self.map_err(|e| {
             let help = match &e {
-                E::FrameOrientedTwice { .. } => {
-                    Some("orient each frame once; to change how it turns, edit that first SIMPROT")
-                }
-                E::OrientationCycle { .. } => {
-                    Some("frames form a tree rooted at the Newtonian frame: orient the child from its parent")
-                }
+                E::OrientationCycle { .. } => Some(
+                    "orientations form a tree: relate each frame to one neighbour only (a frame relative to itself, or to a frame it already turns with through others, is a loop)",
+                ),
                 E::MissingKinematics(_) => Some("give every coordinate a kinematic equation, e.g. Q1' = U1"),
                 E::NoSpeeds => Some("declare speeds, e.g. VARIABLES U{3}' (or MOTIONVARIABLES' Q{3}'')"),
                 E::MissingMass(_) => Some("masses are given with MASS NAME = value"),
@@ -259,19 +277,22 @@ impl Interpreter {
             deferred: Vec::new(),
             deferred_kane: None,
             kane_sums: Default::default(),
+            tainted: Default::default(),
+            kinematic_reads: Vec::new(),
         }
     }
 
     /// Runs `stmts` of `source` in order, after the parser's `parse_errors`: each failing
     /// statement's error is kept unless it follows from an earlier failure (see [`cascade`]).
     pub(crate) fn run(&mut self, stmts: &[Stmt], source: &str, parse_errors: &[Diagnostic]) {
-        let mut tainted = cascade::Tainted::default();
+        let mut tainted = std::mem::take(&mut self.tainted);
         let mut failed_lines = parse_errors.iter().map(|d| d.span.start).peekable();
         for s in stmts {
             while let Some(at) = failed_lines.next_if(|at| *at < s.span.start) {
                 tainted.add_line_of(source, at);
             }
             self.settle_before(s);
+            self.kinematic_reads.clear();
             let done = match self.defers(s) {
                 Ok(true) => Ok(()),
                 Ok(false) => self.statement(s),
@@ -284,6 +305,10 @@ impl Interpreter {
                 tainted.add_statement(source, s);
             }
         }
+        for at in failed_lines {
+            tainted.add_line_of(source, at);
+        }
+        self.tainted = tainted;
     }
 
     /// Puts the formulas given to SPECIFIED quantities into the equations (after the file ran).
@@ -306,7 +331,7 @@ impl Interpreter {
         }
     }
 
-    pub(crate) fn finish(self) -> LoadedModel {
+    pub(crate) fn finish(self, text: String, parts: Vec<super::diagnostic::SourcePart>) -> LoadedModel {
         LoadedModel {
             model: self.model,
             equations: self.equations,
@@ -319,6 +344,9 @@ impl Interpreter {
             bindings: self.bindings,
             arrays: self.arrays,
             sources: self.sources,
+            text,
+            parts,
+            tainted: self.tainted,
         }
     }
 }

@@ -10,6 +10,7 @@ use crate::mechanics::{FrameId, PointId, Vector};
 use super::super::ast::Expr;
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
+use super::sources::KinematicSource;
 use super::value::Value;
 use super::{entity_key, At, Binding, IResult, Interpreter};
 
@@ -112,8 +113,14 @@ impl Interpreter {
         let fail: &Span = span;
         Ok(match b {
             Builtin::Position(from, to) => Value::Vector(self.model.position(to, from).at(fail)?),
-            Builtin::Velocity(p, f) => Value::Vector(self.model.velocity(p, f).at(fail)?),
-            Builtin::Acceleration(p, f) => Value::Vector(self.model.acceleration(p, f).at(fail)?),
+            Builtin::Velocity(p, f) => {
+                self.kinematic_reads.push(p);
+                Value::Vector(self.model.velocity(p, f).at(fail)?)
+            }
+            Builtin::Acceleration(p, f) => {
+                self.kinematic_reads.push(p);
+                Value::Vector(self.model.acceleration(p, f).at(fail)?)
+            }
             Builtin::AngularVelocity(a, b) => Value::Vector(self.model.angular_velocity(a, b).at(fail)?),
             Builtin::AngularAcceleration(a, b) => {
                 Value::Vector(self.model.angular_acceleration(a, b).at(fail)?)
@@ -165,23 +172,28 @@ impl Interpreter {
             }
             (Builtin::Velocity(p, f), Value::Vector(r)) => {
                 self.model.set_velocity(p, f, r.clone());
-                self.sources.velocities.insert((p, f), span.clone());
+                let reads = std::mem::take(&mut self.kinematic_reads);
+                let source = KinematicSource { span: span.clone(), theorem: None, reads };
+                self.sources.velocities.insert((p, f), source);
             }
             (Builtin::Acceleration(p, f), Value::Vector(r)) => {
                 self.model.set_acceleration(p, f, r.clone());
-                self.sources.accelerations.insert((p, f), span.clone());
+                let reads = std::mem::take(&mut self.kinematic_reads);
+                let source = KinematicSource { span: span.clone(), theorem: None, reads };
+                self.sources.accelerations.insert((p, f), source);
             }
             (Builtin::AngularVelocity(a, b), Value::Vector(w)) => {
-                // W_A_N> = w sets A's angular velocity in N (A's parent, or A becomes N's child);
-                // for A oriented through a chain, the chain's coordinate rates follow from it.
-                match self.model.frame_parent(a) {
-                    Some(p) if p != b => {
-                        let set = self.model.set_angular_velocity_through(a, b, w.clone()).at(fail)?;
-                        self.kinematic.extend(set);
-                    }
-                    _ => self.model.set_angular_velocity_in(a, b, w.clone()).at(fail)?,
-                }
-                self.sources.angular_velocities.insert(a, span.clone());
+                // W_A_N> = w sets A's angular velocity in N where the two are related directly
+                // (or not yet at all); for A oriented through a chain, the chain's coordinate
+                // rates follow from it.
+                let set = if self.model.frame_parent(a).is_some() && !self.model.frames_related(a, b) {
+                    let set = self.model.set_angular_velocity_through(a, b, w.clone()).at(fail)?;
+                    self.kinematic.extend(set);
+                    a
+                } else {
+                    self.model.set_angular_velocity_in(a, b, w.clone()).at(fail)?
+                };
+                self.sources.angular_velocities.insert(set, span.clone());
             }
             (Builtin::Inertia(body, point), Value::Dyadic(d)) => {
                 if point != self.model.body(body).mass_center {

@@ -81,7 +81,7 @@ impl Interpreter {
             Kind::Space(axes) => Orientation::SpaceFixed { axes, angles: [p[0], p[1], p[2]] },
         };
         self.model.orient(b, a, o).at(span)?;
-        self.sources.orientations.insert(b, span.clone());
+        self.sources.orientation(a, b, span);
         Ok(())
     }
 

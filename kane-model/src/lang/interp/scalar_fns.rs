@@ -103,14 +103,32 @@ impl Interpreter {
                     format!("{upper} takes substitutions NAME = value"),
                 ));
             };
-            let key = self.scalar(&Expr {
-                kind: ExprKind::Name { name: n.clone(), primes: 0, suffix: 0 },
-                span: a.span.clone(),
-            })?;
+            let key = self.substitution_key(n)?;
             let val = self.scalar(value)?;
             map.insert(key, val);
         }
         self.map_scalars(&v, &e.span, |m, x| Ok(m.ar.subs(x, &map)?))
+    }
+
+    /// What `x = value` in EVALUATE, REPLACE or TAYLOR replaces: a declared quantity or its
+    /// derivative (`Q1'`) as the symbol itself, even where `Q1'` has a kinematic equation or a
+    /// solved value; any other expression as it evaluates.
+    pub(crate) fn substitution_key(&mut self, x: &Expr) -> IResult<ExprId> {
+        if let ExprKind::Name { name, primes, suffix: 0 } = &x.kind {
+            if let Some(Binding::Symbol(e, _)) = self.bindings.get(&name.to_ascii_uppercase()).cloned() {
+                let mut at = e;
+                for _ in 0..*primes {
+                    let Some(s) = self.model.ar.as_symbol(at) else { break };
+                    if !self.model.ar.symbol_info(s).kind.depends_on_time() {
+                        break;
+                    }
+                    let d = self.model.ar.derivative_symbol(s).at(&x.span)?;
+                    at = self.model.ar.symbol_expr(d);
+                }
+                return Ok(at);
+            }
+        }
+        self.scalar(x)
     }
 
     /// `COEF(x, y)`: the coefficients of the symbols `y` in the scalars `x` (linear in them).

@@ -15,16 +15,14 @@ use super::super::token::Span;
 pub(crate) struct Sources {
     /// `P_A_B> = ...`, by the unordered pair of points.
     pub(crate) positions: FxHashMap<(PointId, PointId), Span>,
-    /// `V_P_N> = ...`, V2PTS, V1PT.
-    pub(crate) velocities: FxHashMap<(PointId, FrameId), Span>,
-    /// V2PTS(N, B, P, Q): Q's velocity in N carried from P, by `(Q, N)`.
-    pub(crate) carried_from: FxHashMap<(PointId, FrameId), PointId>,
-    /// `A_P_N> = ...`, A2PTS, A1PT.
-    pub(crate) accelerations: FxHashMap<(PointId, FrameId), Span>,
+    /// `V_P_N> = ...`, V2PTS, V1PT, by the point and frame.
+    pub(crate) velocities: FxHashMap<(PointId, FrameId), KinematicSource>,
+    /// `A_P_N> = ...`, A2PTS, A1PT, by the point and frame.
+    pub(crate) accelerations: FxHashMap<(PointId, FrameId), KinematicSource>,
     /// `W_B_A> = ...`, by the frame B.
     pub(crate) angular_velocities: FxHashMap<FrameId, Span>,
-    /// SIMPROT, DIRCOS, `A_B = [...]`, by the oriented frame.
-    pub(crate) orientations: FxHashMap<FrameId, Span>,
+    /// SIMPROT, DIRCOS, `A_B = [...]`, by the unordered pair of frames.
+    pub(crate) orientations: FxHashMap<(FrameId, FrameId), Span>,
     /// MASS items and INERTIA statements, by upper-cased body or particle name.
     pub(crate) inertial: FxHashMap<String, Span>,
     /// Every load given, in order: `FORCE_P>` / `TORQUE_B>` and where (assignments, and the
@@ -32,6 +30,33 @@ pub(crate) struct Sources {
     pub(crate) loads: Vec<LoadSource>,
     /// Constants MASS and INERTIA declared by using them (`MASS A = MA`), with where.
     pub(crate) implicit_constants: Vec<(String, Span)>,
+}
+
+/// The statement that set a point's velocity or acceleration in a frame, and what it took.
+#[derive(Clone, Debug)]
+pub(crate) struct KinematicSource {
+    /// Where the statement is.
+    pub(crate) span: Span,
+    /// For V2PTS, V1PT, A2PTS and A1PT: the body frame and the point carried from.
+    pub(crate) theorem: Option<(Theorem, FrameId, PointId)>,
+    /// For an assignment: the points whose velocities or accelerations its value read.
+    pub(crate) reads: Vec<PointId>,
+}
+
+/// The velocity and acceleration theorems.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Theorem {
+    /// V2PTS and A2PTS: the point of the body at the point named.
+    TwoPoints,
+    /// V1PT and A1PT: a point moving on the body.
+    OnePoint,
+}
+
+impl KinematicSource {
+    /// The points this setting took a velocity or acceleration from.
+    pub(crate) fn bases(&self) -> impl Iterator<Item = PointId> + '_ {
+        self.theorem.iter().map(|(_, _, from)| *from).chain(self.reads.iter().copied())
+    }
 }
 
 /// One statement adding to a load.
@@ -54,6 +79,28 @@ impl Sources {
     /// The statement relating points `a` and `b`, if one did.
     pub(crate) fn position_of(&self, a: PointId, b: PointId) -> Option<&Span> {
         self.positions.get(&pair(a, b))
+    }
+}
+
+impl Sources {
+    /// Records the statement relating frames `a` and `b` by an orientation.
+    pub(crate) fn orientation(&mut self, a: FrameId, b: FrameId, span: &Span) {
+        self.orientations.insert(frame_pair(a, b), span.clone());
+    }
+
+    /// The statement that oriented `frame` in the tree of orientations (relative to its parent
+    /// there, either frame named first), if one did.
+    pub(crate) fn orientation_of(&self, model: &crate::mechanics::Model, frame: FrameId) -> Option<&Span> {
+        let parent = model.frame_parent(frame)?;
+        self.orientations.get(&frame_pair(frame, parent))
+    }
+}
+
+fn frame_pair(a: FrameId, b: FrameId) -> (FrameId, FrameId) {
+    if a.index() <= b.index() {
+        (a, b)
+    } else {
+        (b, a)
     }
 }
 

@@ -4,11 +4,11 @@
 //! In: one parsed statement. Out: the interpreter's bindings and the model changed accordingly
 //! (frames, points, bodies, particles and symbols declared; masses given; requests recorded).
 
-use super::super::ast::{DeclItem, DeclKind, Expr, InputItem, Stmt, StmtKind};
+use super::super::ast::{DeclItem, DeclKind, Expr, ExprKind, InputItem, Stmt, StmtKind};
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
 use super::super::units::size::{unit_size, UnitSystem};
-use super::super::units::{unit_expression, unit_word};
+use super::super::units::unit_word;
 use super::{
     entity_key, is_degrees, At, Binding, Bookkeeping, CodeRequest, IResult, InputValue, Interpreter,
 };
@@ -29,8 +29,17 @@ impl Interpreter {
             }
             StmtKind::Setting { name, on } => self.setting(name, *on, &s.span),
             StmtKind::Units(items) => {
-                for (name, _, e) in items {
-                    self.units.insert(name.to_ascii_uppercase(), unit_expression(e)?);
+                for item in items {
+                    for (word, at) in &item.words {
+                        if unit_size(word).is_err() {
+                            unit_word(word, at)?;
+                        }
+                    }
+                    unit_size(&item.unit).map_err(|_| {
+                        Diagnostic::error(item.span.clone(), "this is not a unit")
+                            .with_help("a unit is unit names joined by *, / and ^ (or .), e.g. N*M, KG.M^2/S or RAD/SEC^2")
+                    })?;
+                    self.units.insert(item.name.to_ascii_uppercase(), item.unit.clone());
                 }
                 Ok(())
             }
@@ -45,11 +54,18 @@ impl Interpreter {
             }
             StmtKind::Input(items) => self.input(items),
             StmtKind::Output(items) => {
-                for (n, span, u) in items {
-                    if let Some(u) = u {
-                        unit_size(u).map_err(|e| unit_error(span, e))?;
+                for item in items {
+                    if let Some(u) = &item.unit {
+                        unit_size(u).map_err(|e| unit_error(&item.span, e))?;
                     }
-                    self.outputs.push((n.clone(), u.clone()));
+                    if let Some(e) = &item.expr {
+                        // An expression is output under its text, as it stands here.
+                        let v = self.eval(e)?;
+                        let suffix = if matches!(v, super::value::Value::Vector(_)) { ">" } else { "" };
+                        let key = format!("{}{suffix}", item.name.to_ascii_uppercase());
+                        self.bindings.insert(key, Binding::Value(v));
+                    }
+                    self.outputs.push((item.name.clone(), item.unit.clone()));
                 }
                 Ok(())
             }
@@ -71,6 +87,8 @@ impl Interpreter {
                 });
                 Ok(())
             }
+            // A file the expansion could not run was reported there.
+            StmtKind::Run(_) => Ok(()),
             StmtKind::Assign { target, op, value } => self.assign(target, *op, value),
             StmtKind::Expr(e) => self.command(e),
         }
@@ -79,6 +97,7 @@ impl Interpreter {
     /// `MASS B = M, P = m, ...`.
     fn mass_statement(&mut self, items: &[(String, Span, Expr)]) -> IResult<()> {
         for (name, span, e) in items {
+            let e = self.inline_definition(e)?;
             self.implicit_constants(e)?;
             let m = self.scalar(e)?;
             self.sources.inertial.insert(name.to_ascii_uppercase(), span.clone());
@@ -95,6 +114,21 @@ impl Interpreter {
             }
         }
         Ok(())
+    }
+
+    /// `X = value` written where a value is expected (`MASS A = MA = 10`, `INERTIA B, IB =
+    /// MB*L^2/12, 0, IB`): assigns X and stands for it; anything else stands for itself.
+    pub(crate) fn inline_definition<'e>(&mut self, e: &'e Expr) -> IResult<&'e Expr> {
+        let ExprKind::NamedArg(name, value) = &e.kind else { return Ok(e) };
+        let ExprKind::Name { name: n, primes: 0, suffix: 0 } = &name.kind else {
+            return Err(Diagnostic::error(
+                e.span.clone(),
+                "only a name may be defined here (`NAME = value`)",
+            ));
+        };
+        let v = self.eval(value)?;
+        self.bindings.insert(n.to_ascii_uppercase(), Binding::Value(v));
+        Ok(name)
     }
 
     /// `DEGREES ON`, and settings that change only how Autolev computes in complex numbers or
