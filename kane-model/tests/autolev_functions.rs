@@ -140,8 +140,8 @@ fn frame_origins_dyadic_dots_and_derivatives_by_a_specified() {
     // D1>> . B3> = B2> (A1> . B3> = 0); from the left, B2> . D1>> = B3> (A1> . B2> = 0).
     assert_eq!(text("X3"), "1");
     assert_eq!(text("X4"), "1");
-    // d(S^2)/dS = 2 S with S's formula put back.
-    assert_eq!(text("E"), "2*L*sin(Q1)");
+    // d(S^2)/dS = 2 S: a SPECIFIED quantity stays itself, its formula kept for the equations.
+    assert_eq!(text("E"), "2*S");
 }
 
 #[test]

@@ -77,6 +77,45 @@ impl Arena {
 }
 
 impl Arena {
+    /// `X` with `A X = B` for a square `A` (rows) and `B` with any number of columns, by
+    /// Gauss-Jordan elimination on the expression graph (nothing multiplied out, so the result
+    /// grows with the graph, not with the terms), each pivot the first structurally non-zero.
+    pub fn solve_matrix(
+        &mut self,
+        a: &[Vec<ExprId>],
+        b: &[Vec<ExprId>],
+    ) -> Result<Vec<Vec<ExprId>>, ExprError> {
+        let m = a.len();
+        if b.len() != m || a.iter().any(|r| r.len() != m) {
+            return Err(ExprError::SingularSystem);
+        }
+        let mut rows: Vec<(Vec<ExprId>, Vec<ExprId>)> = a.iter().cloned().zip(b.iter().cloned()).collect();
+        for col in 0..m {
+            let pivot = (col..m).find(|&r| !self.is_zero(rows[r].0[col])).ok_or(ExprError::SingularSystem)?;
+            rows.swap(col, pivot);
+            let p = rows[col].0[col];
+            for r in 0..m {
+                if r == col || self.is_zero(rows[r].0[col]) {
+                    continue;
+                }
+                let factor = self.div(rows[r].0[col], p)?;
+                for k in col..m {
+                    let t = self.mul(&[factor, rows[col].0[k]])?;
+                    rows[r].0[k] = self.sub(rows[r].0[k], t)?;
+                }
+                for k in 0..rows[r].1.len() {
+                    let t = self.mul(&[factor, rows[col].1[k]])?;
+                    rows[r].1[k] = self.sub(rows[r].1[k], t)?;
+                }
+            }
+        }
+        let mut out = Vec::with_capacity(m);
+        for (coeffs, rhs) in rows.iter().enumerate().map(|(i, r)| (r.0[i], &r.1)) {
+            out.push(rhs.iter().map(|x| self.div(*x, coeffs)).collect::<Result<Vec<_>, _>>()?);
+        }
+        Ok(out)
+    }
+
     /// The determinant of the square matrix `rows`, by expansion along rows over column subsets
     /// (no division: its only zeros are where the matrix is singular).
     pub fn determinant(&mut self, rows: &[Vec<ExprId>]) -> Result<ExprId, ExprError> {

@@ -28,6 +28,8 @@ pub(crate) struct Expanded {
     pub(crate) errors: Vec<Diagnostic>,
     /// Where each file's text is in `source` (the model file's first).
     pub(crate) parts: Vec<SourcePart>,
+    /// Whether an EXIT ended the run.
+    exited: bool,
 }
 
 /// `source` of the model file `file` with the files it runs.
@@ -37,6 +39,7 @@ pub(crate) fn expand(file: &str, source: &str) -> Expanded {
         stmts: Vec::new(),
         errors: Vec::new(),
         parts: vec![SourcePart { range: 0..source.len(), file: file.to_string() }],
+        exited: false,
     };
     let (stmts, errors) = parser::parse(source);
     out.errors = errors;
@@ -45,10 +48,28 @@ pub(crate) fn expand(file: &str, source: &str) -> Expanded {
     out
 }
 
-/// `stmts` with each RUN and macro call replaced by the statements of the file it runs.
+/// `stmts` with each RUN and macro call replaced by the statements of the file it runs, up to
+/// an EXIT (which ends Autolev's run: what follows it, here or in a file that ran this one, is
+/// not read).
 fn splice(out: &mut Expanded, stmts: Vec<Stmt>, dir: Option<&Path>, depth: usize) -> Vec<Stmt> {
     let mut kept = Vec::with_capacity(stmts.len());
     for s in stmts {
+        if out.exited {
+            break;
+        }
+        if matches!(&s.kind, StmtKind::Session(c) if c == "EXIT") {
+            let (at, end) = (
+                s.span.start,
+                out.parts
+                    .iter()
+                    .find(|p| p.range.contains(&s.span.start))
+                    .map_or(usize::MAX, |p| p.range.end),
+            );
+            out.errors.retain(|d| d.span.start < at || d.span.start >= end);
+            out.exited = true;
+            kept.push(s);
+            break;
+        }
         let found = match &s.kind {
             StmtKind::Run(name) => Some(run_file(name, dir, &s)),
             StmtKind::Expr(Expr { kind: ExprKind::Call { name, args }, .. }) => {

@@ -77,7 +77,7 @@ fn load_with(file: &str, source: &str, defer: bool) -> Result<LoadedModel, Repor
 /// Runs a model file to its end whatever fails: the model as far as it was built, and every
 /// error (in source order).
 fn run_file(file: &str, source: &str, defer: bool) -> (LoadedModel, Vec<Diagnostic>) {
-    let include::Expanded { source, stmts, mut errors, parts } = include::expand(file, source);
+    let include::Expanded { source, stmts, mut errors, parts, .. } = include::expand(file, source);
     let mut it = interp::Interpreter::new();
     it.defer = defer;
     it.run(&stmts, &source, &errors);

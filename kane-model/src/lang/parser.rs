@@ -120,6 +120,7 @@ pub const SESSION_COMMANDS: &[&str] = &[
     "BEEPSOUND",
     "DISPLAY",
     "ENCODE",
+    "EXIT",
     "FACTORING",
     "OVERWRITE",
     "PAUSE",

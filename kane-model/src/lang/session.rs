@@ -22,7 +22,7 @@ pub(crate) fn report(file: &str, source: &str, diagnostics: Vec<Diagnostic>) -> 
 impl Session {
     /// Parses and runs `source`; every error is reported, with its place in `file`.
     pub(crate) fn open(file: &str, source: &str) -> Result<Session, Report> {
-        let super::include::Expanded { source, stmts, mut errors, parts } =
+        let super::include::Expanded { source, stmts, mut errors, parts, .. } =
             super::include::expand(file, source);
         let mut it = Interpreter::new();
         if errors.is_empty() {

@@ -41,7 +41,7 @@ impl LoadedModel {
     /// The spec, with the default drawing's outputs when `drawn`.
     fn spec_with(mut self, name: &str, drawn: bool) -> Result<(ModelSpec, Option<Drawing>), SpecError> {
         let eqs = self.equations.clone().ok_or(SpecError::NoEquations)?;
-        let mut formulas = super::interp::specified_formulas(&mut self.model, &self.bindings)?;
+        let mut formulas = super::interp::specified_formulas(&mut self.model, &self.formulas)?;
         // Auxiliary speeds are zero in every motion the outputs are computed along.
         formulas.extend(self.model.auxiliary_zero_map()?);
         let outputs = self.output_values(&eqs)?;
@@ -106,6 +106,12 @@ impl LoadedModel {
                     out.push((bare.to_string(), Output::Value(Value::Scalar(*e))));
                     continue;
                 }
+            }
+            if let Some(super::interp::Binding::Symbol(e, _)) = self.bindings.get(&oname.to_ascii_uppercase())
+            {
+                // A quantity (a SPECIFIED one's formula is put in below).
+                out.push((bare.to_string(), Output::Value(Value::Scalar(*e))));
+                continue;
             }
             match self.value(oname).or_else(|| self.value(&format!("{bare}>"))) {
                 Some(v @ (Value::Scalar(_) | Value::Vector(_))) => {

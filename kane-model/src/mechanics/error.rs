@@ -29,6 +29,10 @@ pub enum MechanicsError {
         /// Their names.
         names: String,
     },
+    /// The speed rates of a model whose equations solve for loads too are not formed as
+    /// expressions.
+    #[error("the speed rates of a model that solves for loads with them (KANE(T1, ...)) are solved numerically only")]
+    RatesWithLoads,
     /// Orienting a frame would close a loop of orientations.
     #[error("orienting {frame} relative to {parent} closes a loop: the two are already related through other frames")]
     OrientationCycle {

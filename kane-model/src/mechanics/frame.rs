@@ -157,6 +157,9 @@ impl Model {
         let chain = self.angular_velocity(frame, reference)?;
         let difference = self.sub_vectors(&chain, &w)?;
         let equations = self.express(&difference, frame)?;
+        // Written in the coordinates' rates (`(Q4' + Q3')*N3>`), it is the chain's own: nothing
+        // to solve for; otherwise it names speeds the chain's rates follow from.
+        let in_rates = self.vector_has_rates(&w)?;
         let rates: Vec<SymbolId> = self
             .ar
             .free_symbols(&equations)
@@ -167,6 +170,13 @@ impl Model {
                     && !self.kinematics.contains_key(&info.base)
             })
             .collect();
+        if in_rates {
+            let parent = self.frames[frame.index()].parent.unwrap_or(reference);
+            let carried = self.angular_velocity(parent, reference)?;
+            let relative = self.sub_vectors(&w, &carried)?;
+            self.set_angular_velocity(frame, relative);
+            return Ok(Vec::new());
+        }
         if rates.len() != 3 {
             let names: Vec<&str> = rates.iter().map(|s| self.ar.symbol_info(*s).name.as_str()).collect();
             return Err(MechanicsError::AngularVelocityUnderdetermined {
@@ -190,6 +200,16 @@ impl Model {
         let relative = self.sub_vectors(&w, &carried)?;
         self.set_angular_velocity(frame, relative);
         Ok(set)
+    }
+
+    /// Whether `w`'s measure numbers hold the rate of a variable (`Q'`, a derivative symbol).
+    fn vector_has_rates(&mut self, w: &Vector) -> Result<bool> {
+        let entries: Vec<ExprId> = w.terms.iter().flat_map(|(_, m)| *m).collect();
+        let ar = &self.ar;
+        Ok(ar.free_symbols(&entries).iter().any(|s| {
+            let info = ar.symbol_info(*s);
+            matches!(info.kind, crate::expr::SymbolKind::Variable { order } if order >= 1) && info.base != *s
+        }))
     }
 
     /// `frame`, its parent, grandparent, ... up to the root of its tree.

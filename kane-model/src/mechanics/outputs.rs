@@ -46,8 +46,19 @@ impl Model {
 
     /// Angular momentum about `about` in `frame`: `sum(r x m v + I . w)`.
     pub fn angular_momentum(&mut self, about: PointId, frame: FrameId) -> Result<Vector> {
+        let masses: Vec<_> = self.masses().collect();
+        self.angular_momentum_of(&masses, about, frame)
+    }
+
+    /// The angular momentum about `about`, in `frame`, of the masses `masses`.
+    pub fn angular_momentum_of(
+        &mut self,
+        masses: &[super::MassView],
+        about: PointId,
+        frame: FrameId,
+    ) -> Result<Vector> {
         let mut h = Vector::zero();
-        for view in self.masses().collect::<Vec<_>>() {
+        for view in masses {
             let m = view.mass()?;
             let r = self.position(view.point, about)?;
             let v = self.velocity(view.point, frame)?;

@@ -38,7 +38,8 @@ pub(super) struct Contradiction {
 
 /// The contradictions between assigned and implied kinematics, as errors.
 pub(crate) fn consistency(m: &mut LoadedModel, source: &str) -> Vec<Diagnostic> {
-    let Ok(motions) = Motions::of(&mut m.model) else { return Vec::new() };
+    let still = m.unstated_variables();
+    let Ok(motions) = Motions::of(&mut m.model, &still) else { return Vec::new() };
     let mut found = point_motion::velocity_contradictions(m, &motions);
     found.extend(point_motion::acceleration_contradictions(m, &motions));
     let mut errors: Vec<Diagnostic> = found

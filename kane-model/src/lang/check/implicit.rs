@@ -1,8 +1,8 @@
 //! Constants a file declares only by using them in MASS or INERTIA (`MASS A = MA`, as Autolev
-//! allows): one that no INPUT gives a value is most often a misspelling (`MASS PC = MCC` beside
-//! `CONSTANTS MC`). In: a loaded model. Out: an error with a did-you-mean when a declared name
-//! is one edit away (two for names of six letters or more), else a warning that runs will need
-//! a value.
+//! allows): one that no INPUT gives a value is a warning that runs need one, with the declared
+//! name one edit away (two for names of six letters or more) as a possible misspelling
+//! (`MASS PC = MCC` beside `CONSTANTS MC`); systematic names (`IC12` beside `IC11`) are Autolev's
+//! idiom, so never an error. In: a loaded model. Out: the warnings.
 
 use crate::expr::SymbolKind;
 
@@ -32,16 +32,17 @@ pub(crate) fn implicit_constants_without_values(m: &LoadedModel) -> Vec<Diagnost
             // Short names are close to many others (M1 and C1): only a near miss of a longer one.
             .filter(|(k, _)| (*k == 1 && upper.len() >= 3) || (*k == 2 && upper.len() >= 6))
             .min_by_key(|(k, _)| *k);
-        out.push(match near {
-            Some((_, d)) => Diagnostic::error(
-                span.clone(),
-                format!("`{name}` is declared nowhere and given no value (MASS and INERTIA declare it by using it)"),
-            )
-            .with_help(format!("did you mean `{d}`? Otherwise declare it with CONSTANTS and give it in INPUT")),
-            None => Diagnostic::warning(
-                span.clone(),
-                format!("`{name}` (declared by its use here) has no INPUT value: runs need one (--set {name}=VALUE)"),
+        let warning = Diagnostic::warning(
+            span.clone(),
+            format!(
+                "`{name}` (declared by its use here) has no INPUT value: runs need one (--set {name}=VALUE)"
             ),
+        );
+        out.push(match near {
+            Some((_, d)) => warning.with_help(format!(
+                "if it is not a misspelling of `{d}`, give it a value in INPUT (Autolev declares names MASS and INERTIA use)"
+            )),
+            None => warning,
         });
     }
     out

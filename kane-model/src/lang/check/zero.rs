@@ -1,5 +1,5 @@
-//! Whether two vectors are equal in every motion the model allows: their difference simplified
-//! to zero, else compared at random states. A state is a random value of every symbol, with
+//! Whether two vectors are equal in every motion the model allows: the same expressions, or
+//! equal at random states. A state is a random value of every symbol, with
 //! Euler parameters normalised, the kinematic equations applied (`Q' = U` makes `Q'` read `U`),
 //! auxiliary speeds zero and the dependent speeds solved from the motion constraints, so
 //! identities that hold only in motions that satisfy them count as equal.
@@ -21,7 +21,7 @@ const TOLERANCE: f64 = 1e-8;
 /// The outcome of a comparison.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) enum Verdict {
-    /// Equal: proven, or at every sampled state.
+    /// Equal: the same expressions, or equal at every sampled state.
     Same,
     /// Different along the frame's unit vector `axis` (0, 1, 2) at a sampled state.
     Differs { axis: usize, assigned: f64, implied: f64 },
@@ -41,10 +41,19 @@ pub(crate) struct Motions {
 }
 
 impl Motions {
-    /// The motions of `model` as it stands.
-    pub(crate) fn of(model: &mut Model) -> Result<Motions> {
+    /// The motions of `model` as it stands, in which the quantities `still` (VARIABLES declared
+    /// without a derivative that are not states: parameters the file lets vary) keep their value.
+    pub(crate) fn of(model: &mut Model, still: &[SymbolId]) -> Result<Motions> {
         let mut map = model.kinematics_map();
         map.extend(model.auxiliary_zero_map()?);
+        let zero = model.ar.zero();
+        for s in still {
+            let mut d = *s;
+            for _ in 0..2 {
+                d = model.ar.derivative_symbol(d)?;
+                map.insert(model.ar.symbol_expr(d), zero);
+            }
+        }
         let euler = euler_groups(model);
         let constraints = match model.motion_constraint_rows() {
             Some((dependent, a_dependent, a_independent, b)) => {
@@ -92,13 +101,8 @@ impl Motions {
     pub(crate) fn compare_scalars(&self, model: &mut Model, a: &[ExprId], b: &[ExprId]) -> Result<Verdict> {
         let a = self.reading(model, a)?;
         let b = self.reading(model, b)?;
-        let mut proven = true;
-        for (x, y) in a.iter().zip(&b) {
-            let d = model.ar.sub(*x, *y)?;
-            let d = model.ar.simplify(d)?;
-            proven &= model.ar.is_zero(d);
-        }
-        if proven {
+        // The same expression (the arena shares equal ones) needs no sampling.
+        if a == b {
             return Ok(Verdict::Same);
         }
         Ok(self.sample(model, &a, &b))
@@ -205,7 +209,7 @@ mod tests {
         let (s, c) = (m.ar.sin(x).unwrap(), m.ar.cos(x).unwrap());
         let twice = m.ar.mul(&[two, s, c]).unwrap();
         let v = |e| Vector::new(n, [e, z, z]);
-        let motions = Motions::of(&mut m).unwrap();
+        let motions = Motions::of(&mut m, &[]).unwrap();
         assert_eq!(motions.compare(&mut m, &v(x), &v(x), n).unwrap(), Verdict::Same);
         assert_eq!(motions.compare(&mut m, &v(sin2x), &v(twice), n).unwrap(), Verdict::Same);
         let d = motions.compare(&mut m, &Vector::zero(), &v(x), n).unwrap();
@@ -223,7 +227,7 @@ mod tests {
         let qd = m.ar.derivative_symbol(qs).unwrap();
         let qd = m.ar.symbol_expr(qd);
         let z = m.ar.zero();
-        let motions = Motions::of(&mut m).unwrap();
+        let motions = Motions::of(&mut m, &[]).unwrap();
         let same =
             motions.compare(&mut m, &Vector::new(n, [qd, z, z]), &Vector::new(n, [u, z, z]), n).unwrap();
         assert_eq!(same, Verdict::Same);

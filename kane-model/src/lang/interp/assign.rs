@@ -27,6 +27,13 @@ impl Interpreter {
             let idx = index.iter().map(|e| self.index_value(e)).collect::<IResult<Vec<i64>>>()?;
             return self.assign_array(&key, idx, v, &target.span);
         }
+        // DEPENDENT = M and CONFIG = M: every entry a constraint, as DEPENDENT[i] = M[i].
+        if let (true, Value::Matrix { data, .. }) = (key == "DEPENDENT" || key == "CONFIG", &v) {
+            for (i, x) in data.clone().into_iter().enumerate() {
+                self.assign_array(&key, vec![i as i64 + 1], Value::Scalar(x), &target.span)?;
+            }
+            return Ok(());
+        }
         if target.primes > 0 {
             return self.kinematic_equation(target, &v);
         }
@@ -51,6 +58,14 @@ impl Interpreter {
                 })?;
             }
         }
+        // T = formula for a SPECIFIED T: its formula (T stays a quantity until the end).
+        if let (Some(Binding::Symbol(e, _)), 0, AssignOp::Set) =
+            (self.bindings.get(&key).cloned(), target.suffix, op)
+        {
+            if self.is_specified(e) {
+                return self.specified_formula(&key, &v, &target.span);
+            }
+        }
         // OMEGA = THETA' for a declared speed: the kinematic equation THETA' = OMEGA.
         if let (Some(Binding::Symbol(lhs, _)), Value::Scalar(rhs)) = (self.bindings.get(&key).cloned(), &v) {
             if let Some(s) = self.model.ar.as_symbol(*rhs) {
@@ -67,8 +82,22 @@ impl Interpreter {
         Ok(())
     }
 
+    /// `Q' = rhs`: a coordinate's kinematic equation; for a SPECIFIED quantity or a name
+    /// assigned a value (`LH = Q4`, then `LH' = U4`), the formula of that derivative, as
+    /// Autolev takes it (not checked against the rate of the other).
     fn kinematic_equation(&mut self, target: &Target, v: &Value) -> IResult<()> {
         let key = target.name.to_ascii_uppercase();
+        let derivative = format!("{key}{}", "'".repeat(target.primes as usize));
+        match self.bindings.get(&key).cloned() {
+            Some(Binding::Value(_)) => {
+                self.bindings.insert(derivative, Binding::Value(v.clone()));
+                return Ok(());
+            }
+            Some(Binding::Symbol(q, _)) if self.is_specified(q) => {
+                return self.specified_formula(&derivative, v, &target.span);
+            }
+            _ => {}
+        }
         let Some(Binding::Symbol(q, _)) = self.bindings.get(&key).cloned() else {
             return Err(Diagnostic::error(
                 target.span.clone(),
@@ -93,6 +122,24 @@ impl Interpreter {
         let s = self.model.ar.as_symbol(q).unwrap_or(crate::expr::TIME);
         self.kinematic.push((s, *rhs));
         self.model.set_kinematics(q, *rhs).at(&target.span)
+    }
+
+    /// Records `value` as the formula of the SPECIFIED quantity (or derivative) `key`.
+    pub(crate) fn specified_formula(&mut self, key: &str, value: &Value, span: &Span) -> IResult<()> {
+        let Value::Scalar(f) = value else {
+            return Err(Diagnostic::error(
+                span.clone(),
+                format!("a SPECIFIED quantity's formula is a scalar, not {}", value.kind()),
+            ));
+        };
+        self.formulas.insert(key.to_string(), *f);
+        Ok(())
+    }
+
+    /// Whether `e` is a SPECIFIED quantity.
+    fn is_specified(&self, e: crate::expr::ExprId) -> bool {
+        let ar = &self.model.ar;
+        ar.as_symbol(e).is_some_and(|s| matches!(ar.symbol_info(s).kind, SymbolKind::Specified { .. }))
     }
 
     fn assign_array(&mut self, key: &str, idx: Vec<i64>, v: Value, span: &Span) -> IResult<()> {

@@ -58,6 +58,12 @@ impl Interpreter {
             "KINDIFFS" => self.kindiffs(args, &e.span),
             // UNITSYSTEM and ENCODE choose how Autolev prints; results are unchanged.
             "UNITSYSTEM" | "ENCODE" => Ok(()),
+            // ANIMATE(N, O, B) writes data for Autolev's animation program: kept in the books.
+            "ANIMATE" => {
+                let span = e.span.clone();
+                self.bookkeeping.push(super::Bookkeeping { command: upper.clone(), span, applied: false });
+                Ok(())
+            }
             "KANE" => {
                 self.solved_loads(args, &e.span)?;
                 self.form_kane(&e.span)
@@ -105,7 +111,7 @@ impl Interpreter {
 
     /// Kane's equations of the model as it stands (KANE()), their mass matrix left unformed
     /// when generation defers it.
-    fn form_kane(&mut self, span: &Span) -> IResult<()> {
+    pub(super) fn form_kane(&mut self, span: &Span) -> IResult<()> {
         self.prepare(span)?;
         self.deferred_kane = None;
         let shape = if self.defer { Some(self.model.kane_unformed().at(span)?) } else { None };
@@ -252,11 +258,27 @@ impl Interpreter {
         if args.len() < 2 {
             return Err(Diagnostic::error(e.span.clone(), "SOLVE takes (EQN, X, Y, ...)"));
         }
-        let ExprKind::Name { name: arr, .. } = &args[0].kind else {
-            return Err(Diagnostic::error(args[0].span.clone(), "SOLVE takes the name of an equation array"));
+        // The equations: an array or column by name (ZERO), or any scalar or matrix
+        // (`SOLVE([EQ1, EQ2], ...)`, `SOLVE(DT(H), Q3')`).
+        let (key, eqs) = match &args[0].kind {
+            ExprKind::Name { name, primes: 0, suffix: 0 }
+                if !self.equations_named(&name.to_ascii_uppercase()).is_empty() =>
+            {
+                let key = name.to_ascii_uppercase();
+                let eqs = self.equations_named(&key);
+                (key, eqs)
+            }
+            _ => match self.eval(&args[0])? {
+                Value::Scalar(x) => (String::new(), vec![x]),
+                Value::Matrix { data, .. } => (String::new(), data),
+                other => {
+                    return Err(Diagnostic::error(
+                        args[0].span.clone(),
+                        format!("SOLVE takes equations (scalars), not {}", other.kind()),
+                    ))
+                }
+            },
         };
-        let key = arr.to_ascii_uppercase();
-        let eqs = self.equations_named(&key);
         let mut names = Vec::new();
         let mut syms = Vec::new();
         // Unknowns one by one or in a bracketed list: SOLVE(ZERO, [U4', U6']).
@@ -281,16 +303,41 @@ impl Interpreter {
             names.push(format!("{}{}", name.to_ascii_uppercase(), "'".repeat(*primes as usize)));
         }
         if self.equations.is_none() && self.are_speed_rates(&syms) {
-            // The equations of motion: formed as KANE() does when they are FR() + FRSTAR().
+            // The equations of motion: formed as KANE() does when they are FR() + FRSTAR(); the
+            // rates are then assigned, as Autolev's SOLVE assigns them (read by name later).
+            self.rates_solved = true;
             if self.kane_sums.contains(&key) {
                 return self.form_kane(&e.span);
             }
             return self.equations_of_motion(&eqs, &e.span);
         }
         let sol = self.model.ar.solve_linear(&eqs, &syms).at(&e.span)?;
-        for (n, x) in names.into_iter().zip(sol) {
+        for ((n, x), s) in names.into_iter().zip(sol).zip(&syms) {
             self.solved.insert(n, x);
+            self.rate_solved(*s, x, &e.span)?;
         }
+        Ok(())
+    }
+
+    /// A variable's rate SOLVE gives, for a variable with no kinematic equation yet and that is
+    /// not a speed: its kinematic equation (Autolev integrates a variable whose rate is
+    /// assigned, as a coordinate).
+    fn rate_solved(&mut self, rate: crate::expr::SymbolId, value: ExprId, span: &Span) -> IResult<()> {
+        let info = self.model.ar.symbol_info(rate);
+        let SymbolKind::Variable { order: 1 } = info.kind else { return Ok(()) };
+        let q = info.base;
+        let ruled = self.kinematic.iter().any(|(k, _)| *k == q);
+        let declared_first_order = self
+            .bindings
+            .values()
+            .any(|b| matches!(b, Binding::Symbol(e, 1) if self.model.ar.as_symbol(*e) == Some(q)));
+        if ruled || !declared_first_order || self.model.speeds().contains(&q) {
+            return Ok(());
+        }
+        self.kinematic.push((q, value));
+        let q = self.model.ar.symbol_expr(q);
+        self.model.set_kinematics(q, value).at(span)?;
+        self.prepared = false;
         Ok(())
     }
 

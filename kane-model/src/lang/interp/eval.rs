@@ -235,6 +235,12 @@ impl Interpreter {
         if let Some(x) = self.solved.get(key) {
             return Ok(Value::Scalar(*x));
         }
+        // A matrix assigned entry by entry (B[1,1] = ...), even one named like a frame.
+        if !matches!(self.bindings.get(key), Some(Binding::Value(_) | Binding::Symbol(..))) {
+            if let Some(v) = self.arrays.get(key).and_then(|a| super::value::array_value(a)) {
+                return Ok(v);
+            }
+        }
         if !self.bindings.contains_key(key) {
             if let Some((a, b)) = self.dcm_frames(key) {
                 let m = self.model.dcm(a, b).at(fail)?;
@@ -269,6 +275,11 @@ impl Interpreter {
         }
         if let Some(Binding::Value(v)) = self.bindings.get(&primed) {
             return Ok(v.clone());
+        }
+        if self.rates_solved && primes == 1 {
+            if let Some(x) = self.speed_rate_solved(&primed, &e.span)? {
+                return Ok(Value::Scalar(x));
+            }
         }
         match self.bindings.get(key).cloned() {
             Some(Binding::Symbol(x, _)) => {

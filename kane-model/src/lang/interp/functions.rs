@@ -40,6 +40,14 @@ impl Interpreter {
             "EVALUATE" | "REPLACE" | "EXPLICIT" | "FACTOR" | "ARRANGE" | "EXPAND" | "COEF" | "RHS" => {
                 self.scalar_function(&upper, args, e)
             }
+            // Autolev's Z variables name parts of an expression; its value is unchanged.
+            "ZEE" => {
+                let x = args
+                    .first()
+                    .ok_or_else(|| Diagnostic::error(e.span.clone(), "ZEE takes an expression"))?;
+                self.eval(x)
+            }
+            "INPUT" => self.input_value(args, e),
             "FR" | "FRSTAR" | "KE" | "MOMENTUM" | "MASS" | "CM" | "INERTIA" => {
                 self.mass_function(&upper, args, e)
             }
@@ -73,6 +81,21 @@ impl Interpreter {
                     format!("FACTORIAL of {x}: expected a whole number from 0 to 170"),
                 ))
             }
+        };
+        Ok(Value::Scalar(self.number_expr(v).at(&e.span)?))
+    }
+
+    /// `INPUT(X)`: the value INPUT gave X so far.
+    fn input_value(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
+        super::arity("INPUT", args, 1, &e.span)?;
+        let ExprKind::Name { name, primes, suffix: 0 } = &args[0].kind else {
+            return Err(Diagnostic::error(args[0].span.clone(), "INPUT takes a name"));
+        };
+        let key = format!("{name}{}", "'".repeat(*primes as usize));
+        let Some(v) = self.inputs.iter().rev().find(|i| i.name.eq_ignore_ascii_case(&key)).map(|i| i.value)
+        else {
+            return Err(Diagnostic::error(args[0].span.clone(), format!("`{key}` has no INPUT value yet"))
+                .with_help("give it one in an INPUT line before this statement"));
         };
         Ok(Value::Scalar(self.number_expr(v).at(&e.span)?))
     }
@@ -210,6 +233,7 @@ pub(crate) const KNOWN_CALLS: &[&str] = &[
     "V1PT",
     "V2PTS",
     "VECTOR",
+    "ZEE",
 ];
 
 /// The known command, function or session command nearest to `upper` (at most two edits
@@ -221,7 +245,8 @@ pub(crate) fn nearest_command(upper: &str) -> Option<&'static str> {
         .chain(session)
         .chain(&["UNITSYSTEM", "UNITS", "INPUT", "OUTPUT", "CODE"])
         .map(|k| (super::names::edit_distance(upper, k), *k))
-        .filter(|(d, k)| *d <= 2 && *d < k.len())
+        // Two edits turn short names into unrelated ones (EXIT -> EIG): one for four letters or fewer.
+        .filter(|(d, k)| *d <= if upper.len().min(k.len()) <= 4 { 1 } else { 2 } && *d < k.len())
         .min()
         .map(|(_, k)| k)
 }

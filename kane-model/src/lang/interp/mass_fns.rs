@@ -48,7 +48,8 @@ impl Interpreter {
         }
     }
 
-    /// `MOMENTUM(LINEAR)` or `MOMENTUM(ANGULAR, O)`, in the Newtonian frame.
+    /// `MOMENTUM(LINEAR [, B, P, ...])` or `MOMENTUM(ANGULAR, O [, B, P, ...])`, in the
+    /// Newtonian frame, of the masses named or of all of them.
     fn momentum(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
         let fail: &Span = &e.span;
         self.prepare(&e.span)?;
@@ -58,15 +59,19 @@ impl Interpreter {
         };
         let n = self.model.newtonian();
         match which.as_str() {
-            "ANGULAR" if args.len() == 2 => {
+            "ANGULAR" if args.len() >= 2 => {
                 let o = self.point_arg(&args[1])?;
-                Ok(Value::Vector(self.model.angular_momentum(o, n).at(fail)?))
+                let masses = self.mass_list(&args[2..], &e.span)?;
+                Ok(Value::Vector(self.model.angular_momentum_of(&masses, o, n).at(fail)?))
             }
-            "LINEAR" if args.len() == 1 => {
-                let masses = self.mass_list(&[], &e.span)?;
+            "LINEAR" => {
+                let masses = self.mass_list(&args[1..], &e.span)?;
                 Ok(Value::Vector(self.model.linear_momentum(&masses, n).at(fail)?))
             }
-            _ => Err(Diagnostic::error(e.span.clone(), "MOMENTUM takes (LINEAR) or (ANGULAR, point)")),
+            _ => Err(Diagnostic::error(
+                e.span.clone(),
+                "MOMENTUM takes (LINEAR [, masses]) or (ANGULAR, point [, masses])",
+            )),
         }
     }
 

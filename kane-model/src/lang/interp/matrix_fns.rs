@@ -136,12 +136,23 @@ impl Interpreter {
         }
     }
 
-    /// `MATRIX(A, D>>)`: the measure numbers `A_i . D . A_j` of a dyadic.
+    /// `MATRIX(A, D>>)`: the measure numbers `A_i . D . A_j` of a dyadic; `MATRIX(A, V>)` the
+    /// column of a vector's measure numbers in A.
     fn dyadic_matrix(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
         let fail: &Span = &e.span;
         let f = self.frame_arg(&args[0])?;
-        let Value::Dyadic(dy) = self.eval(&args[1])? else {
-            return Err(Diagnostic::error(args[1].span.clone(), "MATRIX takes a frame and a dyadic"));
+        let dy = match self.eval(&args[1])? {
+            Value::Dyadic(dy) => dy,
+            Value::Vector(v) => {
+                let data = self.model.express(&v, f).at(fail)?.to_vec();
+                return Ok(Value::Matrix { rows: 3, cols: 1, data });
+            }
+            _ => {
+                return Err(Diagnostic::error(
+                    args[1].span.clone(),
+                    "MATRIX takes a frame and a dyadic or a vector",
+                ))
+            }
         };
         let mut data = Vec::with_capacity(9);
         for i in 1..=3 {
@@ -155,10 +166,15 @@ impl Interpreter {
         Ok(Value::Matrix { rows: 3, cols: 3, data })
     }
 
-    /// `VECTOR(A, [x; y; z])`: the vector with those measure numbers in A.
+    /// `VECTOR(A, [x; y; z])` or `VECTOR(A, x, y, z)`: the vector with those measure numbers
+    /// in A.
     fn column_vector(&mut self, args: &[Expr]) -> IResult<Value> {
         let f = self.frame_arg(&args[0])?;
-        let (_, _, d) = self.matrix_arg(&args[1])?;
+        let d = if args.len() == 4 {
+            args[1..].iter().map(|a| self.scalar(a)).collect::<IResult<Vec<_>>>()?
+        } else {
+            self.matrix_arg(&args[1])?.2
+        };
         if d.len() != 3 {
             return Err(Diagnostic::error(args[1].span.clone(), "VECTOR needs three measure numbers"));
         }
@@ -172,7 +188,8 @@ fn check_arguments(upper: &str, args: &[Expr], span: &Span) -> IResult<()> {
         "TRANSPOSE" | "TRACE" | "DET" => (1, 1),
         "ELEMENT" => (3, 3),
         "DIAGMAT" => (2, 3),
-        "MATRIX" | "VECTOR" => (2, 2),
+        "MATRIX" => (2, 2),
+        "VECTOR" => (2, 4),
         _ => (1, usize::MAX),
     };
     if (least..=most).contains(&args.len()) {

@@ -127,6 +127,8 @@ pub struct LoadedModel {
     /// The names statements that failed mention: checks of what they would have set up are
     /// follow-on errors.
     pub(crate) tainted: cascade::Tainted,
+    /// The formulas of SPECIFIED quantities (see [`Interpreter`]'s).
+    pub(crate) formulas: FxHashMap<String, ExprId>,
 }
 
 impl LoadedModel {
@@ -145,20 +147,29 @@ impl LoadedModel {
         let key = name.to_ascii_uppercase();
         match self.bindings.get(&key) {
             Some(Binding::Value(v)) => Some(v.clone()),
-            _ => {
-                // EQN[1], EQN[2], ...: a column of scalars.
-                let mut entries = self.arrays.get(&key)?.clone();
-                entries.sort_by(|a, b| a.0.cmp(&b.0));
-                let data = entries
-                    .into_iter()
-                    .map(|(i, v)| match (i.as_slice(), v) {
-                        ([_], Value::Scalar(x)) => Some(x),
-                        _ => None,
-                    })
-                    .collect::<Option<Vec<ExprId>>>()?;
-                Some(Value::column(data))
-            }
+            // EQN[1], EQN[2], ...: a column of scalars (B[i, j]: a matrix).
+            _ => value::array_value(self.arrays.get(&key)?),
         }
+    }
+
+    /// The VARIABLES declared without a derivative (`VARIABLES X`) that are neither coordinates
+    /// nor speeds: quantities the file lets vary from outside, as parameters.
+    pub(crate) fn unstated_variables(&self) -> Vec<crate::expr::SymbolId> {
+        let m = &self.model;
+        let states: Vec<crate::expr::SymbolId> = m.coordinates().iter().chain(m.speeds()).copied().collect();
+        let mut out: Vec<_> = self
+            .bindings
+            .values()
+            .filter_map(|b| match b {
+                Binding::Symbol(e, 0) => m.ar.as_symbol(*e),
+                _ => None,
+            })
+            .filter(|s| matches!(m.ar.symbol_info(*s).kind, crate::expr::SymbolKind::Variable { order: 0 }))
+            .filter(|s| !states.contains(s) && !m.auxiliary_speeds().contains(s))
+            .collect();
+        out.sort();
+        out.dedup();
+        out
     }
 
     /// The INPUT value of `name` (case-insensitive).
@@ -207,6 +218,13 @@ pub(crate) struct Interpreter {
     pub(crate) tainted: cascade::Tainted,
     /// The points whose velocities or accelerations the statement running has read.
     pub(crate) kinematic_reads: Vec<PointId>,
+    /// The formulas given to SPECIFIED quantities and their derivatives (`T = ...`, `DA' = ...`),
+    /// by upper-cased name with its primes: put into the equations and outputs at the end, as
+    /// Autolev's code evaluates them first; the names themselves stay quantities.
+    pub(crate) formulas: FxHashMap<String, ExprId>,
+    /// True once SOLVE(ZERO, U1', ...) solved the equations of motion: `U1'` then reads the
+    /// rate solved (formed as an expression when first read).
+    pub(crate) rates_solved: bool,
 }
 
 type IResult<T> = Result<T, Diagnostic>;
@@ -279,6 +297,8 @@ impl Interpreter {
             kane_sums: Default::default(),
             tainted: Default::default(),
             kinematic_reads: Vec::new(),
+            formulas: FxHashMap::default(),
+            rates_solved: false,
         }
     }
 
@@ -315,7 +335,7 @@ impl Interpreter {
     pub(crate) fn put_specified_formulas(&mut self) {
         let Some(eqs) = self.equations.as_mut() else { return };
         let solved: Vec<_> = eqs.loads.iter().flat_map(|l| l.loads.clone()).collect();
-        let put = specified::specified_formulas(&mut self.model, &self.bindings).and_then(|map| {
+        let put = specified::specified_formulas(&mut self.model, &self.formulas).and_then(|map| {
             let given = solved.iter().find(|s| map.contains_key(&self.model.ar.symbol_expr(**s)));
             if let Some(s) = given {
                 let name = self.model.ar.symbol_info(*s).name.clone();
@@ -331,7 +351,15 @@ impl Interpreter {
         }
     }
 
-    pub(crate) fn finish(self, text: String, parts: Vec<super::diagnostic::SourcePart>) -> LoadedModel {
+    pub(crate) fn finish(mut self, text: String, parts: Vec<super::diagnostic::SourcePart>) -> LoadedModel {
+        // The systems CODE ALGEBRAIC and NONLINEAR solve read the SPECIFIED quantities' formulas.
+        if let Ok(map) = specified::specified_formulas(&mut self.model, &self.formulas) {
+            for system in self.code.iter_mut().filter_map(|c| c.system.as_mut()) {
+                if let Ok(e) = self.model.ar.subs_many(&system.equations, &map) {
+                    system.equations = e;
+                }
+            }
+        }
         LoadedModel {
             model: self.model,
             equations: self.equations,
@@ -347,6 +375,7 @@ impl Interpreter {
             text,
             parts,
             tainted: self.tainted,
+            formulas: self.formulas,
         }
     }
 }

@@ -218,42 +218,38 @@ impl Interpreter {
     /// `u'` of a speed named `key` (`U2'`) from the equations of motion solved symbolically, for
     /// an unconstrained model of at most [`SYMBOLIC_RATES_UP_TO`] speeds (larger ones are solved
     /// numerically only); None for a name that is not a speed's rate.
-    fn speed_rate_solved(&mut self, key: &str, span: &Span) -> IResult<Option<ExprId>> {
+    pub(crate) fn speed_rate_solved(&mut self, key: &str, span: &Span) -> IResult<Option<ExprId>> {
         let Some(eqs) = self.equations.clone() else { return Ok(None) };
-        let ar = &mut self.model.ar;
-        let Some(k) =
-            eqs.speed_derivatives.iter().position(|s| ar.symbol_info(*s).name.eq_ignore_ascii_case(key))
-        else {
+        let ar = &self.model.ar;
+        let named = |s: &crate::expr::SymbolId| ar.symbol_info(*s).name.eq_ignore_ascii_case(key);
+        let dependent_rates = eqs.constraints.as_ref().map(|c| c.dependent_rates.clone()).unwrap_or_default();
+        if !eqs.speed_derivatives.iter().chain(&dependent_rates).any(named) {
             return Ok(None);
-        };
-        let n = eqs.speeds.len();
-        if eqs.constraints.is_some() || eqs.loads.is_some() || n > SYMBOLIC_RATES_UP_TO {
+        }
+        if let Some(x) = self.solved.get(&key.to_ascii_uppercase()) {
+            return Ok(Some(*x));
+        }
+        let n = eqs.speeds.len() + dependent_rates.len();
+        if n > SYMBOLIC_RATES_UP_TO {
             return Err(Diagnostic::error(
                 span.clone(),
-                format!(
-                    "RHS({key}) of a model with {n} speeds, constraints or loads is not formed symbolically"
-                ),
+                format!("{key} of a model with {n} speeds is not formed symbolically (at most {SYMBOLIC_RATES_UP_TO})"),
             )
             .with_help("evaluate the rates with `kane eval` or linearise with `kane linearize`"));
         }
-        let mut zero = Vec::with_capacity(n);
-        for r in 0..n {
-            let mut terms = vec![eqs.forcing[r]];
-            for (m, u) in eqs.mass_matrix[r].iter().zip(&eqs.speed_derivatives) {
-                let u = ar.symbol_expr(*u);
-                let t = ar.mul(&[*m, u]).at(span)?;
-                terms.push(ar.neg(t).at(span)?);
-            }
-            zero.push(ar.add(&terms).at(span)?);
+        let rates = eqs.symbolic_rates(&mut self.model.ar).at(span)?;
+        let ar = &self.model.ar;
+        let pairs = eqs
+            .speed_derivatives
+            .iter()
+            .zip(&rates.speeds)
+            .chain(dependent_rates.iter().zip(&rates.dependent_rates));
+        for (s, x) in pairs {
+            self.solved.insert(ar.symbol_info(*s).name.to_ascii_uppercase(), *x);
         }
-        let solution = ar.solve_linear(&zero, &eqs.speed_derivatives).at(span)?;
-        for (s, x) in eqs.speed_derivatives.iter().zip(&solution) {
-            let name = ar.symbol_info(*s).name.to_ascii_uppercase();
-            self.solved.insert(name, *x);
-        }
-        Ok(Some(solution[k]))
+        Ok(self.solved.get(&key.to_ascii_uppercase()).copied())
     }
 }
 
-/// The most speeds whose rates RHS solves symbolically.
-const SYMBOLIC_RATES_UP_TO: usize = 4;
+/// The most speeds (independent and dependent) whose rates are formed as expressions.
+const SYMBOLIC_RATES_UP_TO: usize = 16;

@@ -70,12 +70,13 @@ impl Interpreter {
                 Ok(())
             }
             StmtKind::Code { kind, args, file } => {
-                // CODE DYNAMICS() takes no arguments; ALGEBRAIC/NONLINEAR name equations.
+                // CODE DYNAMICS() takes no arguments; ALGEBRAIC/NONLINEAR name equations, and
+                // CODE ALGEBRAIC() with none asks for the OUTPUT quantities.
                 if kind == "DYNAMICS" && self.equations.is_none() {
-                    return Err(Diagnostic::error(s.span.clone(), "CODE DYNAMICS() needs Kane's equations")
-                        .with_help("call KANE() (after ZERO = FR() + FRSTAR()) before CODE DYNAMICS()"));
+                    self.equations_for_code(&s.span)?;
                 }
                 let system = match kind.as_str() {
+                    "ALGEBRAIC" if args.is_empty() => None,
                     "ALGEBRAIC" | "NONLINEAR" => Some(self.algebraic_system(kind, args, &s.span)?),
                     _ => None,
                 };
@@ -92,6 +93,17 @@ impl Interpreter {
             StmtKind::Assign { target, op, value } => self.assign(target, *op, value),
             StmtKind::Expr(e) => self.command(e),
         }
+    }
+
+    /// Kane's equations for CODE DYNAMICS() in a file that formed `ZERO = FR() + FRSTAR()`
+    /// without KANE() or SOLVE: Autolev's code solves them for the speeds' rates at each step,
+    /// as KANE() does.
+    fn equations_for_code(&mut self, span: &Span) -> IResult<()> {
+        if self.kane_sums.is_empty() {
+            return Err(Diagnostic::error(span.clone(), "CODE DYNAMICS() needs equations of motion")
+                .with_help("form them first: ZERO = FR() + FRSTAR(), then KANE() or SOLVE(ZERO, U1', ...)"));
+        }
+        self.form_kane(span)
     }
 
     /// `MASS B = M, P = m, ...`.
@@ -230,9 +242,15 @@ impl Interpreter {
             }
         }
         if let Some(v) = &item.value {
-            // CONSTANTS F = 3 and SPECIFIED F1 = expr: a value is a definition for that name.
+            // CONSTANTS F = 3: a value is a definition for that name; SPECIFIED F1 = expr is
+            // F1's formula.
             let val = self.eval(v)?;
-            self.bindings.insert(item.name.to_ascii_uppercase(), Binding::Value(val));
+            let key = format!("{}{}", item.name.to_ascii_uppercase(), item.tail.to_ascii_uppercase());
+            if kind == DeclKind::Specified {
+                self.specified_formula(&key, &val, &item.span)?;
+            } else {
+                self.bindings.insert(item.name.to_ascii_uppercase(), Binding::Value(val));
+            }
         }
         Ok(())
     }

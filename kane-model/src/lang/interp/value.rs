@@ -26,6 +26,24 @@ pub enum Value {
     },
 }
 
+/// The matrix an array assigned entry by entry makes (`EQN[1]`, `EQN[2]` a column; `B[1,1]`,
+/// ..., `B[2,3]` a 2x3 matrix), when every entry is a scalar and none is missing.
+pub(crate) fn array_value(entries: &[(Vec<i64>, Value)]) -> Option<Value> {
+    let dims = entries.first()?.0.len();
+    if !(1..=2).contains(&dims) || entries.iter().any(|(i, _)| i.len() != dims || i.iter().any(|k| *k < 1)) {
+        return None;
+    }
+    let rows = entries.iter().map(|(i, _)| i[0]).max()? as usize;
+    let cols = if dims == 2 { entries.iter().map(|(i, _)| i[1]).max()? as usize } else { 1 };
+    let mut data: Vec<Option<ExprId>> = vec![None; rows * cols];
+    for (i, v) in entries {
+        let Value::Scalar(x) = v else { return None };
+        let at = (i[0] as usize - 1) * cols + if dims == 2 { i[1] as usize - 1 } else { 0 };
+        data[at] = Some(*x);
+    }
+    Some(Value::Matrix { rows, cols, data: data.into_iter().collect::<Option<Vec<_>>>()? })
+}
+
 impl Value {
     /// A word for messages: "a scalar", "a vector", ...
     pub fn kind(&self) -> &'static str {

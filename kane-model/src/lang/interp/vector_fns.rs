@@ -4,13 +4,12 @@
 //! [`Value`]; the vector work itself is done by the mechanics layer's [`crate::mechanics::Model`]
 //! methods (`dot`, `cross`, `dt_in`, `partial_in`, ...).
 
-use crate::expr::ExprId;
-
 use super::super::ast::{Expr, ExprKind};
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
 use super::value::Value;
 use super::{At, IResult, Interpreter};
+use crate::expr::ExprId;
 
 impl Interpreter {
     /// DOT, CROSS, MAG, UNITVEC, EXPRESS, DT, D, PARTIALS.
@@ -83,9 +82,17 @@ impl Interpreter {
                 self.map_scalars(&v, &e.span, |m, x| m.dt(x))
             }
             2 => {
-                let v = self.vector(&args[0])?;
                 let f = self.frame_arg(&args[1])?;
-                Ok(Value::Vector(self.model.dt_in(&v, f).at(&e.span)?))
+                match self.eval(&args[0])? {
+                    // A scalar's rate is the same in every frame.
+                    v @ (Value::Scalar(_) | Value::Matrix { .. }) => {
+                        self.map_scalars(&v, &e.span, |m, x| m.dt(x))
+                    }
+                    v => {
+                        let v = self.vector_of(v, &args[0])?;
+                        Ok(Value::Vector(self.model.dt_in(&v, f).at(&e.span)?))
+                    }
+                }
             }
             _ => Err(Diagnostic::error(e.span.clone(), "DT takes (x) or (v>, frame)")),
         }
@@ -97,12 +104,22 @@ impl Interpreter {
             return Err(Diagnostic::error(e.span.clone(), "D takes (x, y) or (v>, y, frame)"));
         }
         if let (2, ExprKind::Matrix(list)) = (args.len(), &args[1].kind) {
-            return self.jacobian(&args[0], list, e);
+            let list: Vec<Expr> = list.iter().flatten().cloned().collect();
+            return self.jacobian(&args[0], &list, e);
         }
-        if let Some(value) = self.derivative_by_specified(args, e)? {
-            return Ok(value);
-        }
-        let y = self.scalar(&args[1])?;
+        let y = match self.eval(&args[1])? {
+            // D(F, Q) with Q a column or row of symbols: the Jacobian.
+            Value::Matrix { data, .. } if args.len() == 2 => {
+                return self.jacobian_by(&args[0], &data, &args[1], e)
+            }
+            Value::Scalar(y) => y,
+            other => {
+                return Err(Diagnostic::error(
+                    args[1].span.clone(),
+                    format!("D differentiates with respect to a symbol, not {}", other.kind()),
+                ))
+            }
+        };
         let s = self.model.ar.as_symbol(y).ok_or_else(|| {
             Diagnostic::error(args[1].span.clone(), "D differentiates with respect to a symbol")
         })?;
@@ -116,14 +133,24 @@ impl Interpreter {
 
     /// `D(F, [x, y, ...])`: the Jacobian, a row per entry of `F` (a scalar or a matrix's
     /// entries row by row) and a column per variable.
-    fn jacobian(&mut self, f: &Expr, list: &[Vec<Expr>], e: &Expr) -> IResult<Value> {
+    fn jacobian(&mut self, f: &Expr, list: &[Expr], e: &Expr) -> IResult<Value> {
         let mut vars = Vec::new();
-        for x in list.iter().flatten() {
-            let v = self.scalar(x)?;
-            vars.push(self.model.ar.as_symbol(v).ok_or_else(|| {
-                Diagnostic::error(x.span.clone(), "D differentiates with respect to a symbol")
-            })?);
+        for x in list {
+            vars.push(self.substitution_key(x)?);
         }
+        self.jacobian_by(f, &vars, &list.first().map_or_else(|| e.clone(), Clone::clone), e)
+    }
+
+    /// The Jacobian of `f` by the symbols `vars` (`at` is where they are written).
+    fn jacobian_by(&mut self, f: &Expr, vars: &[ExprId], at: &Expr, e: &Expr) -> IResult<Value> {
+        let vars = vars
+            .iter()
+            .map(|v| {
+                self.model.ar.as_symbol(*v).ok_or_else(|| {
+                    Diagnostic::error(at.span.clone(), "D differentiates with respect to symbols")
+                })
+            })
+            .collect::<IResult<Vec<_>>>()?;
         let entries = match self.eval(f)? {
             Value::Scalar(x) => vec![x],
             Value::Matrix { data, .. } => data,
@@ -162,29 +189,5 @@ impl Interpreter {
                 Ok(Value::Scalar(self.model.dot(&va, &vb).at(fail)?))
             }
         }
-    }
-
-    /// `D(F, S)` for a SPECIFIED `S` the file gave a formula: `F` is read with `S` as itself,
-    /// differentiated, then `S` replaced by its formula. None when `args[1]` is no such name.
-    fn derivative_by_specified(&mut self, args: &[Expr], e: &Expr) -> IResult<Option<Value>> {
-        let ExprKind::Name { name, primes: 0, suffix: 0 } = &args[1].kind else { return Ok(None) };
-        let key = name.to_ascii_uppercase();
-        let Some(super::Binding::Value(Value::Scalar(formula))) = self.bindings.get(&key).cloned() else {
-            return Ok(None);
-        };
-        let Some(s) = self.model.ar.lookup(&key) else { return Ok(None) };
-        if !matches!(self.model.ar.symbol_info(s).kind, crate::expr::SymbolKind::Specified { .. }) {
-            return Ok(None);
-        }
-        let itself = self.model.ar.symbol_expr(s);
-        self.bindings.insert(key.clone(), super::Binding::Symbol(itself, 0));
-        let read = self.eval(&args[0]);
-        self.bindings.insert(key, super::Binding::Value(Value::Scalar(formula)));
-        let by: rustc_hash::FxHashMap<ExprId, ExprId> = [(itself, formula)].into_iter().collect();
-        let value = self.map_scalars(&read?, &e.span, |m, x| {
-            let d = m.ar.diff(x, s)?;
-            Ok(m.ar.subs(d, &by)?)
-        })?;
-        Ok(Some(value))
     }
 }
