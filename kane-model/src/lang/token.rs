@@ -22,7 +22,7 @@ pub enum Tok {
         /// Number of `>` right after it.
         suffix: u8,
     },
-    /// One of `+ - * / ^ = ( ) [ ] { } , ; : '`.
+    /// One of `+ - * / ^ = ( ) [ ] { } , ; : ' \`.
     Punct(char),
     /// `+=`.
     PlusAssign,
@@ -176,8 +176,9 @@ pub fn lex_from(src: &str, from: usize) -> (Vec<Token>, Vec<LexError>) {
                 out.push(Token { tok: Tok::ColonAssign, span: start..start + 2 });
                 i += 2;
             }
+            // `\` only in file names (CODE, RUN), whose text is taken as written.
             b'+' | b'-' | b'*' | b'/' | b'^' | b'=' | b'(' | b')' | b'[' | b']' | b'{' | b'}' | b','
-            | b';' | b':' | b'\'' => {
+            | b';' | b':' | b'\'' | b'\\' => {
                 out.push(Token { tok: Tok::Punct(c as char), span: start..start + 1 });
                 i += 1;
             }

@@ -120,7 +120,9 @@ impl Model {
         all
     }
 
-    /// Substitution of each declared coordinate derivative `q'` by its kinematic equation.
+    /// Substitution of each declared coordinate derivative `q'` by its kinematic equation, the
+    /// equations' own right-hand sides read through the others (`Q6' = f(Q7')` given before
+    /// `Q7' = U7` reads `f(U7)`, as Autolev's code evaluates `Q7'` first).
     pub(crate) fn kinematics_map(&mut self) -> rustc_hash::FxHashMap<ExprId, ExprId> {
         let mut map = rustc_hash::FxHashMap::default();
         let rules: Vec<(SymbolId, ExprId)> = self.kinematics.iter().map(|(q, r)| (*q, *r)).collect();
@@ -129,6 +131,21 @@ impl Model {
             if let Some(qd) = self.ar.lookup(&name) {
                 let key = self.ar.symbol_expr(qd);
                 map.insert(key, rhs);
+            }
+        }
+        // A chain of equations is at most as long as there are coordinates.
+        for _ in 0..map.len() {
+            let mut changed = false;
+            let entries: Vec<(ExprId, ExprId)> = map.iter().map(|(k, v)| (*k, *v)).collect();
+            for (k, v) in entries {
+                let Ok(read) = self.ar.subs(v, &map) else { continue };
+                if read != v {
+                    map.insert(k, read);
+                    changed = true;
+                }
+            }
+            if !changed {
+                break;
             }
         }
         map

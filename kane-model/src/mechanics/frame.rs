@@ -144,22 +144,48 @@ impl Model {
     }
 
     /// Sets the angular velocity of `frame`, oriented through a chain of frames, in `reference`
-    /// to `w` (in speeds): the three coordinate rates of the chain without kinematic equations
-    /// are solved from it (SymPy's `kd` equations, `w_chain = w`), and `frame` turns in its
-    /// parent at `w - W_parent_reference`, so `W_frame_reference` is `w` as written. Returns
-    /// the kinematic equations set.
+    /// to `w`: `frame` turns in its parent at `w - W_parent_reference`, so `W_frame_reference`
+    /// is `w` as written.
     pub fn set_angular_velocity_through(
         &mut self,
         frame: FrameId,
         reference: FrameId,
         w: Vector,
+    ) -> Result<()> {
+        let parent = self.frames[frame.index()].parent.unwrap_or(reference);
+        let carried = self.angular_velocity(parent, reference)?;
+        let relative = self.sub_vectors(&w, &carried)?;
+        self.set_angular_velocity(frame, relative);
+        Ok(())
+    }
+
+    /// The kinematic equations an angular velocity `w` of `frame` in `reference`, given in
+    /// speeds, implies for the coordinate rates of the chain of orientations between them that
+    /// have none yet (SymPy's `kd` equations, `w_chain = w`): none when `w` is written in the
+    /// coordinates' rates or the chain's rates all have equations; else all three, set on the
+    /// model and returned.
+    pub fn chain_kinematics(
+        &mut self,
+        frame: FrameId,
+        reference: FrameId,
+        w: &Vector,
     ) -> Result<Vec<(SymbolId, ExprId)>> {
-        let chain = self.angular_velocity(frame, reference)?;
-        let difference = self.sub_vectors(&chain, &w)?;
+        if self.vector_has_rates(w)? {
+            return Ok(Vec::new());
+        }
+        // The chain's own angular velocity from the orientations' rates, frame by frame.
+        let (up_f, up_r) = self.paths_to_common(frame, reference)?;
+        let mut chain = Vector::zero();
+        for &f in &up_f[..up_f.len() - 1] {
+            let rel = self.orientation_angular_velocity(f)?;
+            chain = self.add_vectors(&chain, &rel)?;
+        }
+        for &f in &up_r[..up_r.len() - 1] {
+            let rel = self.orientation_angular_velocity(f)?;
+            chain = self.sub_vectors(&chain, &rel)?;
+        }
+        let difference = self.sub_vectors(&chain, w)?;
         let equations = self.express(&difference, frame)?;
-        // Written in the coordinates' rates (`(Q4' + Q3')*N3>`), it is the chain's own: nothing
-        // to solve for; otherwise it names speeds the chain's rates follow from.
-        let in_rates = self.vector_has_rates(&w)?;
         let rates: Vec<SymbolId> = self
             .ar
             .free_symbols(&equations)
@@ -170,11 +196,7 @@ impl Model {
                     && !self.kinematics.contains_key(&info.base)
             })
             .collect();
-        if in_rates {
-            let parent = self.frames[frame.index()].parent.unwrap_or(reference);
-            let carried = self.angular_velocity(parent, reference)?;
-            let relative = self.sub_vectors(&w, &carried)?;
-            self.set_angular_velocity(frame, relative);
+        if rates.is_empty() {
             return Ok(Vec::new());
         }
         if rates.len() != 3 {
@@ -183,7 +205,7 @@ impl Model {
                 frame: self.frame_name(frame).to_string(),
                 reference: self.frame_name(reference).to_string(),
                 found: rates.len(),
-                names: if names.is_empty() { "none".into() } else { names.join(", ") },
+                names: names.join(", "),
             });
         }
         let solved = self.ar.solve_linear(&equations, &rates)?;
@@ -195,10 +217,6 @@ impl Model {
             self.set_kinematics(q_expr, rhs)?;
             set.push((q, rhs));
         }
-        let parent = self.frames[frame.index()].parent.unwrap_or(reference);
-        let carried = self.angular_velocity(parent, reference)?;
-        let relative = self.sub_vectors(&w, &carried)?;
-        self.set_angular_velocity(frame, relative);
         Ok(set)
     }
 
@@ -447,9 +465,17 @@ impl Model {
     /// The angular velocity of `frame` in its parent implied by its orientation's rates (even
     /// where an angular velocity is set explicitly); zero for a frame with no orientation.
     pub fn orientation_angular_velocity(&mut self, frame: FrameId) -> Result<Vector> {
-        let parent = self.frames[frame.index()].parent.unwrap_or(self.newtonian);
         match self.frames[frame.index()].orientation.clone() {
-            Some(Orientation::Axis { axis, angle }) => {
+            Some(o) => self.orientation_rates(&o, frame),
+            None => Ok(Vector::zero()),
+        }
+    }
+
+    /// The angular velocity, in `frame`'s unit vectors, of a frame oriented by `orientation`
+    /// relative to its parent as its angles change (ANGVEL with a rotation sequence).
+    pub fn orientation_rates(&mut self, orientation: &Orientation, frame: FrameId) -> Result<Vector> {
+        match orientation.clone() {
+            Orientation::Axis { axis, angle } => {
                 let rate = self.dt(angle)?;
                 let rate = if axis < 0 { self.ar.neg(rate)? } else { rate };
                 let z = self.ar.zero();
@@ -458,9 +484,9 @@ impl Model {
                 // The rotation axis has the same measure numbers in parent and child.
                 Ok(Vector::new(frame, m))
             }
-            Some(_) => {
+            other => {
                 // Child-frame components from the skew matrix C^T dC/dt, C = parent . child.
-                let c = self.dcm(parent, frame)?;
+                let c = self.orientation_dcm(&other)?;
                 let mut cdot = c;
                 for row in cdot.iter_mut() {
                     for x in row.iter_mut() {
@@ -478,7 +504,6 @@ impl Model {
                 }
                 Ok(Vector::new(frame, w))
             }
-            None => Ok(Vector::zero()),
         }
     }
 

@@ -446,7 +446,10 @@ impl Model {
     pub fn kane_unformed(&mut self) -> Result<KaneEquations> {
         self.check_ready()?;
         let coordinates = self.coordinates.clone();
-        let kinematics = coordinates.iter().map(|q| self.kinematics[q]).collect();
+        let kinematics: Vec<ExprId> = coordinates.iter().map(|q| self.kinematics[q]).collect();
+        // Each right-hand side read through the others' (see `kinematics_map`).
+        let map = self.kinematics_map();
+        let kinematics = self.ar.subs_many(&kinematics, &map)?;
         let speeds = self.independent_speeds();
         let mut rates = self.speed_derivative_symbols()?;
         rates.truncate(speeds.len() + self.dependent_speeds().len());

@@ -78,7 +78,7 @@ impl Interpreter {
     /// `TAYLOR(F, lo:hi, X = a, Y = b, ...)`: the terms of total order `lo` to `hi` of `F`'s
     /// series about the point, `sum_k g^(k)(0) / k!` with `g(s) = F(a + s (x - a))`; an order
     /// `n` is `0:n`, and `X = a:DX` expands in the perturbation `DX` instead (`g(s) = F(a + s DX)`,
-    /// as Autolev's linearisations write it).
+    /// as Autolev's linearisations write it); a bare `X` is `X = 0`.
     fn taylor(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
         let usage = || {
             Diagnostic::error(
@@ -97,8 +97,14 @@ impl Interpreter {
         let s = self.model.ar.constant("TAYLOR'S PARAMETER").at(&e.span)?;
         let s_symbol = self.model.ar.as_symbol(s).ok_or_else(usage)?;
         let mut along = FxHashMap::default();
+        let zero = Expr { kind: ExprKind::Number { value: 0.0, suffix: 0 }, span: e.span.clone() };
         for a in &args[2..] {
-            let ExprKind::NamedArg(name, value) = &a.kind else { return Err(usage()) };
+            // A bare name expands about 0, as `X = 0`.
+            let (name, value) = match &a.kind {
+                ExprKind::NamedArg(name, value) => (name.as_ref(), value.as_ref()),
+                ExprKind::Name { .. } => (a, &zero),
+                _ => return Err(usage()),
+            };
             let x = self.substitution_key(name)?;
             let (point, step) = match &value.kind {
                 ExprKind::Range(point, step) => {

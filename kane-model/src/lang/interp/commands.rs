@@ -32,11 +32,14 @@ impl Interpreter {
         match upper.as_str() {
             "SIMPROT" => self.simprot(args, e),
             "V2PTS" | "A2PTS" | "V1PT" | "A1PT" => self.point_theorem(&upper, args, e),
+            // ANGVEL(A, B) forms W_B_A>; ANGVEL(A, B, BODY123, Q1, Q2, Q3) sets it to the
+            // rates of that rotation sequence.
+            "ANGVEL" if args.len() > 2 => self.angvel_by_sequence(args, &e.span),
             "ANGVEL" => {
                 super::arity(&upper, args, 2, &e.span)?;
                 let a = self.frame_arg(&args[0])?;
                 let b = self.frame_arg(&args[1])?;
-                self.model.angular_velocity(a, b).map(|_| ()).at(&e.span)
+                self.model.angular_velocity(b, a).map(|_| ()).at(&e.span)
             }
             "GRAVITY" => {
                 let Some((g, bodies)) = args.split_first() else {
@@ -126,20 +129,27 @@ impl Interpreter {
         Ok(())
     }
 
-    /// `SIMPROT(A, B, axis, angle)`: B turned from A about one of A's axes.
+    /// `SIMPROT(A, B, axis, angle)`: B turned from A about one of A's axes, or about any vector
+    /// fixed in A (its direction: the rotation by Rodrigues' formula).
     fn simprot(&mut self, args: &[Expr], e: &Expr) -> IResult<()> {
         let fail: &Span = &e.span;
         super::arity("SIMPROT", args, 4, &e.span)?;
         let parent = self.frame_arg(&args[0])?;
         let child = self.frame_arg(&args[1])?;
-        let axis = self.axis_arg(&args[2], parent)?;
         let mut angle = self.scalar(&args[3])?;
         if self.degrees && self.model.ar.free_symbols(&[angle]).is_empty() {
             // With DEGREES ON a numeric angle is in degrees.
             let k = self.model.ar.float(std::f64::consts::PI / 180.0).at(fail)?;
             angle = self.model.ar.mul(&[k, angle]).at(fail)?;
         }
-        self.model.orient(child, parent, Orientation::Axis { axis, angle }).at(fail)?;
+        let orientation = match self.axis_arg(&args[2], parent) {
+            Ok(axis) => Orientation::Axis { axis, angle },
+            Err(bad) => match self.eval(&args[2])? {
+                Value::Vector(v) => self.rotation_about(&v, parent, angle, fail)?,
+                _ => return Err(bad),
+            },
+        };
+        self.model.orient(child, parent, orientation).at(fail)?;
         self.sources.orientation(child, parent, &e.span);
         Ok(())
     }
@@ -279,29 +289,31 @@ impl Interpreter {
                 }
             },
         };
-        let mut names = Vec::new();
+        // Unknowns one by one, in a bracketed list (SOLVE(ZERO, [U4', U6'])) or a matrix of
+        // them by name (QDD = [Q1''; Q2''], SOLVE(ZERO, QDD)).
         let mut syms = Vec::new();
-        // Unknowns one by one or in a bracketed list: SOLVE(ZERO, [U4', U6']).
-        let unknowns: Vec<&Expr> = args[1..]
-            .iter()
-            .flat_map(|a| match &a.kind {
-                ExprKind::Matrix(rows) => rows.iter().flatten().collect::<Vec<_>>(),
-                _ => vec![a],
-            })
-            .collect();
-        for a in unknowns {
-            let ExprKind::Name { name, primes, .. } = &a.kind else {
-                return Err(Diagnostic::error(a.span.clone(), "SOLVE takes unknowns by name"));
+        for a in &args[1..] {
+            let found = match &a.kind {
+                ExprKind::Matrix(rows) => {
+                    rows.iter().flatten().map(|x| self.substitution_key(x)).collect::<IResult<Vec<_>>>()?
+                }
+                ExprKind::Name { .. } => match self.eval(a) {
+                    Ok(Value::Matrix { data, .. }) => data,
+                    _ => vec![self.substitution_key(a)?],
+                },
+                _ => vec![self.substitution_key(a)?],
             };
-            let x = self.scalar(a)?;
-            syms.push(
-                self.model
-                    .ar
-                    .as_symbol(x)
-                    .ok_or_else(|| Diagnostic::error(a.span.clone(), "an unknown must be a symbol"))?,
-            );
-            names.push(format!("{}{}", name.to_ascii_uppercase(), "'".repeat(*primes as usize)));
+            for x in found {
+                syms.push(
+                    self.model
+                        .ar
+                        .as_symbol(x)
+                        .ok_or_else(|| Diagnostic::error(a.span.clone(), "SOLVE takes unknowns by name"))?,
+                );
+            }
         }
+        let names: Vec<String> =
+            syms.iter().map(|s| self.model.ar.symbol_info(*s).name.to_ascii_uppercase()).collect();
         if self.equations.is_none() && self.are_speed_rates(&syms) {
             // The equations of motion: formed as KANE() does when they are FR() + FRSTAR(); the
             // rates are then assigned, as Autolev's SOLVE assigns them (read by name later).
@@ -367,6 +379,46 @@ impl Interpreter {
             }
         }
         Ok(())
+    }
+
+    /// The rotation by `angle` about the direction of `v` (fixed in `parent`), as direction
+    /// cosines `parent_i . child_j = cos a d_ij + (1 - cos a) k_i k_j - sin a e_ijl k_l`.
+    fn rotation_about(
+        &mut self,
+        v: &Vector,
+        parent: FrameId,
+        angle: ExprId,
+        span: &Span,
+    ) -> IResult<Orientation> {
+        let ar_err = |e: crate::expr::ExprError| Diagnostic::error(span.clone(), e.to_string());
+        let c = self.model.express(v, parent).at(span)?;
+        let ar = &mut self.model.ar;
+        let squares = c.iter().map(|x| ar.powi(*x, 2)).collect::<Result<Vec<_>, _>>().map_err(ar_err)?;
+        let norm = ar.add(&squares).map_err(ar_err)?;
+        let half = ar.rational(1, 2).map_err(ar_err)?;
+        let norm = ar.pow(norm, half).map_err(ar_err)?;
+        let k = c.iter().map(|x| ar.div(*x, norm)).collect::<Result<Vec<_>, _>>().map_err(ar_err)?;
+        let (cos, sin) = (ar.cos(angle).map_err(ar_err)?, ar.sin(angle).map_err(ar_err)?);
+        let one = ar.one();
+        let versine = ar.sub(one, cos).map_err(ar_err)?;
+        let mut m = [[ar.zero(); 3]; 3];
+        for (i, row) in m.iter_mut().enumerate() {
+            for (j, cell) in row.iter_mut().enumerate() {
+                let mut terms = vec![ar.mul(&[versine, k[i], k[j]]).map_err(ar_err)?];
+                if i == j {
+                    terms.push(cos);
+                }
+                // The cross term: -sin a (k x .)_ij, with (k x)_ij = -e_ijl k_l.
+                let l = 3 - i - j;
+                if i != j {
+                    let sign = if (j + 3 - i) % 3 == 1 { -1 } else { 1 };
+                    let s = ar.mul(&[sin, k[l]]).map_err(ar_err)?;
+                    terms.push(if sign < 0 { ar.neg(s).map_err(ar_err)? } else { s });
+                }
+                *cell = ar.add(&terms).map_err(ar_err)?;
+            }
+        }
+        Ok(Orientation::Dcm(m))
     }
 
     /// The axis of SIMPROT: +/-1..3, or a unit vector of the parent frame.

@@ -83,19 +83,44 @@ impl Interpreter {
             .with_help("assign the entry first, e.g. EQN[1] = ..."))
     }
 
-    /// `[a, b; c, d]`: a matrix of scalars.
+    /// `[a, b; c, d]`: a matrix of scalars; an entry may itself be a matrix, joined to its
+    /// neighbours in the row (same number of rows) and to the rows above and below (same
+    /// number of columns): `[FK; X]` appends X to the column FK.
     fn matrix_literal(&mut self, rows: &[Vec<Expr>], e: &Expr) -> IResult<Value> {
         let mut data = Vec::new();
-        let cols = rows.first().map_or(0, Vec::len);
+        let (mut height, mut width) = (0, None);
         for r in rows {
-            if r.len() != cols {
+            let mut blocks: Vec<(usize, usize, Vec<crate::expr::ExprId>)> = Vec::with_capacity(r.len());
+            for x in r {
+                blocks.push(match self.eval(x)? {
+                    Value::Scalar(s) => (1, 1, vec![s]),
+                    Value::Matrix { rows, cols, data } => (rows, cols, data),
+                    other => {
+                        return Err(Diagnostic::error(x.span.clone(), format!("a matrix holds scalars, not {}", other.kind()))
+                            .with_help("take measure numbers with DOT(v>, A1>), or the column of a vector with MATRIX(A, v>)"))
+                    }
+                });
+            }
+            let h = blocks.first().map_or(0, |b| b.0);
+            if blocks.iter().any(|b| b.0 != h) {
+                return Err(Diagnostic::error(
+                    e.span.clone(),
+                    "the entries of a matrix row have different numbers of rows",
+                ));
+            }
+            let w: usize = blocks.iter().map(|b| b.1).sum();
+            if width.is_some_and(|x| x != w) {
                 return Err(Diagnostic::error(e.span.clone(), "matrix rows have different lengths"));
             }
-            for x in r {
-                data.push(self.scalar(x)?);
+            width = Some(w);
+            for i in 0..h {
+                for (_, c, d) in &blocks {
+                    data.extend_from_slice(&d[i * c..(i + 1) * c]);
+                }
             }
+            height += h;
         }
-        Ok(Value::Matrix { rows: rows.len(), cols, data })
+        Ok(Value::Matrix { rows: height, cols: width.unwrap_or(0), data })
     }
 
     /// `a op b` for values of kinds the operator takes.

@@ -18,8 +18,7 @@ use super::value::Value;
 use super::{At, IResult, Interpreter};
 
 /// Functions known to Autolev that this implementation rejects, with the reason.
-const UNSUPPORTED: &[(&str, &str)] =
-    &[("INCLUDE", "term selection"), ("EXCLUDE", "term selection"), ("NICHECK", "Newtonian-inertia check")];
+const UNSUPPORTED: &[(&str, &str)] = &[("NICHECK", "Newtonian-inertia check")];
 
 impl Interpreter {
     /// Evaluates `NAME(args)`.
@@ -41,6 +40,7 @@ impl Interpreter {
                 self.scalar_function(&upper, args, e)
             }
             // Autolev's Z variables name parts of an expression; its value is unchanged.
+            "EXCLUDE" | "INCLUDE" => self.select_terms(&upper, args, e),
             "ZEE" => {
                 let x = args
                     .first()
@@ -85,17 +85,21 @@ impl Interpreter {
         Ok(Value::Scalar(self.number_expr(v).at(&e.span)?))
     }
 
-    /// `INPUT(X)`: the value INPUT gave X so far.
+    /// `INPUT(X)`: the value INPUT gave X so far; for a name assigned a number instead
+    /// (`A = PI/2`), that number (the value X has in Autolev's code).
     fn input_value(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
         super::arity("INPUT", args, 1, &e.span)?;
         let ExprKind::Name { name, primes, suffix: 0 } = &args[0].kind else {
             return Err(Diagnostic::error(args[0].span.clone(), "INPUT takes a name"));
         };
         let key = format!("{name}{}", "'".repeat(*primes as usize));
-        let Some(v) = self.inputs.iter().rev().find(|i| i.name.eq_ignore_ascii_case(&key)).map(|i| i.value)
-        else {
-            return Err(Diagnostic::error(args[0].span.clone(), format!("`{key}` has no INPUT value yet"))
-                .with_help("give it one in an INPUT line before this statement"));
+        let given = self.inputs.iter().rev().find(|i| i.name.eq_ignore_ascii_case(&key)).map(|i| i.value);
+        let v = match given {
+            Some(v) => v,
+            None => self.number(&args[0]).map_err(|_| {
+                Diagnostic::error(args[0].span.clone(), format!("`{key}` has no INPUT value yet"))
+                    .with_help("give it one in an INPUT line before this statement")
+            })?,
         };
         Ok(Value::Scalar(self.number_expr(v).at(&e.span)?))
     }

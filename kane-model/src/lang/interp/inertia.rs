@@ -61,11 +61,26 @@ impl Interpreter {
         let z = self.model.ar.zero();
         let (p12, p23, p31) = if v.len() == 6 { (v[3], v[4], v[5]) } else { (z, z, z) };
         let d = Dyadic::in_frame(frame, [[v[0], p12, p31], [p12, v[1], p23], [p31, p23, v[2]]]);
-        let d = match about {
-            Some(p) => self.central_from(b, p, &d, frame, span)?,
-            None => d,
-        };
-        self.model.set_inertia(b, d);
+        match about {
+            // Where BO is from P may come later: the central inertia waits for the equations.
+            Some(p) if self.model.position(self.model.body(b).mass_center, p).is_err() => {
+                self.pending_inertias.push((b, p, d, frame, span.clone()));
+            }
+            Some(p) => {
+                let d = self.central_from(b, p, &d, frame, span)?;
+                self.model.set_inertia(b, d);
+            }
+            None => self.model.set_inertia(b, d),
+        }
+        Ok(())
+    }
+
+    /// The central inertias of `INERTIA B_P` statements given before BO was located from P.
+    pub(crate) fn settle_inertias(&mut self) -> IResult<()> {
+        for (b, p, d, frame, span) in std::mem::take(&mut self.pending_inertias) {
+            let d = self.central_from(b, p, &d, frame, &span)?;
+            self.model.set_inertia(b, d);
+        }
         Ok(())
     }
 

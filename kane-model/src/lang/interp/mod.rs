@@ -225,6 +225,16 @@ pub(crate) struct Interpreter {
     /// True once SOLVE(ZERO, U1', ...) solved the equations of motion: `U1'` then reads the
     /// rate solved (formed as an expression when first read).
     pub(crate) rates_solved: bool,
+    /// The quantities MOTIONVARIABLES declared: where there are any, the generalized
+    /// coordinates and speeds are among them (VARIABLES are other quantities of time).
+    pub(crate) motion_variables: Vec<crate::expr::SymbolId>,
+    /// Angular velocities assigned through chains of orientations (`W_R_N> = U1*L1> + ...`),
+    /// with where: their kinematic equations are solved when the equations are formed, for the
+    /// chain's coordinates the file gave none.
+    pub(crate) chain_speeds: Vec<(FrameId, FrameId, Vector, Span)>,
+    /// `INERTIA B_P` statements whose point P's position from BO is not known yet: the body,
+    /// P, the inertia about P, its frame and where.
+    pub(crate) pending_inertias: Vec<(BodyId, PointId, crate::mechanics::Dyadic, FrameId, Span)>,
 }
 
 type IResult<T> = Result<T, Diagnostic>;
@@ -299,6 +309,9 @@ impl Interpreter {
             kinematic_reads: Vec::new(),
             formulas: FxHashMap::default(),
             rates_solved: false,
+            motion_variables: Vec::new(),
+            chain_speeds: Vec::new(),
+            pending_inertias: Vec::new(),
         }
     }
 
@@ -329,6 +342,10 @@ impl Interpreter {
             tainted.add_line_of(source, at);
         }
         self.tainted = tainted;
+        // An inertia about a point the file never located BO from is an error at its line.
+        if let Err(d) = self.settle_inertias() {
+            self.errors.push(d);
+        }
     }
 
     /// Puts the formulas given to SPECIFIED quantities into the equations (after the file ran).

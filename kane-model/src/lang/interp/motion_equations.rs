@@ -4,7 +4,7 @@
 //! In: the equations and their unknowns. Out: Kane's equations `M u' = f` read off them (the
 //! coefficients of the rates and the rest), as KANE() would give them.
 
-use crate::expr::{Equivalence, EquivalenceConfig, ExprId, SymbolId, SymbolKind};
+use crate::expr::{Equivalence, EquivalenceConfig, ExprId, SymbolId};
 
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
@@ -18,15 +18,19 @@ impl Interpreter {
             return false;
         }
         let speeds = self.model.independent_speeds();
-        let mut bases: Vec<SymbolId> = Vec::with_capacity(unknowns.len());
+        let Ok(rates) =
+            speeds.iter().map(|u| self.model.ar.derivative_symbol(*u)).collect::<Result<Vec<_>, _>>()
+        else {
+            return false;
+        };
+        let mut seen: Vec<SymbolId> = Vec::with_capacity(unknowns.len());
         for s in unknowns {
-            let info = self.model.ar.symbol_info(*s);
-            if !matches!(info.kind, SymbolKind::Variable { order: 1 }) || bases.contains(&info.base) {
+            if !rates.contains(s) || seen.contains(s) {
                 return false;
             }
-            bases.push(info.base);
+            seen.push(*s);
         }
-        bases.len() == speeds.len() && bases.iter().all(|b| speeds.contains(b))
+        seen.len() == rates.len()
     }
 
     /// `M u' = f` from `zero = f - M u' = 0`, the rows as written: the model's constraints

@@ -160,6 +160,29 @@ impl Interpreter {
         })
     }
 
+    /// `W_A_N> = w`: A's angular velocity in N where the two are related directly (or not yet
+    /// at all); for A oriented through a chain, A turns in its parent so that `W_A_N>` is `w`,
+    /// and `w` in speeds implies the chain's kinematic equations, unless the file gives them
+    /// itself before the equations are formed (see `prepare`).
+    pub(crate) fn assign_angular_velocity(
+        &mut self,
+        a: FrameId,
+        b: FrameId,
+        w: &Vector,
+        span: &Span,
+    ) -> IResult<()> {
+        let set = if self.model.frame_parent(a).is_some() && !self.model.frames_related(a, b) {
+            self.model.set_angular_velocity_through(a, b, w.clone()).at(span)?;
+            self.chain_speeds.push((a, b, w.clone(), span.clone()));
+            self.prepared = false;
+            a
+        } else {
+            self.model.set_angular_velocity_in(a, b, w.clone()).at(span)?
+        };
+        self.sources.angular_velocities.insert(set, span.clone());
+        Ok(())
+    }
+
     /// Assigns a built-in quantity; false when `key` names no built-in.
     pub(crate) fn assign_builtin(&mut self, key: &str, suffix: u8, v: &Value, span: &Span) -> IResult<bool> {
         self.frame_origins_in(key);
@@ -183,17 +206,7 @@ impl Interpreter {
                 self.sources.accelerations.insert((p, f), source);
             }
             (Builtin::AngularVelocity(a, b), Value::Vector(w)) => {
-                // W_A_N> = w sets A's angular velocity in N where the two are related directly
-                // (or not yet at all); for A oriented through a chain, the chain's coordinate
-                // rates follow from it.
-                let set = if self.model.frame_parent(a).is_some() && !self.model.frames_related(a, b) {
-                    let set = self.model.set_angular_velocity_through(a, b, w.clone()).at(fail)?;
-                    self.kinematic.extend(set);
-                    a
-                } else {
-                    self.model.set_angular_velocity_in(a, b, w.clone()).at(fail)?
-                };
-                self.sources.angular_velocities.insert(set, span.clone());
+                self.assign_angular_velocity(a, b, w, span)?
             }
             (Builtin::Inertia(body, point), Value::Dyadic(d)) => {
                 if point != self.model.body(body).mass_center {

@@ -20,6 +20,17 @@ enum Kind {
     Space([u8; 3]),
 }
 
+impl Kind {
+    /// The orientation of this kind by the parameters (Euler parameters in Autolev's order).
+    fn orientation(&self, p: &[ExprId]) -> Orientation {
+        match *self {
+            Kind::Euler => Orientation::EulerParameters([p[3], p[0], p[1], p[2]]),
+            Kind::Body(axes) => Orientation::BodyFixed { axes, angles: [p[0], p[1], p[2]] },
+            Kind::Space(axes) => Orientation::SpaceFixed { axes, angles: [p[0], p[1], p[2]] },
+        }
+    }
+}
+
 fn kind(word: &str) -> Option<Kind> {
     if word == "EULER" {
         return Some(Kind::Euler);
@@ -75,13 +86,81 @@ impl Interpreter {
     /// `DIRCOS(A, B, kind, ...)`: orients B relative to A.
     pub(crate) fn dircos(&mut self, args: &[Expr], span: &Span) -> IResult<()> {
         let (a, b, k, p) = self.orientation(args, span)?;
-        let o = match k {
-            Kind::Euler => Orientation::EulerParameters([p[3], p[0], p[1], p[2]]),
-            Kind::Body(axes) => Orientation::BodyFixed { axes, angles: [p[0], p[1], p[2]] },
-            Kind::Space(axes) => Orientation::SpaceFixed { axes, angles: [p[0], p[1], p[2]] },
-        };
-        self.model.orient(b, a, o).at(span)?;
+        self.model.orient(b, a, k.orientation(&p)).at(span)?;
         self.sources.orientation(a, b, span);
+        Ok(())
+    }
+
+    /// `ANGVEL(A, B, kind, ...)`: B's angular velocity in A set to the rates of that rotation
+    /// sequence (or Euler parameters) of the angles given.
+    pub(crate) fn angvel_by_sequence(&mut self, args: &[Expr], span: &Span) -> IResult<()> {
+        let (a, b, k, p) = self.orientation(args, span)?;
+        let w = self.model.orientation_rates(&k.orientation(&p), b).at(span)?;
+        self.assign_angular_velocity(b, a, &w, span)
+    }
+
+    /// The kinematic equations of a rotation sequence's angles `angles` from `w` (B's angular
+    /// velocity, in B): the orientation's angular velocity `J q'` (linear in the angle rates)
+    /// equals it. An angle the file gave a value (`Q4 = 0` before KINDIFFS) keeps it: the other
+    /// rates are the least-squares solution `(J^T J)^-1 J^T w`, exact wherever `w` is one the
+    /// remaining angles can make (which the consistency check then verifies).
+    fn sequence_kinematics(
+        &mut self,
+        b: FrameId,
+        w: &[ExprId; 3],
+        angles: &[ExprId],
+        span: &Span,
+    ) -> IResult<()> {
+        let implied = self.model.orientation_angular_velocity(b).at(span)?;
+        let implied = self.model.express(&implied, b).at(span)?;
+        let ar = &mut self.model.ar;
+        let moving: Vec<(ExprId, SymbolId)> = angles
+            .iter()
+            .filter_map(|q| ar.as_symbol(*q).map(|s| (*q, s)))
+            .filter(|(_, s)| ar.symbol_info(*s).kind.depends_on_time())
+            .collect();
+        if moving.is_empty() {
+            return Err(Diagnostic::error(span.clone(), "the angles must be declared variables"));
+        }
+        let rates =
+            moving.iter().map(|(_, s)| ar.derivative_symbol(*s)).collect::<Result<Vec<_>, _>>().at(span)?;
+        let solved = if rates.len() == 3 {
+            let eqs: Vec<ExprId> =
+                (0..3).map(|i| ar.sub(implied[i], w[i])).collect::<Result<_, _>>().at(span)?;
+            ar.solve_linear(&eqs, &rates).at(span)?
+        } else {
+            let j: Vec<Vec<ExprId>> = implied
+                .iter()
+                .map(|x| ar.linear_coefficients(*x, &rates).map(|(c, _)| c))
+                .collect::<Result<_, _>>()
+                .at(span)?;
+            let k = rates.len();
+            let mut normal = vec![vec![ar.zero(); k]; k];
+            let mut rhs = vec![vec![ar.zero()]; k];
+            for r in 0..k {
+                for c in 0..k {
+                    let terms = (0..3)
+                        .map(|i| ar.mul(&[j[i][r], j[i][c]]))
+                        .collect::<Result<Vec<_>, _>>()
+                        .at(span)?;
+                    normal[r][c] = ar.add(&terms).at(span)?;
+                }
+                let terms =
+                    (0..3).map(|i| ar.mul(&[j[i][r], w[i]])).collect::<Result<Vec<_>, _>>().at(span)?;
+                rhs[r][0] = ar.add(&terms).at(span)?;
+            }
+            let x = ar.solve_matrix(&normal, &rhs).map_err(|_| {
+                Diagnostic::error(
+                    span.clone(),
+                    "KINDIFFS: the angles' rates cannot be solved from the angular velocity",
+                )
+            })?;
+            x.into_iter().map(|r| ar.trig_simplify(r[0])).collect::<Result<Vec<_>, _>>().at(span)?
+        };
+        for ((q, s), r) in moving.into_iter().zip(solved) {
+            self.kinematic.push((s, r));
+            self.model.set_kinematics(q, r).at(span)?;
+        }
         Ok(())
     }
 
@@ -117,22 +196,7 @@ impl Interpreter {
                 out.push(ar.mul(&[mh, dot]).at(span)?);
                 out
             }
-            _ => {
-                // The orientation's own angular velocity, in B, is linear in the angle rates.
-                let implied = self.model.orientation_angular_velocity(b).at(span)?;
-                let implied = self.model.express(&implied, b).at(span)?;
-                let ar = &mut self.model.ar;
-                let rates: Vec<SymbolId> = syms
-                    .iter()
-                    .map(|q| ar.as_symbol(*q).and_then(|s| ar.derivative_symbol(s).ok()))
-                    .collect::<Option<_>>()
-                    .ok_or_else(|| {
-                        Diagnostic::error(span.clone(), "the angles must be declared variables")
-                    })?;
-                let eqs: Vec<ExprId> =
-                    (0..3).map(|i| ar.sub(implied[i], w[i])).collect::<Result<_, _>>().at(span)?;
-                ar.solve_linear(&eqs, &rates).at(span)?
-            }
+            _ => return self.sequence_kinematics(b, &w, &syms, span),
         };
         for (q, r) in syms.iter().zip(rhs) {
             let s = self.model.ar.as_symbol(*q).ok_or_else(|| {

@@ -15,7 +15,9 @@ impl Interpreter {
         if self.prepared {
             return Ok(());
         }
+        self.settle_inertias()?;
         self.apply_loads(span)?;
+        self.chain_kinematics()?;
         self.choose_state(span)?;
         if !self.auxiliary_speeds.is_empty() {
             let aux = self.auxiliary_speeds.clone();
@@ -26,6 +28,16 @@ impl Interpreter {
             self.model.set_motion_constraints(&c, &d).at(span)?;
         }
         self.prepared = true;
+        Ok(())
+    }
+
+    /// The kinematic equations that angular velocities assigned in speeds through chains of
+    /// orientations imply, for the chains' coordinates still without one.
+    fn chain_kinematics(&mut self) -> IResult<()> {
+        for (frame, reference, w, at) in self.chain_speeds.clone() {
+            let set = self.model.chain_kinematics(frame, reference, &w).at(&at)?;
+            self.kinematic.extend(set);
+        }
         Ok(())
     }
 
@@ -48,14 +60,18 @@ impl Interpreter {
 
     /// Coordinates: variables with a kinematic equation, and variables declared to second order
     /// without one (their speed is their derivative). Speeds: first-order variables that are not
-    /// coordinates.
+    /// coordinates. Where MOTIONVARIABLES declared some, only those are speeds or second-order
+    /// coordinates (a file's other VARIABLES X' are quantities whose rates it may give later).
     fn choose_state(&mut self, span: &Span) -> IResult<()> {
         let ruled: Vec<SymbolId> = self.kinematic.iter().map(|(q, _)| *q).collect();
+        let motion = self.motion_variables.clone();
         let mut coords = Vec::new();
         let mut speeds = Vec::new();
         for (s, order) in self.declared_variables() {
             if ruled.contains(&s) {
                 coords.push(s);
+            } else if !motion.is_empty() && !motion.contains(&s) {
+                continue;
             } else if order >= 2 {
                 coords.push(s);
                 let d = self.model.ar.derivative_symbol(s).at(span)?;

@@ -110,6 +110,46 @@ impl Interpreter {
         self.map_scalars(&v, &e.span, |m, x| Ok(m.ar.subs(x, &map)?))
     }
 
+    /// `EXCLUDE(Y, X, ...)`: the terms of `Y` (expanded) that hold none of the quantities
+    /// named; `INCLUDE(Y, X, ...)`: those that hold one of them. `Y` may be a matrix; the
+    /// quantities a list (`[W', G]`).
+    pub(crate) fn select_terms(&mut self, upper: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
+        let Some((y, named)) = args.split_first().filter(|(_, n)| !n.is_empty()) else {
+            return Err(Diagnostic::error(e.span.clone(), format!("{upper} takes (Y, X, ...)")));
+        };
+        let mut syms = Vec::new();
+        for a in named {
+            let keys = match &a.kind {
+                ExprKind::Matrix(rows) => {
+                    rows.iter().flatten().map(|x| self.substitution_key(x)).collect::<IResult<Vec<_>>>()?
+                }
+                _ => vec![self.substitution_key(a)?],
+            };
+            for k in keys {
+                syms.push(self.model.ar.as_symbol(k).ok_or_else(|| {
+                    Diagnostic::error(a.span.clone(), format!("{upper} selects terms by quantities, named"))
+                })?);
+            }
+        }
+        let v = self.eval(y)?;
+        let keep_with = upper == "INCLUDE";
+        self.map_scalars(&v, &e.span, |m, x| {
+            if m.ar.expansion_bounds(&[x])[0] > TERMS_TO_SELECT_FROM {
+                return Err(crate::expr::ExprError::TooLarge(TERMS_TO_SELECT_FROM as usize).into());
+            }
+            let expanded = m.ar.expand(x)?;
+            let terms: Vec<ExprId> = match m.ar.node(expanded) {
+                crate::expr::Node::Sum(t) => t.to_vec(),
+                _ => vec![expanded],
+            };
+            let kept: Vec<ExprId> = terms
+                .into_iter()
+                .filter(|t| m.ar.free_symbols(&[*t]).iter().any(|s| syms.contains(s)) == keep_with)
+                .collect();
+            Ok(m.ar.add(&kept)?)
+        })
+    }
+
     /// What `x = value` in EVALUATE, REPLACE or TAYLOR replaces: a declared quantity or its
     /// derivative (`Q1'`) as the symbol itself, even where `Q1'` has a kinematic equation or a
     /// solved value; any other expression as it evaluates.
@@ -157,10 +197,20 @@ impl Interpreter {
         let exprs = match v {
             Value::Scalar(x) => vec![x],
             Value::Matrix { data, .. } => data,
+            // COEF(v>, X): the vector of each measure number's coefficient.
+            Value::Vector(vec) if syms.len() == 1 => {
+                let mut out = vec.clone();
+                for (_, m) in out.terms.iter_mut() {
+                    for x in m.iter_mut() {
+                        *x = self.model.ar.linear_coefficients(*x, &syms).at(&e.span)?.0[0];
+                    }
+                }
+                return Ok(Value::Vector(out));
+            }
             other => {
                 return Err(Diagnostic::error(
                     args[0].span.clone(),
-                    format!("COEF takes scalars, not {}", other.kind()),
+                    format!("COEF takes scalars, or a vector and one symbol, not {}", other.kind()),
                 ))
             }
         };
@@ -250,6 +300,9 @@ impl Interpreter {
         Ok(self.solved.get(&key.to_ascii_uppercase()).copied())
     }
 }
+
+/// The most terms EXCLUDE and INCLUDE expand an expression into.
+const TERMS_TO_SELECT_FROM: u64 = 200_000;
 
 /// The most speeds (independent and dependent) whose rates are formed as expressions.
 const SYMBOLIC_RATES_UP_TO: usize = 16;

@@ -237,6 +237,9 @@ impl Interpreter {
                         self.model.ar.variable(&name)
                     }
                     .at(fail)?;
+                    if kind == DeclKind::MotionVariables {
+                        self.motion_variables.extend(self.model.ar.as_symbol(e));
+                    }
                     self.bindings.insert(key.clone(), Binding::Symbol(e, item.primes));
                 }
             }
