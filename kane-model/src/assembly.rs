@@ -157,6 +157,8 @@ mod tests {
         n_coordinates: 2,
         param_names: &[],
         param_units: &[],
+        inputs: &[],
+        open_inputs: &[],
         outputs: &[],
         cyclic: &[],
         dependent_coordinates: &[1],

@@ -1,6 +1,8 @@
 //! Physical plausibility of parameter and initial values: masses that are not negative (zero is a
 //! massless idealisation, whose mass matrix is checked at run time), principal moments of
-//! inertia that are non-negative and satisfy the triangle inequality, unit Euler parameters.
+//! inertia that are non-negative and, when none is zero (a zero moment is an idealisation: a
+//! planar link, a rotor's spin axis alone), satisfy the triangle inequality, unit Euler
+//! parameters.
 //!
 //! In: a [`Model`] and the values of its symbols by name. Out: the issues found, each naming the
 //! parameter to blame; `kane check` prints them as warnings at the INPUT values, and a simulator
@@ -118,7 +120,9 @@ fn inertia_issue(
     let (lo, mid, hi) = (moments[0], moments[1], moments[2]);
     let (offender, what) = if lo < -tol {
         (lo, format!("has a negative principal moment {lo}; principal moments must be non-negative"))
-    } else if lo + mid < hi - tol {
+    } else if lo > tol && lo + mid < hi - tol {
+        // A zero moment is an idealisation (a planar link, a rotor's spin axis alone): no rigid
+        // body has it, but the file means it; only three non-zero moments must form a triangle.
         (
             hi,
             format!(
@@ -205,6 +209,16 @@ mod tests {
         assert_eq!(issues[0].parameter, "I3");
         assert_eq!(issues[0].involved, ["I1", "I2", "I3"]);
         assert!(issues[0].message.contains("triangle inequality"), "{}", issues[0].message);
+    }
+
+    #[test]
+    fn a_zero_moment_is_an_idealisation_not_an_implausible_body() {
+        let m = model(BODY);
+        // A planar link (only the moment about its hinge) and a rotor's spin axis alone.
+        assert!(plausibility(&m, at(&[("M", 1.0), ("I1", 0.0), ("I2", 0.0), ("I3", 2.5)])).is_empty());
+        assert!(plausibility(&m, at(&[("M", 1.0), ("I1", 3.0), ("I2", 0.0), ("I3", 0.0)])).is_empty());
+        let negative = plausibility(&m, at(&[("M", 1.0), ("I1", 0.0), ("I2", -1.0), ("I3", 2.5)]));
+        assert!(negative[0].message.contains("negative principal moment"), "{negative:?}");
     }
 
     #[test]

@@ -22,7 +22,10 @@ fn generated_gimbal_module_snapshot() {
 fn a_model_without_kane_is_refused() {
     let loaded = kane_model::lang::load("m.al", "NEWTONIAN N\nCONSTANTS A\n").unwrap();
     let err = loaded.into_spec("m").err().unwrap();
-    assert_eq!(err.to_string(), "the model derives no equations: call KANE() in the model file");
+    assert_eq!(
+        err.to_string(),
+        "the model derives no equations: form them in the model file (ZERO = FR() + FRSTAR(), then KANE())"
+    );
 }
 
 #[test]

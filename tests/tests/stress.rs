@@ -547,6 +547,8 @@ static BLOWUP: kane_model::runtime::ModelInfo = kane_model::runtime::ModelInfo {
     n_coordinates: 1,
     param_names: &[],
     param_units: &[],
+    inputs: &[],
+    open_inputs: &[],
     outputs: &[],
     cyclic: &[],
     dependent_coordinates: &[],

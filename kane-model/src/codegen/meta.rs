@@ -39,6 +39,10 @@ pub struct Meta {
     pub params: Vec<String>,
     /// Parameter units.
     pub param_units: Vec<String>,
+    /// The parameters that are inputs (indices).
+    pub inputs: Vec<usize>,
+    /// The inputs without a value from the model.
+    pub open_inputs: Vec<usize>,
     /// The outputs.
     pub outputs: Vec<OutputMeta>,
     /// Coordinates no equation reads.
@@ -83,8 +87,13 @@ impl Meta {
             .flatten()
             .filter_map(|q| states.iter().position(|s| s == q))
             .collect();
+        let position = |s: &crate::expr::SymbolId| lowered.params.iter().position(|p| p == s);
+        let inputs = spec.inputs.iter().filter_map(position).collect();
+        let open_inputs = spec.open_inputs.iter().filter_map(position).collect();
         Meta {
             name: spec.name.clone(),
+            inputs,
+            open_inputs,
             dependent_coordinates,
             state_units: units(&states),
             states,
@@ -120,6 +129,8 @@ impl Meta {
             n_coordinates: self.n_coordinates,
             param_names: leak_strs(&self.params),
             param_units: leak_strs(&self.param_units),
+            inputs: Box::leak(self.inputs.clone().into_boxed_slice()),
+            open_inputs: Box::leak(self.open_inputs.clone().into_boxed_slice()),
             outputs: Box::leak(outputs.into_boxed_slice()),
             cyclic: Box::leak(self.cyclic.clone().into_boxed_slice()),
             dependent_coordinates: Box::leak(self.dependent_coordinates.clone().into_boxed_slice()),

@@ -12,8 +12,10 @@ use super::{LoadedModel, Value};
 /// Why a loaded model file has no spec.
 #[derive(Clone, Debug, PartialEq, Error)]
 pub enum SpecError {
-    /// The model file does not call KANE().
-    #[error("the model derives no equations: call KANE() in the model file")]
+    /// The model file forms no equations of motion.
+    #[error(
+        "the model derives no equations: form them in the model file (ZERO = FR() + FRSTAR(), then KANE())"
+    )]
     NoEquations,
     /// An OUTPUT name that is not a scalar or vector the model defines.
     #[error("OUTPUT `{0}` is not a state, nor a scalar or vector defined in the model")]
@@ -40,14 +42,29 @@ impl LoadedModel {
 
     /// The spec, with the default drawing's outputs when `drawn`.
     fn spec_with(mut self, name: &str, drawn: bool) -> Result<(ModelSpec, Option<Drawing>), SpecError> {
-        let eqs = self.equations.clone().ok_or(SpecError::NoEquations)?;
         let mut formulas = super::interp::specified_formulas(&mut self.model, &self.formulas)?;
+        let mut eqs = match self.equations.clone() {
+            Some(eqs) => eqs,
+            // FR() + FRSTAR() formed without KANE() or SOLVE (a file that writes its residuals
+            // for CODE ALGEBRAIC): the equations of motion are KANE()'s.
+            None if self.forces_formed => {
+                let mut eqs = self.model.kane()?;
+                eqs.substitute(&mut self.model.ar, &formulas)?;
+                eqs
+            }
+            None => return Err(SpecError::NoEquations),
+        };
+        self.extra_coordinates(&mut eqs)?;
         // Auxiliary speeds are zero in every motion the outputs are computed along.
         formulas.extend(self.model.auxiliary_zero_map()?);
         let outputs = self.output_values(&eqs)?;
+        let inputs = self.open_quantities(&formulas);
         let mut spec = ModelSpec::new(name, self.model, eqs);
         for input in &self.inputs {
             spec.set_default(&input.name, input.value);
+        }
+        for s in inputs {
+            spec.add_input(s);
         }
         for (name, unit) in &self.units {
             spec.set_unit(name, unit);
@@ -59,6 +76,17 @@ impl LoadedModel {
             match value {
                 Output::Value(Value::Vector(v)) => spec.add_vector(oname, &v, n, &unit)?,
                 Output::Value(Value::Scalar(e)) => spec.add_scalar(oname, e, &unit),
+                // A matrix: one scalar per entry, `M_1_2` (a column's: `M_2`).
+                Output::Value(Value::Matrix { rows, cols, data }) => {
+                    for (k, e) in data.into_iter().enumerate() {
+                        let entry = if cols == 1 || rows == 1 {
+                            format!("{oname}_{}", k + 1)
+                        } else {
+                            format!("{oname}_{}_{}", k / cols + 1, k % cols + 1)
+                        };
+                        spec.add_scalar(&entry, e, &unit);
+                    }
+                }
                 Output::Orientation(f) => spec.add_orientation(oname, f, OrientationForm::Dcm)?,
                 Output::Value(_) => return Err(SpecError::UnknownOutput(oname.to_string())),
             }
@@ -77,11 +105,61 @@ impl LoadedModel {
         Ok((spec, drawing))
     }
 
+    /// Variables whose rates the file gives after its equations of motion were formed
+    /// (`POSA1' = DOT(V_DISKAO_N>, N1>)` after KANE()), added to `eqs`' coordinates: Autolev's
+    /// code integrates every variable whose rate is assigned.
+    fn extra_coordinates(&mut self, eqs: &mut crate::mechanics::KaneEquations) -> Result<(), SpecError> {
+        let states: Vec<crate::expr::SymbolId> = eqs.coordinates.iter().chain(&eqs.speeds).copied().collect();
+        let dependent: Vec<crate::expr::SymbolId> =
+            eqs.constraints.iter().flat_map(|c| c.dependent.clone()).collect();
+        let mut extra: Vec<crate::expr::SymbolId> = self
+            .model
+            .coordinates_with_kinematics()
+            .into_iter()
+            .filter(|q| !states.contains(q) && !dependent.contains(q))
+            .collect();
+        if extra.is_empty() {
+            return Ok(());
+        }
+        extra.sort();
+        let map = self.model.kinematics_map();
+        for q in extra {
+            let rhs = self.model.kinematics(q).expect("listed with its equation");
+            eqs.kinematics.push(self.model.ar.subs(rhs, &map)?);
+            eqs.coordinates.push(q);
+        }
+        Ok(())
+    }
+
+    /// The quantities of time the file leaves to its user: SPECIFIED quantities (and rates)
+    /// without a formula, and VARIABLES declared without a derivative that are not states (a
+    /// file's parameters that may vary, as Autolev's code takes them).
+    fn open_quantities(
+        &self,
+        formulas: &rustc_hash::FxHashMap<crate::expr::ExprId, crate::expr::ExprId>,
+    ) -> Vec<crate::expr::SymbolId> {
+        let ar = &self.model.ar;
+        let given: Vec<crate::expr::SymbolId> = formulas.keys().filter_map(|e| ar.as_symbol(*e)).collect();
+        let mut out: Vec<crate::expr::SymbolId> = ar
+            .symbols()
+            .filter(|(s, info)| {
+                matches!(info.kind, crate::expr::SymbolKind::Specified { .. }) && !given.contains(s)
+            })
+            .map(|(s, _)| s)
+            .collect();
+        for v in self.unstated_variables() {
+            out.push(v);
+            let name = format!("{}'", ar.symbol_info(v).name);
+            out.extend(ar.lookup(&name));
+        }
+        out
+    }
+
     /// The OUTPUT names other than `T` and the states, each a scalar or a vector (`L>`, written
     /// in the Newtonian frame) of the model, or a direction-cosine matrix `N_B` (`N` the
     /// Newtonian frame, `B` a frame; entries `N_B_ij = n_i . b_j`); names without the `>`.
     fn output_values(
-        &self,
+        &mut self,
         eqs: &crate::mechanics::KaneEquations,
     ) -> Result<Vec<(String, Output)>, SpecError> {
         let mut out = Vec::new();
@@ -95,6 +173,16 @@ impl LoadedModel {
                 continue;
             }
             let bare = oname.trim_end_matches('>');
+            // A speed's rate (independent or dependent): computed where the output is.
+            let rates =
+                eqs.speed_derivatives.iter().chain(eqs.constraints.iter().flat_map(|c| &c.dependent_rates));
+            if let Some(r) =
+                rates.copied().find(|s| self.model.ar.symbol_info(*s).name.eq_ignore_ascii_case(oname))
+            {
+                let e = self.model.ar.symbol_expr(r);
+                out.push((bare.to_string(), Output::Value(Value::Scalar(e))));
+                continue;
+            }
             let dependent = eqs.constraints.iter().flat_map(|c| &c.dependent);
             let loads = eqs.loads.iter().flat_map(|l| &l.loads);
             let solved = dependent.chain(loads);
@@ -114,12 +202,15 @@ impl LoadedModel {
                 continue;
             }
             match self.value(oname).or_else(|| self.value(&format!("{bare}>"))) {
-                Some(v @ (Value::Scalar(_) | Value::Vector(_))) => {
+                Some(v @ (Value::Scalar(_) | Value::Vector(_) | Value::Matrix { .. })) => {
                     out.push((bare.to_string(), Output::Value(v)))
                 }
-                _ => match self.newtonian_dcm_of(oname) {
-                    Some(f) => out.push((bare.to_string(), Output::Orientation(f))),
-                    None => return Err(SpecError::UnknownOutput(oname.clone())),
+                _ => match (self.newtonian_dcm_of(oname), self.model.ar.lookup(oname)) {
+                    (Some(f), _) => out.push((bare.to_string(), Output::Orientation(f))),
+                    // A quantity's rate the file names (`RH'` of a SPECIFIED RH).
+                    (None, Some(s)) => out
+                        .push((bare.to_string(), Output::Value(Value::Scalar(self.model.ar.symbol_expr(s))))),
+                    (None, None) => return Err(SpecError::UnknownOutput(oname.clone())),
                 },
             }
         }

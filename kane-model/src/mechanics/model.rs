@@ -358,6 +358,12 @@ impl Model {
         Ok(())
     }
 
+    /// The variables given a kinematic equation `q' = ...`, whether coordinates of the
+    /// equations or not.
+    pub fn coordinates_with_kinematics(&self) -> Vec<SymbolId> {
+        self.kinematics.keys().copied().collect()
+    }
+
     /// The right-hand side of `q' = ...` for coordinate `q`.
     pub fn kinematics(&self, q: SymbolId) -> Option<ExprId> {
         self.kinematics.get(&q).copied()

@@ -61,6 +61,12 @@ pub struct ModelInfo {
     pub param_names: &'static [&'static str],
     /// Each parameter's unit (empty when none).
     pub param_units: &'static [&'static str],
+    /// The parameters that are inputs: quantities of time the model leaves to its user (a model
+    /// file's SPECIFIED quantities without a formula, Autolev's "quantities to be specified"),
+    /// held constant unless a run gives them as functions of time.
+    pub inputs: &'static [usize],
+    /// The inputs the model gives no value (zero by default).
+    pub open_inputs: &'static [usize],
     /// The outputs.
     pub outputs: &'static [OutputInfo],
     /// Coordinates that no equation reads (cyclic): they can be left out of the integrated

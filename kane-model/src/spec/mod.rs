@@ -29,6 +29,11 @@ pub struct ModelSpec {
     pub units: FxHashMap<String, String>,
     /// The outputs, in order.
     pub outputs: Vec<OutputSpec>,
+    /// Quantities of time the model leaves to its user (SPECIFIED without a formula): read as
+    /// parameters of the generated code.
+    pub inputs: Vec<SymbolId>,
+    /// The inputs with no default value (zero in the generated code).
+    pub open_inputs: Vec<SymbolId>,
 }
 
 impl ModelSpec {
@@ -41,6 +46,8 @@ impl ModelSpec {
             defaults: FxHashMap::default(),
             units: FxHashMap::default(),
             outputs: Vec::new(),
+            inputs: Vec::new(),
+            open_inputs: Vec::new(),
         }
     }
 
@@ -62,6 +69,20 @@ impl ModelSpec {
     /// The default of `name`, if any.
     pub fn default_of(&self, name: &str) -> Option<f64> {
         self.defaults.get(&name.to_ascii_uppercase()).copied()
+    }
+
+    /// Makes `s` an input of the model: a parameter of the generated code, zero unless given
+    /// a default.
+    pub fn add_input(&mut self, s: SymbolId) {
+        if self.inputs.contains(&s) {
+            return;
+        }
+        self.inputs.push(s);
+        let name = self.symbol_name(s).to_string();
+        if self.default_of(&name).is_none() {
+            self.open_inputs.push(s);
+            self.set_default(&name, 0.0);
+        }
     }
 
     /// The states: coordinates, then speeds.

@@ -75,7 +75,8 @@ enum Command {
         /// NAME=VALUE (case-insensitive), repeated: the operating point.
         #[arg(long = "set", value_name = "NAME=VALUE")]
         set: Vec<String>,
-        /// A constant taken as an input (a column of B), repeated.
+        /// A constant taken as an input (a column of B), repeated; without any, B's columns
+        /// are the model's inputs (SPECIFIED quantities the file gives no formula).
         #[arg(long = "input", value_name = "NAME")]
         input: Vec<String>,
         /// Print one JSON object: {"states", "inputs", "A", "B"}.
@@ -304,6 +305,11 @@ fn linearize(file: PathBuf, set: Vec<String>, inputs: Vec<String>, json: bool) -
     let model = kane_model::codegen::ProgramModel::new(&mut spec).map_err(|e| fail(&e))?;
     let info = model.info();
     let upper = |s: &&str| s.to_ascii_uppercase();
+    // The model's open inputs (SPECIFIED quantities without a formula) are zero unless set.
+    let mut values = values;
+    for &i in info.open_inputs {
+        values.entry(upper(&info.param_names[i])).or_insert(0.0);
+    }
     let missing: Vec<String> = info
         .param_names
         .iter()
@@ -320,11 +326,18 @@ fn linearize(file: PathBuf, set: Vec<String>, inputs: Vec<String>, json: bool) -
     }
     let params: Vec<f64> = info.param_names.iter().map(|s| values[&upper(s)]).collect();
     let mut y: Vec<f64> = info.state_names.iter().map(|s| values[&upper(s)]).collect();
+    // B's columns: the constants named by --input, or else the model's inputs.
     let mut positions = Vec::with_capacity(inputs.len());
     for i in &inputs {
         let at = info.param(i);
-        positions.push(at.ok_or_else(|| format!("--input {i}: not a constant the equations read"))?);
+        positions.push(at.ok_or_else(|| format!("--input {i}: not a constant or input the equations read"))?);
     }
+    let inputs: Vec<String> = if inputs.is_empty() {
+        positions = info.inputs.to_vec();
+        positions.iter().map(|i| info.param_names[*i].to_string()).collect()
+    } else {
+        inputs
+    };
     let assembly =
         model.assemble(&params, &mut y).transpose().map_err(|e| format!("{}: {e}", file.display()))?;
     let l = kane_model::codegen::linearize::linearize(model.program(), &params, 0.0, &y, &positions);

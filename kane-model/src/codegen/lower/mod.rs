@@ -115,6 +115,7 @@ fn parameters(
             SymbolKind::Constant => params.push(s),
             SymbolKind::Time => {}
             _ if states.contains(&s) || rates.contains(&s) => {}
+            _ if spec.inputs.contains(&s) => params.push(s),
             _ => return Err(CodegenError::UnsupportedSymbol(ar.symbol_info(s).name.clone())),
         }
     }

@@ -18,6 +18,8 @@ pub fn info(meta: &Meta) -> TokenStream {
         cyclic,
         dependent_coordinates,
         taylor_straight_line,
+        inputs,
+        open_inputs,
         ..
     } = meta;
     let (rhs_ops, out_ops) = (meta.op_counts.rhs, meta.op_counts.outputs);
@@ -44,6 +46,8 @@ pub fn info(meta: &Meta) -> TokenStream {
             n_coordinates: #n_coordinates,
             param_names: &[#(#params),*],
             param_units: &[#(#param_units),*],
+            inputs: &[#(#inputs),*],
+            open_inputs: &[#(#open_inputs),*],
             outputs: &[#(#outputs),*],
             cyclic: &[#(#cyclic),*],
             dependent_coordinates: &[#(#dependent_coordinates),*],

@@ -314,6 +314,19 @@ impl Interpreter {
                 {
                     return Ok(Value::Scalar(self.model.ar.zero()));
                 }
+                // A coordinate's rate is its kinematic equation's right-hand side (`Q' = U`
+                // makes `Q'` read `U`, and `Q''` read `U'`).
+                if let Some(rhs) = self
+                    .model
+                    .kinematics(s)
+                    .filter(|r| self.model.ar.as_symbol(*r) != self.model.ar.derivative_symbol(s).ok())
+                {
+                    let mut v = rhs;
+                    for _ in 1..primes {
+                        v = self.model.dt(v).at(fail)?;
+                    }
+                    return Ok(Value::Scalar(v));
+                }
                 let mut d = s;
                 for _ in 0..primes {
                     d = self.model.ar.derivative_symbol(d).at(fail)?;

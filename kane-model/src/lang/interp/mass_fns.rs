@@ -20,6 +20,7 @@ impl Interpreter {
         match upper {
             "FR" | "FRSTAR" => {
                 self.prepare(&e.span)?;
+                self.forces_formed = true;
                 let v = if upper == "FR" {
                     self.model.generalized_active_forces()
                 } else {

@@ -129,6 +129,8 @@ pub struct LoadedModel {
     pub(crate) tainted: cascade::Tainted,
     /// The formulas of SPECIFIED quantities (see [`Interpreter`]'s).
     pub(crate) formulas: FxHashMap<String, ExprId>,
+    /// Whether the file formed FR() or FRSTAR().
+    pub(crate) forces_formed: bool,
 }
 
 impl LoadedModel {
@@ -235,6 +237,9 @@ pub(crate) struct Interpreter {
     /// `INERTIA B_P` statements whose point P's position from BO is not known yet: the body,
     /// P, the inertia about P, its frame and where.
     pub(crate) pending_inertias: Vec<(BodyId, PointId, crate::mechanics::Dyadic, FrameId, Span)>,
+    /// Whether the file formed FR() or FRSTAR() (its equations of motion are then KANE()'s,
+    /// for code generation, even where it calls neither KANE() nor SOLVE).
+    pub(crate) forces_formed: bool,
 }
 
 type IResult<T> = Result<T, Diagnostic>;
@@ -312,6 +317,7 @@ impl Interpreter {
             motion_variables: Vec::new(),
             chain_speeds: Vec::new(),
             pending_inertias: Vec::new(),
+            forces_formed: false,
         }
     }
 
@@ -393,6 +399,7 @@ impl Interpreter {
             parts,
             tainted: self.tainted,
             formulas: self.formulas,
+            forces_formed: self.forces_formed,
         }
     }
 }
