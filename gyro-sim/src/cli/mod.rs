@@ -6,6 +6,7 @@
 mod bench_command;
 mod error;
 mod file_model;
+mod inputs;
 mod model_scene;
 mod origins;
 mod serve_command;
@@ -304,6 +305,9 @@ fn run_scene(
     if args.print_scene {
         print!("{}", scene.source);
         return Ok(ExitCode::SUCCESS);
+    }
+    if let Some(warning) = inputs::open_inputs_warning(scene, entry.info) {
+        eprintln!("{warning}");
     }
     let registry = registry.with_entry(&scene.model, entry);
     if let Some(file) = file {

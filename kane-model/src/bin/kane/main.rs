@@ -384,13 +384,27 @@ fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
     if let Some(l) = &e.loads {
         roots.extend(l.mass_rows.iter().chain(&l.load_columns).flatten().chain(&l.forcing));
     }
-    let missing: Vec<String> = ar
-        .free_symbols(&roots)
-        .into_iter()
-        .filter(|s| !dependent.contains(s) && !loads.contains(s))
-        .map(|s| ar.symbol_info(s).name.clone())
-        .filter(|n| !values.contains_key(&n.to_ascii_uppercase()))
+    let mut values = values;
+    let unset = |s: &SymbolId, values: &BTreeMap<String, f64>| {
+        !dependent.contains(s)
+            && !loads.contains(s)
+            && !values.contains_key(&ar.symbol_info(*s).name.to_ascii_uppercase())
+    };
+    let free = ar.free_symbols(&roots);
+    // SPECIFIED quantities without a formula are inputs: zero unless set, said below.
+    let open: Vec<String> = free
+        .iter()
+        .filter(|s| {
+            unset(s, &values)
+                && matches!(ar.symbol_info(**s).kind, kane_model::expr::SymbolKind::Specified { .. })
+        })
+        .map(|s| ar.symbol_info(*s).name.clone())
         .collect();
+    for n in &open {
+        values.insert(n.to_ascii_uppercase(), 0.0);
+    }
+    let missing: Vec<String> =
+        free.iter().filter(|s| unset(s, &values)).map(|s| ar.symbol_info(*s).name.clone()).collect();
     if !missing.is_empty() {
         return Err(format!(
             "{}: no value for {}; give them with --set NAME=VALUE or INPUT",
@@ -400,6 +414,9 @@ fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
     }
     let value_of = |s: SymbolId| values.get(&ar.symbol_info(s).name.to_ascii_uppercase()).copied();
     let rates = e.rates_at(ar, &value_of).map_err(|err| format!("{}: {err}", file.display()))?;
+    if !open.is_empty() {
+        eprintln!("warning: {} left open by the file (SPECIFIED without a formula): 0 here; give a value with --set {}=VALUE", open.join(", "), open[0]);
+    }
     if json {
         let v = serde_json::json!({
             "coordinates": names(&m, &e.coordinates), "speeds": names(&m, &e.speeds),
