@@ -1,4 +1,4 @@
-//! Batch lanes against scalar runs (issue 14, item 4): 256 members of the gimbal (Trial 3's
+//! Batch lanes against scalar runs: 256 members of the gimbal (Trial 3's
 //! equations to t = 5; Y and Z in 0..20 N m, U3 in 50..150 rad/s, a fixed quasi-random set),
 //! DOP853 at rtol = atol = 1e-7, 1e-9 and 1e-11, one thread: each member alone (the scalar
 //! stepper), 4 or 8 members in lock step through `rhs_lanes`, and 4 in lock step after ordering

@@ -1,4 +1,4 @@
-//! Failures named for their cause at any time (issue 25): a square root or logarithm of a
+//! Failures named for their cause at any time: a square root or logarithm of a
 //! negative number, a pole, a mass matrix turning singular, all met mid-run, are each named with
 //! the operation (written with the model's names), the time and the state, not as a step size
 //! that underflowed. And the errors of a `--model` run point at what the user gave (`--set`, the

@@ -1,4 +1,4 @@
-//! Output sets under kills (issue 25): runs killed with SIGKILL at random instants, the commit's
+//! Output sets under kills: runs killed with SIGKILL at random instants, the commit's
 //! among them, one writer at a time or two into one folder, leave the folder holding one whole
 //! set (every file of the earlier set or of a new one, byte for byte, and no other set file) and
 //! every file that is not a set's. `KILL_TRIALS` sets the number of trials (default 100),

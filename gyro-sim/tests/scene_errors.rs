@@ -115,7 +115,7 @@ fn a_view_does_not_change_the_refined_run() {
 }
 
 /// Output grids too large to hold are refused before anything is allocated, at `output_step`,
-/// saying how to go on (issue 14: `t_final = 1e300` panicked, `output_step = 1e-9` tried 40 GB).
+/// saying how to go on (`t_final = 1e300` panicked, `output_step = 1e-9` tried 40 GB).
 #[test]
 fn output_grids_too_large_are_refused_up_front() {
     let grid = |t_final: &str, step: &str| {

@@ -1,4 +1,4 @@
-//! Stop signals (issue 25): SIGINT, SIGTERM and SIGHUP stop a long run cleanly. The rows computed
+//! Stop signals: SIGINT, SIGTERM and SIGHUP stop a long run cleanly. The rows computed
 //! so far are kept as `trajectory.partial.csv` beside the folder's earlier set (left as it was),
 //! a message says so, and the exit code is the shell's for the signal (128 + its number).
 #![cfg(unix)]

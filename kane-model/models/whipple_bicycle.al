@@ -47,7 +47,7 @@ Q5' = U5
 Q6' = U6
 V_CR_N> = 0>
 P_CR_WRO> = RR*R3>
-V2PTS(N, WR, CR, WRO) % override: the rolling wheel's contact point is at rest
+V2PTS(N, WR, CR, WRO) % the wheel's material point at the contact is at rest
 P_WRO_STEER> = FRAMELENGTH*FRAME3>
 V2PTS(N, FRAME, WRO, STEER)
 P_WRO_RBO> = -FRAMECG1*FRAME1> + FRAMECG3*FRAME3>
@@ -57,7 +57,7 @@ V2PTS(N, FORK, STEER, FBO)
 P_STEER_WFO> = FORKLENGTH*FORK1> + RAKE*FORK3>
 V2PTS(N, FORK, STEER, WFO)
 P_WFO_CF> = RF*UNITVEC(DOT(FORK2>, Y3>)*FORK2> - Y3>)
-V2PTS(N, WF, WFO, CF) % override: the wheel's material point at the contact
+V2PTS(N, WF, WFO, CF) % the wheel's material point at the contact
 MASS WR = MR, RB = MB, FB = MH, WF = MF
 INERTIA WR, IRXX, IRYY, IRXX
 INERTIA WF, IFXX, IFYY, IFXX

@@ -1,5 +1,5 @@
 //! Research Autolev files keep books: a unit system, session settings, `;` terminators and
-//! compound unit tags (issue 24). They load; UNITSYSTEM converts INPUT values into its units;
+//! compound unit tags. They load; UNITSYSTEM converts INPUT values into its units;
 //! the rest is reported as ignored; and one mistake gives one error, with a did-you-mean.
 
 mod common;

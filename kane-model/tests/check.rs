@@ -161,7 +161,7 @@ fn the_kane_command_fails_on_a_contradiction_and_prints_warnings() {
 }
 
 /// Deleting `Q2' = U2` from the gimbal used to check: Q2 silently became a generalized speed.
-/// Now it is an error naming Q2 at the SIMPROT that turns C with it (issue 14).
+/// Now it is an error naming Q2 at the SIMPROT that turns C with it.
 #[test]
 fn a_coordinate_without_a_kinematic_equation_is_an_error() {
     let gimbal = model("gimbal_gyroscope.al");
@@ -188,7 +188,7 @@ fn a_coordinate_without_a_kinematic_equation_is_an_error() {
     assert!(text.contains("slide.al:6:1: error: X places R from O but has no kinematic equation"), "{text}");
 }
 
-/// A load line given twice adds up: a warning naming both lines (issue 14).
+/// A load line given twice adds up: a warning naming both lines.
 #[test]
 fn a_load_given_twice_is_a_warning_naming_both_lines() {
     let gimbal = model("gimbal_gyroscope.al");

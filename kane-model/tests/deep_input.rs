@@ -1,4 +1,4 @@
-//! Generated abuse of the parser (issue 14): deep nesting is refused with a located error, not a
+//! Generated abuse of the parser: deep nesting is refused with a located error, not a
 //! stack overflow; long flat sums load (they are balanced trees, evaluated without deep
 //! recursion). These run on test threads, whose stacks are smaller than the main thread's.
 

@@ -1,4 +1,4 @@
-//! Equations of motion a file forms itself (issue 24): `ZERO = FR() + FRSTAR()` then
+//! Equations of motion a file forms itself: `ZERO = FR() + FRSTAR()` then
 //! `SOLVE(ZERO, U1', ...)` for every independent speed's rate, without KANE(). Unchanged, they
 //! are KANE()'s equations (constraints included, solved numerically); changed by hand, their
 //! coefficients are read off; KANE with arguments is refused with its reason.

@@ -1,4 +1,4 @@
-//! Files written as SymPy's documentation writes its models (issue 24): the rolling disc with
+//! Files written as SymPy's documentation writes its models: the rolling disc with
 //! its speeds chosen as the disc's angular velocity in the lean frame after a SIMPROT chain
 //! (`W_R_N> = U1*L1> + U2*L2> + U3*L3>`, the kinematic equations solved from it) and its
 //! contact as the disc's material point at rest (`V2PTS(N, R, C, RO)`, Autolev's rolling

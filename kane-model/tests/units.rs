@@ -1,4 +1,4 @@
-//! Units in model files (issue 14): an unknown unit in UNITS, INPUT or OUTPUT is an error at its
+//! Units in model files: an unknown unit in UNITS, INPUT or OUTPUT is an error at its
 //! place naming it, with the nearest known unit and the list of known ones; unit expressions
 //! keep their grouping.
 

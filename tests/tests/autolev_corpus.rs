@@ -1,5 +1,6 @@
-//! The 16 public Autolev files of SymPy's parser tests: each is either run and its quantities
-//! equal SymPy's parse of the same file at a random point, or rejected with a precise error.
+//! The 16 public Autolev files of SymPy's parser tests: each runs, and its quantities equal
+//! SymPy's parse of the same file at a random point where SymPy's parser runs it (a file may
+//! also be listed as rejected, with the precise error expected).
 //! Fixtures: tests/data/autolev_corpus_sympy.json, made by make_corpus_fixtures.py.
 
 use std::collections::HashMap;
@@ -71,11 +72,12 @@ const CORPUS: &[(&str, &str)] = &[
 ];
 
 /// Files rejected on purpose, with the construct each error must name.
-const REJECTED: &[(&str, &str)] = &[
-    ("ruletest6.al", "ROOTS: the polynomial has complex roots (-1 - 1.414214i, -1 + 1.414214i)"),
-    ("ruletest7.al", "FACTORIAL() of an expression in the model's symbols is not supported"),
-    ("ruletest10.al", "frame A is already oriented relative to N; a frame is oriented once"),
-];
+const REJECTED: &[(&str, &str)] = &[];
+
+/// Quantities where SymPy's parser departs from Autolev, with Autolev's value in the file's
+/// symbols: INCLUDE(E, X) keeps the terms of E with X in them (2*X), SymPy's gives X's
+/// coefficient.
+const SYMPY_DEPARTS: &[(&str, &str, &str)] = &[("ruletest7.al", "d2", "2*X")];
 
 fn eval(m: &LoadedModel, e: ExprId, values: &HashMap<String, f64>) -> Option<f64> {
     let ar = &m.model.ar;
@@ -94,6 +96,10 @@ fn compare(name: &str, m: &mut LoadedModel, f: &FileFixture) -> (usize, Vec<Stri
     let mut bad = Vec::new();
     for (k, want) in &f.scalars {
         let Some(Value::Scalar(e)) = m.value(k) else { continue };
+        if let Some((_, _, autolev)) = SYMPY_DEPARTS.iter().find(|(n, q, _)| *n == name && q == k) {
+            assert_eq!(&m.model.ar.to_text(e), autolev, "{name}: {k}");
+            continue;
+        }
         let Some(got) = eval(m, e, &f.values) else { continue };
         compared += 1;
         if !close(got, *want) {
@@ -161,7 +167,15 @@ fn corpus_files_match_sympy_or_are_rejected_precisely() {
         let f = &fixtures.files[*name];
         match lang::load(name, src) {
             Ok(mut m) => {
-                assert!(f.error.is_none(), "{name}: SymPy fails ({:?}) but this loads", f.error);
+                if let Some(e) = &f.error {
+                    // SymPy's parser cannot run it (ruletest6's complex roots, ruletest10's
+                    // second orientation of a frame): nothing to compare with.
+                    summary.push(format!(
+                        "{name}: loads; SymPy's parser fails ({})",
+                        e.lines().next().unwrap_or("")
+                    ));
+                    continue;
+                }
                 let (n, bad) = compare(name, &mut m, f);
                 assert!(n > 0, "{name}: nothing compared");
                 summary.push(format!("{name}: {n} quantities compared"));

@@ -1,4 +1,4 @@
-//! Stress suite (issue 14, item 6): the abuse a new user tries, each case a test, driving the
+//! Stress suite: the abuse a new user tries, each case a test, driving the
 //! real `gyro-sim` and `kane` programs (built by `kane_tests::bins`). No case may end in a
 //! panic, an abort, a silent NaN or a lost or mixed file; each failure must be named. The
 //! results are tabulated in RELIABILITY.md. Run: `cargo test --release -p kane-tests --test stress`.

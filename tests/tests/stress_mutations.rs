@@ -1,4 +1,4 @@
-//! Stress suite, part two (issue 14, item 6): 1,000 scenes made by mutating the preset scenes of
+//! Stress suite, part two: 1,000 scenes made by mutating the preset scenes of
 //! gyro-sim/scenes with a fixed seed (a line deleted or duplicated, a value of another type, an
 //! extreme number, NaN or infinity as text, a misspelt key, a unit that is not one), each run
 //! in this process with its files written: no panic, every failure a named error, every

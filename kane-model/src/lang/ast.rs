@@ -201,6 +201,8 @@ pub enum StmtKind {
     Input(Vec<InputItem>),
     /// `OUTPUT a [unit], ...`.
     Output(Vec<OutputItem>),
+    /// `ENCODE a, ...`: quantities for generated code to compute, as OUTPUT's but not printed.
+    Encode(Vec<OutputItem>),
     /// `CODE KIND(args) file`.
     Code {
         /// DYNAMICS, ALGEBRAIC, NONLINEAR, ODE.

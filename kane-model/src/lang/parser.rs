@@ -266,6 +266,9 @@ impl<'a> Parser<'a> {
         if word == "RUN" && next.is_some() {
             return Ok(self.run_stmt());
         }
+        if word == "ENCODE" && matches!(next, Some(Tok::Name { .. })) {
+            return Ok(StmtKind::Encode(self.output_items()?));
+        }
         if SESSION_COMMANDS.contains(&word.as_str()) {
             return Ok(self.session_stmt(word));
         }
@@ -274,7 +277,7 @@ impl<'a> Parser<'a> {
             "INERTIA" if !matches!(next, Some(Tok::Punct('('))) => self.inertia_stmt(),
             "UNITS" | "UNITSYSTEM" if word == "UNITS" => self.units_stmt(),
             "INPUT" => self.input_stmt(),
-            "OUTPUT" => self.output_stmt(),
+            "OUTPUT" => Ok(StmtKind::Output(self.output_items()?)),
             "CODE" => self.code_stmt(),
             _ => {
                 if let Some(Tok::Name { text: on, suffix: 0 }) = next {
@@ -458,8 +461,9 @@ impl<'a> Parser<'a> {
         text
     }
 
-    /// `OUTPUT NAME [UNIT], ...`; an item may be an expression (`KE+PE`, `ZERO[1]`, `DET(J)`).
-    fn output_stmt(&mut self) -> PResult<StmtKind> {
+    /// The items of `OUTPUT NAME [UNIT], ...` (or ENCODE's); an item may be an expression
+    /// (`KE+PE`, `ZERO[1]`, `DET(J)`).
+    fn output_items(&mut self) -> PResult<Vec<OutputItem>> {
         self.pos += 1;
         let mut out = Vec::new();
         loop {
@@ -482,7 +486,7 @@ impl<'a> Parser<'a> {
                 break;
             }
         }
-        Ok(StmtKind::Output(out))
+        Ok(out)
     }
 
     /// `CODE KIND(args) FILE`.

@@ -50,6 +50,7 @@ fn value_text(m: &mut Model, p: &Presenter, v: &Value, frame: Option<FrameId>) -
     let err = |e: ExprError| e.to_string();
     match v {
         Value::Scalar(x) => p.text(&mut m.ar, *x).map_err(err),
+        Value::Shown(text) => Ok(text.clone()),
         Value::Vector(v) => {
             let v = match frame {
                 Some(f) => m.express_vector(v, f).map_err(|e| e.to_string())?,

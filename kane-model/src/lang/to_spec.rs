@@ -4,7 +4,7 @@
 
 use thiserror::Error;
 
-use crate::mechanics::FrameId;
+use crate::mechanics::{FrameId, KaneEquations};
 use crate::spec::{Drawing, ModelSpec, OrientationForm};
 
 use super::{LoadedModel, Value};
@@ -12,11 +12,6 @@ use super::{LoadedModel, Value};
 /// Why a loaded model file has no spec.
 #[derive(Clone, Debug, PartialEq, Error)]
 pub enum SpecError {
-    /// The model file forms no equations of motion.
-    #[error(
-        "the model derives no equations: form them in the model file (ZERO = FR() + FRSTAR(), then KANE())"
-    )]
-    NoEquations,
     /// An OUTPUT name that is not a scalar or vector the model defines.
     #[error("OUTPUT `{0}` is not a state, nor a scalar or vector defined in the model")]
     UnknownOutput(String),
@@ -43,6 +38,9 @@ impl LoadedModel {
     /// The spec, with the default drawing's outputs when `drawn`.
     fn spec_with(mut self, name: &str, drawn: bool) -> Result<(ModelSpec, Option<Drawing>), SpecError> {
         let mut formulas = super::interp::specified_formulas(&mut self.model, &self.formulas)?;
+        // A file without dynamics: its code computes OUTPUT and ENCODE quantities from inputs
+        // (coordinates, speeds and their rates among them), as Autolev's CODE ALGEBRAIC() does.
+        let algebraic = self.equations.is_none() && !self.forces_formed;
         let mut eqs = match self.equations.clone() {
             Some(eqs) => eqs,
             // FR() + FRSTAR() formed without KANE() or SOLVE (a file that writes its residuals
@@ -52,9 +50,18 @@ impl LoadedModel {
                 eqs.substitute(&mut self.model.ar, &formulas)?;
                 eqs
             }
-            None => return Err(SpecError::NoEquations),
+            None => {
+                for name in std::mem::take(&mut self.encoded) {
+                    if !self.outputs.iter().any(|(o, _)| o.eq_ignore_ascii_case(&name)) {
+                        self.outputs.push((name, None));
+                    }
+                }
+                KaneEquations::none()
+            }
         };
-        self.extra_coordinates(&mut eqs)?;
+        if !algebraic {
+            self.extra_coordinates(&mut eqs)?;
+        }
         // Auxiliary speeds are zero in every motion the outputs are computed along.
         formulas.extend(self.model.auxiliary_zero_map()?);
         let outputs = self.output_values(&eqs)?;
@@ -94,13 +101,21 @@ impl LoadedModel {
         spec.add_configuration_residuals("CONFIG", "")?;
         spec.add_motion_residuals("CONSTRAINT", "");
         spec.add_constraint_matrix("CONSTRAINT_MATRIX");
-        if !spec.outputs.iter().any(|o| o.name.eq_ignore_ascii_case("KE")) {
+        if !algebraic && !spec.outputs.iter().any(|o| o.name.eq_ignore_ascii_case("KE")) {
             let unit = spec.unit("KE").to_string();
             spec.add_kinetic_energy("KE", &unit)?;
         }
         let drawing = if drawn { Some(spec.add_drawing(self.gravity.as_ref())?) } else { None };
         for o in &mut spec.outputs {
             o.components = spec.model.ar.subs_many(&o.components, &formulas)?;
+        }
+        if algebraic {
+            let computed: Vec<_> = spec.outputs.iter().flat_map(|o| o.components.iter().copied()).collect();
+            for s in spec.model.ar.free_symbols(&computed) {
+                if matches!(spec.model.ar.symbol_info(s).kind, crate::expr::SymbolKind::Variable { .. }) {
+                    spec.add_input(s);
+                }
+            }
         }
         Ok((spec, drawing))
     }

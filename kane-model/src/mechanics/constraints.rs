@@ -151,13 +151,10 @@ impl Model {
         map
     }
 
-    /// The motion constraints as `(u_d, A_d, A_i, b)` with `A_d u_d + A_i u_i + b = 0` over
-    /// the independent speeds `u_i` in their order, when the model has any.
-    pub(crate) fn motion_constraint_rows(
-        &self,
-    ) -> Option<(Vec<SymbolId>, Vec<Vec<ExprId>>, Vec<Vec<ExprId>>, Vec<ExprId>)> {
-        let c = self.constraints.as_ref()?;
-        Some((c.dependent.clone(), c.a_dependent.clone(), c.a_independent.clone(), c.b.clone()))
+    /// The motion constraints `A_d u_d + A_i u_i + b = 0` over the independent speeds `u_i` in
+    /// their order, when the model has any.
+    pub(crate) fn motion_constraint_rows(&self) -> Option<MotionConstraints> {
+        self.constraints.clone()
     }
 
     /// `v` with the kinematic equations applied.

@@ -410,6 +410,22 @@ impl Model {
                 self.mat_mul(&m, &r0)?
             }
             Orientation::EulerParameters(e) => self.quaternion_dcm(e)?,
+            Orientation::Rodrigues(g) => {
+                // Euler parameters (1, g) / |(1, g)|: the quadratic form over |(1, g)|^2.
+                let one = self.ar.one();
+                let m = self.quaternion_dcm([one, g[0], g[1], g[2]])?;
+                let mut norm = vec![one];
+                for x in g {
+                    norm.push(self.ar.powi(x, 2)?);
+                }
+                let norm = self.ar.add(&norm)?;
+                let inv = self.ar.powi(norm, -1)?;
+                let mut out = m;
+                for x in out.iter_mut().flatten() {
+                    *x = self.ar.mul(&[*x, inv])?;
+                }
+                out
+            }
             Orientation::Dcm(m) => m,
         })
     }

@@ -61,6 +61,22 @@ pub struct KaneEquations {
 }
 
 impl KaneEquations {
+    /// Equations of nothing: no states, for a model whose code only computes quantities from
+    /// inputs (Autolev's CODE ALGEBRAIC() of a file without dynamics).
+    pub fn none() -> KaneEquations {
+        KaneEquations {
+            coordinates: Vec::new(),
+            speeds: Vec::new(),
+            constraints: None,
+            speed_derivatives: Vec::new(),
+            kinematics: Vec::new(),
+            mass_matrix: Vec::new(),
+            forcing: Vec::new(),
+            loads: None,
+            formed: true,
+        }
+    }
+
     /// Every expression of the equations with `map` substituted (formulas for specified
     /// quantities, for example).
     pub fn substitute(&mut self, ar: &mut crate::expr::Arena, map: &FxHashMap<ExprId, ExprId>) -> Result<()> {

@@ -41,6 +41,9 @@ pub enum Orientation {
     },
     /// Euler parameters `(e0, e1, e2, e3)`, scalar first, mapping child to parent components.
     EulerParameters([ExprId; 4]),
+    /// Rodrigues parameters `tan(angle/2)` times the rotation axis, mapping child to parent
+    /// components.
+    Rodrigues([ExprId; 3]),
     /// A direction-cosine matrix with entries `parent_i . child_j`.
     Dcm(Mat3),
 }

@@ -160,6 +160,18 @@ impl Model {
         steps.into_iter().map(|(k, _)| (self.position_edges[k].0, self.position_edges[k].1)).collect()
     }
 
+    /// The frames whose unit vectors the positions from `from` to `point` are written in.
+    pub fn position_path_frames(&self, point: PointId, from: PointId) -> Vec<FrameId> {
+        let steps = self.position_steps(point, from).unwrap_or_default();
+        let mut out: Vec<FrameId> = steps
+            .iter()
+            .flat_map(|(k, _)| self.position_edges[*k].2.terms().iter().map(|(f, _)| *f))
+            .collect();
+        out.sort();
+        out.dedup();
+        out
+    }
+
     /// The points connected to `point` by chains of position relations, `point` included.
     pub fn position_component(&self, point: PointId) -> Vec<PointId> {
         let (_, seen) = self.position_search(point, None);

@@ -1,4 +1,4 @@
-//! Batch lanes (issue 14, item 4): several members of a sweep integrated in lock step, each
+//! Batch lanes: several members of a sweep integrated in lock step, each
 //! number a [`Lanes`] of `N` members, through a generated model's `rhs_lanes` (parameters and
 //! parameter constants per lane). In come a model, the members' parameters and initial states,
 //! an end time, an embedded pair and tolerances; out go each member's final state and the cost.

@@ -60,6 +60,7 @@ fn orientation_entries(o: &Orientation) -> Vec<ExprId> {
         Orientation::Axis { angle, .. } => vec![*angle],
         Orientation::BodyFixed { angles, .. } | Orientation::SpaceFixed { angles, .. } => angles.to_vec(),
         Orientation::EulerParameters(e) => e.to_vec(),
+        Orientation::Rodrigues(g) => g.to_vec(),
         Orientation::Dcm(m) => m.iter().flatten().copied().collect(),
     }
 }

@@ -52,7 +52,8 @@ fn checked(
     (mut model, errors): (super::LoadedModel, Vec<super::Diagnostic>),
 ) -> Result<Checked, Report> {
     let text = std::mem::take(&mut model.text);
-    let mut found = consistency::consistency(&mut model, &text);
+    let mut found = std::mem::take(&mut model.warnings);
+    found.extend(consistency::consistency(&mut model, &text));
     found.extend(coordinates::coordinates_without_kinematics(&model));
     found.extend(loads::repeated_loads(&model, &text));
     found.extend(warnings::input_warnings(&model));

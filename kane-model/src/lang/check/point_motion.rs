@@ -120,6 +120,11 @@ pub(super) fn acceleration_contradictions(m: &mut LoadedModel, motions: &Motions
         let model = &mut m.model;
         let Some(assigned) = model.points[point.index()].acceleration.get(&frame).cloned() else { continue };
         let Ok(v) = model.velocity(point, frame) else { continue };
+        // The rate is taken with the frames' motions as they stand at the end.
+        let frames: Vec<FrameId> = v.terms().iter().map(|(f, _)| *f).collect();
+        if frames_restated_after(model, &m.sources, &frames, source.span.start) {
+            continue;
+        }
         let Ok(implied) = model.dt_in(&v, frame) else { continue };
         let Ok(Verdict::Differs { axis, assigned, implied }) =
             motions.compare(model, &assigned, &implied, frame)
@@ -184,8 +189,11 @@ fn rigid_frames(model: &Model, carrier: Carrier, frame: FrameId) -> Vec<FrameId>
 
 /// The points whose set velocities `p`'s setting is compared from: the point a theorem carried
 /// it from, points its value read, its neighbours in the tree of positions and the roots of
-/// that tree, each with a velocity set in `frame` that does not itself follow from `p`'s.
+/// that tree, each with a velocity set in `frame` by an earlier statement (or by the frame's
+/// origin, at rest) that does not itself follow from `p`'s, reached by positions not restated
+/// since.
 fn bases(model: &Model, sources: &Sources, p: PointId, frame: FrameId) -> Vec<PointId> {
+    let at = sources.velocities.get(&(p, frame)).map_or(usize::MAX, |s| s.span.start);
     let mut candidates: Vec<PointId> =
         sources.velocities.get(&(p, frame)).map(|s| s.bases().collect()).unwrap_or_default();
     if let Some((parent, _)) = &model.points[p.index()].position {
@@ -205,9 +213,40 @@ fn bases(model: &Model, sources: &Sources, p: PointId, frame: FrameId) -> Vec<Po
         .into_iter()
         .filter(|y| *y != p && seen.insert(*y))
         .filter(|y| model.points[y.index()].velocity.contains_key(&frame) && component.contains(y))
+        // What a statement says is checked against what came before it.
+        .filter(|y| sources.velocities.get(&(*y, frame)).is_none_or(|s| s.span.start <= at))
+        // A position restated after the claim is not the geometry the claim was made in.
+        .filter(|y| {
+            model
+                .position_path(p, *y)
+                .iter()
+                .all(|(a, b)| sources.position_of(*a, *b).is_none_or(|s| s.start <= at))
+        })
+        // So is a frame of those positions turned or oriented anew after it.
+        .filter(|y| !frames_restated_after(model, sources, &model.position_path_frames(p, *y), at))
         .filter(|y| !follows_from(model, sources, *y, p, frame))
         .take(MOST_BASES)
         .collect()
+}
+
+/// Whether any of `frames`, or a frame above one in the tree of orientations, has its angular
+/// velocity or orientation set by a statement after `at`.
+fn frames_restated_after(model: &Model, sources: &Sources, frames: &[FrameId], at: usize) -> bool {
+    let mut seen = FxHashSet::default();
+    for f in frames {
+        let mut next = Some(*f);
+        while let Some(g) = next {
+            if !seen.insert(g) {
+                break;
+            }
+            let later = |s: Option<&Span>| s.is_some_and(|s| s.start > at);
+            if later(sources.angular_velocities.get(&g)) || later(sources.orientation_of(model, g)) {
+                return true;
+            }
+            next = model.frame_parent(g);
+        }
+    }
+    false
 }
 
 /// Whether the velocity of `y` in `frame` is set from `p`'s, directly or through others.

@@ -36,8 +36,15 @@ pub(crate) struct Motions {
     map: FxHashMap<ExprId, ExprId>,
     /// The symbols of each set of Euler parameters.
     euler: Vec<Vec<SymbolId>>,
-    /// The dependent speeds and `A_d u_d + A_i u_i + b = 0` as `(A_d, A_i u_i + b)`.
-    constraints: Option<(Vec<SymbolId>, Vec<Vec<ExprId>>, Vec<ExprId>)>,
+    /// The dependent speeds and the motion constraints, when the model has any.
+    constraints: Option<Dependent>,
+}
+
+/// `A_d u_d + r = 0` for the dependent speeds `u_d`, `r = A_i u_i + b`.
+struct Dependent {
+    speeds: Vec<SymbolId>,
+    a_dependent: Vec<Vec<ExprId>>,
+    rest: Vec<ExprId>,
 }
 
 impl Motions {
@@ -56,10 +63,10 @@ impl Motions {
         }
         let euler = euler_groups(model);
         let constraints = match model.motion_constraint_rows() {
-            Some((dependent, a_dependent, a_independent, b)) => {
+            Some(c) => {
                 let independent = model.independent_speeds();
-                let mut rest = Vec::with_capacity(b.len());
-                for (row, b) in a_independent.iter().zip(&b) {
+                let mut rest = Vec::with_capacity(c.b.len());
+                for (row, b) in c.a_independent.iter().zip(&c.b) {
                     let mut terms = vec![*b];
                     for (a, u) in row.iter().zip(&independent) {
                         let u = model.ar.symbol_expr(*u);
@@ -67,12 +74,13 @@ impl Motions {
                     }
                     rest.push(model.ar.add(&terms)?);
                 }
-                let a_dependent = a_dependent
+                let a_dependent = c
+                    .a_dependent
                     .iter()
                     .map(|r| model.ar.subs_many(r, &map))
                     .collect::<std::result::Result<_, _>>()?;
                 let rest = model.ar.subs_many(&rest, &map)?;
-                Some((dependent, a_dependent, rest))
+                Some(Dependent { speeds: c.dependent, a_dependent, rest })
             }
             None => None,
         };
@@ -111,8 +119,8 @@ impl Motions {
     fn sample(&self, model: &Model, a: &[ExprId], b: &[ExprId]) -> Verdict {
         let n = a.len();
         let mut roots: Vec<ExprId> = a.iter().chain(b).copied().collect();
-        if let Some((_, ad, rest)) = &self.constraints {
-            roots.extend(ad.iter().flatten().chain(rest));
+        if let Some(c) = &self.constraints {
+            roots.extend(c.a_dependent.iter().flatten().chain(&c.rest));
         }
         let syms = model.ar.free_symbols(&roots);
         let mut rng = StdRng::seed_from_u64(0x636865636b);
@@ -158,13 +166,9 @@ impl Motions {
 
 /// Sets the dependent speeds in `values` so that the motion constraints hold; false where
 /// they cannot be solved (a singular `A_d` there).
-fn solve_dependent(
-    model: &Model,
-    (dependent, ad, rest): &(Vec<SymbolId>, Vec<Vec<ExprId>>, Vec<ExprId>),
-    values: &mut FxHashMap<SymbolId, f64>,
-) -> bool {
-    let m = dependent.len();
-    let roots: Vec<ExprId> = ad.iter().flatten().chain(rest).copied().collect();
+fn solve_dependent(model: &Model, c: &Dependent, values: &mut FxHashMap<SymbolId, f64>) -> bool {
+    let m = c.speeds.len();
+    let roots: Vec<ExprId> = c.a_dependent.iter().flatten().chain(&c.rest).copied().collect();
     let Ok(v) = model.ar.eval(&roots, |s| values.get(&s).copied()) else { return false };
     let mut a = nalgebra::DMatrix::from_row_slice(m, m, &v[..m * m]);
     let b = nalgebra::DVector::from_iterator(m, v[m * m..].iter().map(|x| -x));
@@ -177,7 +181,7 @@ fn solve_dependent(
     if x.iter().any(|x| !x.is_finite()) {
         return false;
     }
-    for (s, x) in dependent.iter().zip(x.iter()) {
+    for (s, x) in c.speeds.iter().zip(x.iter()) {
         values.insert(*s, *x);
     }
     true

@@ -161,6 +161,29 @@ impl Interpreter {
         let body = self.frame_arg(&args[1])?;
         let from = self.point_arg(&args[2])?;
         let to = self.point_arg(&args[3])?;
+        if self.model.velocity(from, frame).is_err() {
+            // A point whose motion nothing gives: at rest there, said in a warning.
+            let (p, f) = (self.model.point_name(from).to_string(), self.model.frame_name(frame).to_string());
+            self.warnings.push(
+                Diagnostic::warning(e.span.clone(), format!("{p} has no velocity in {f} (none is assigned, nor a position from a point that has one): {upper} takes it as at rest there"))
+                    .with_help(format!("say so with V_{p}_{f}> = 0> (or give its motion)")),
+            );
+            self.model.fix_point(from, frame);
+            let at_rest = KinematicSource { span: e.span.clone(), theorem: None, reads: Vec::new() };
+            self.sources.velocities.insert((from, frame), at_rest);
+        }
+        if self.model.position(to, from).is_err() {
+            let (p, q) = (self.model.point_name(from).to_string(), self.model.point_name(to).to_string());
+            self.warnings.push(
+                Diagnostic::warning(
+                    e.span.clone(),
+                    format!("{p} and {q} are related by no position: {upper} takes them as one place"),
+                )
+                .with_help(format!("say so with P_{p}_{q}> = 0> (or place {q} from {p})")),
+            );
+            self.model.set_position(to, from, Vector::zero()).at(&e.span)?;
+            self.sources.position(to, from, &e.span);
+        }
         match upper {
             "V2PTS" => self.model.v2pts(frame, body, from, to),
             "A2PTS" => self.model.a2pts(frame, body, from, to),

@@ -60,7 +60,9 @@ impl Interpreter {
             | StmtKind::UnitSystem(_)
             | StmtKind::Session(_)
             | StmtKind::Code { .. } => true,
-            StmtKind::Output(items) => !items.iter().any(|i| i.expr.is_some() || self.is_deferred(&i.name)),
+            StmtKind::Output(items) | StmtKind::Encode(items) => {
+                !items.iter().any(|i| i.expr.is_some() || self.is_deferred(&i.name))
+            }
             StmtKind::Expr(e) => {
                 matches!(&e.kind, ExprKind::Call { name, args } if name.eq_ignore_ascii_case("KANE") && args.is_empty())
             }

@@ -37,15 +37,24 @@ impl Interpreter {
         };
         let m = self.number_matrix(&args[0], e)?;
         let n = m.nrows();
-        let values = real_eigenvalues(&m).map_err(|z| {
-            Diagnostic::error(
-                e.span.clone(),
-                format!(
-                    "EIG: the matrix has complex eigenvalues ({} {:+}i and more), which values here cannot hold",
-                    z.re, z.im
-                ),
-            )
-        })?;
+        let values = match real_eigenvalues(&m) {
+            Ok(v) => v,
+            Err(_) if outputs.is_none() => {
+                // Complex eigenvalues, as Autolev's session shows them.
+                let all: Vec<_> = m.complex_eigenvalues().iter().copied().collect();
+                return Ok(Value::Shown(super::polynomial::complex_column(all)));
+            }
+            Err(z) => {
+                return Err(Diagnostic::error(
+                    e.span.clone(),
+                    format!(
+                        "EIG(M, VALUES, VECTORS): the matrix has complex eigenvalues ({} {:+}i and more), and complex eigenvectors are not formed",
+                        z.re, z.im
+                    ),
+                )
+                .with_help("EIG(M) alone gives complex eigenvalues, as a value to show"))
+            }
+        };
         let column = values.iter().map(|x| self.model.ar.float(*x)).collect::<Result<_, _>>().at(&e.span)?;
         let column = Value::Matrix { rows: n, cols: 1, data: column };
         let Some(((values_name, values_span), (vectors_name, vectors_span))) = outputs else {

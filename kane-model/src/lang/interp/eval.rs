@@ -127,6 +127,11 @@ impl Interpreter {
     fn binary(&mut self, op: BinOp, a: &Expr, b: &Expr, e: &Expr) -> IResult<Value> {
         let fail: &Span = &e.span;
         let (va, vb) = (self.eval(a)?, self.eval(b)?);
+        // A value only Autolev's session shows stays one, written out.
+        if matches!(va, Value::Shown(_)) || matches!(vb, Value::Shown(_)) {
+            let sym = ["+", "-", "*", "/", "^"][op as usize];
+            return Ok(Value::Shown(format!("{} {sym} {}", self.shown_text(&va), self.shown_text(&vb))));
+        }
         let r = match op {
             BinOp::Add => value::add(&mut self.model, &va, &vb, false).at(fail)?,
             BinOp::Sub => value::add(&mut self.model, &va, &vb, true).at(fail)?,
@@ -164,6 +169,15 @@ impl Interpreter {
                 _ => "add or subtract values of the same kind: scalars, vectors (>) or dyadics (>>)",
             })
         })
+    }
+
+    /// How a value is written where a shown value holds it.
+    pub(crate) fn shown_text(&self, v: &Value) -> String {
+        match v {
+            Value::Shown(t) => format!("({t})"),
+            Value::Scalar(x) => format!("({})", self.model.ar.to_text(*x)),
+            other => other.kind().to_string(),
+        }
     }
 
     /// A scalar value, or an error saying what was found instead.

@@ -62,6 +62,11 @@ impl Interpreter {
     /// evaluate to a number (they have no symbolic form), FACTORIAL's to a whole one from 0 to 170.
     fn whole_number_function(&mut self, upper: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
         super::arity(upper, args, 1, &e.span)?;
+        if self.number(&args[0]).is_err() {
+            // Of a symbol, only Autolev's session shows these.
+            let x = self.eval(&args[0])?;
+            return Ok(Value::Shown(format!("{upper}{}", self.shown_text(&x))));
+        }
         let x = self.number(&args[0]).map_err(|_| {
             Diagnostic::error(
                 args[0].span.clone(),
@@ -113,6 +118,10 @@ impl Interpreter {
     ) -> IResult<Value> {
         let fail: &Span = span;
         Ok(match v {
+            Value::Shown(_) => {
+                return Err(Diagnostic::error(span.clone(), format!("this takes {}, which a model cannot compute with", v.kind()))
+                    .with_help("complex numbers and FACTORIAL of a symbol are values to show: use them in no other expression"))
+            }
             Value::Scalar(x) => Value::Scalar(f(&mut self.model, *x).at(fail)?),
             Value::Matrix { rows, cols, data } => Value::Matrix {
                 rows: *rows,

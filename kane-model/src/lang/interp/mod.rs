@@ -111,6 +111,8 @@ pub struct LoadedModel {
     pub units: FxHashMap<String, String>,
     /// OUTPUT: the names asked for, with optional units.
     pub outputs: Vec<(String, Option<String>)>,
+    /// ENCODE: the names generated code computes besides the outputs.
+    pub encoded: Vec<String>,
     /// CODE requests.
     pub code: Vec<CodeRequest>,
     /// The acceleration of gravity GRAVITY gave, if any.
@@ -131,6 +133,8 @@ pub struct LoadedModel {
     pub(crate) formulas: FxHashMap<String, ExprId>,
     /// Whether the file formed FR() or FRSTAR().
     pub(crate) forces_formed: bool,
+    /// The warnings of statements that ran.
+    pub(crate) warnings: Vec<Diagnostic>,
 }
 
 impl LoadedModel {
@@ -149,6 +153,10 @@ impl LoadedModel {
         let key = name.to_ascii_uppercase();
         match self.bindings.get(&key) {
             Some(Binding::Value(v)) => Some(v.clone()),
+            // A SPECIFIED quantity with a formula: the formula.
+            Some(Binding::Symbol(..)) if self.formulas.contains_key(&key) => {
+                Some(Value::Scalar(self.formulas[&key]))
+            }
             // EQN[1], EQN[2], ...: a column of scalars (B[i, j]: a matrix).
             _ => value::array_value(self.arrays.get(&key)?),
         }
@@ -201,6 +209,7 @@ pub(crate) struct Interpreter {
     pub(crate) inputs: Vec<InputValue>,
     pub(crate) units: FxHashMap<String, String>,
     pub(crate) outputs: Vec<(String, Option<String>)>,
+    pub(crate) encoded: Vec<String>,
     pub(crate) code: Vec<CodeRequest>,
     pub(crate) unit_system: UnitSystem,
     pub(crate) bookkeeping: Vec<Bookkeeping>,
@@ -240,6 +249,8 @@ pub(crate) struct Interpreter {
     /// Whether the file formed FR() or FRSTAR() (its equations of motion are then KANE()'s,
     /// for code generation, even where it calls neither KANE() nor SOLVE).
     pub(crate) forces_formed: bool,
+    /// Warnings of statements that ran (what the file leaves to a reading it may not mean).
+    pub(crate) warnings: Vec<Diagnostic>,
 }
 
 type IResult<T> = Result<T, Diagnostic>;
@@ -300,6 +311,7 @@ impl Interpreter {
             inputs: Vec::new(),
             units: FxHashMap::default(),
             outputs: Vec::new(),
+            encoded: Vec::new(),
             code: Vec::new(),
             unit_system: UnitSystem::default(),
             bookkeeping: Vec::new(),
@@ -318,6 +330,7 @@ impl Interpreter {
             chain_speeds: Vec::new(),
             pending_inertias: Vec::new(),
             forces_formed: false,
+            warnings: Vec::new(),
         }
     }
 
@@ -389,6 +402,7 @@ impl Interpreter {
             inputs: self.inputs,
             units: self.units,
             outputs: self.outputs,
+            encoded: self.encoded,
             code: self.code,
             gravity: self.gravity.map(|(g, _)| g),
             bookkeeping: self.bookkeeping,
@@ -400,6 +414,7 @@ impl Interpreter {
             tainted: self.tainted,
             formulas: self.formulas,
             forces_formed: self.forces_formed,
+            warnings: self.warnings,
         }
     }
 }

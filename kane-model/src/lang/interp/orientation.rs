@@ -1,4 +1,4 @@
-//! DIRCOS and KINDIFFS: orientations by angle sequences or Euler parameters, and the kinematic
+//! DIRCOS and KINDIFFS: orientations by angle sequences, Euler or Rodrigues parameters, and the kinematic
 //! equations that go with a frame's angular velocity.
 //!
 //! In: `DIRCOS(A, B, kind, angles...)` or `KINDIFFS(A, B, kind, angles...)`. Out: B oriented in
@@ -16,6 +16,8 @@ use super::{At, IResult, Interpreter};
 enum Kind {
     /// Euler parameters, Autolev order: vector part e1, e2, e3, then the scalar e4.
     Euler,
+    /// Rodrigues parameters: `tan(angle/2)` times the axis' measure numbers.
+    Rodrigues,
     Body([u8; 3]),
     Space([u8; 3]),
 }
@@ -25,6 +27,7 @@ impl Kind {
     fn orientation(&self, p: &[ExprId]) -> Orientation {
         match *self {
             Kind::Euler => Orientation::EulerParameters([p[3], p[0], p[1], p[2]]),
+            Kind::Rodrigues => Orientation::Rodrigues([p[0], p[1], p[2]]),
             Kind::Body(axes) => Orientation::BodyFixed { axes, angles: [p[0], p[1], p[2]] },
             Kind::Space(axes) => Orientation::SpaceFixed { axes, angles: [p[0], p[1], p[2]] },
         }
@@ -34,6 +37,9 @@ impl Kind {
 fn kind(word: &str) -> Option<Kind> {
     if word == "EULER" {
         return Some(Kind::Euler);
+    }
+    if word == "RODRIGUES" {
+        return Some(Kind::Rodrigues);
     }
     let (prefix, digits) = if let Some(d) = word.strip_prefix("BODY") {
         (true, d)
@@ -61,7 +67,7 @@ impl Interpreter {
         }
         Err(Diagnostic::error(
             e.span.clone(),
-            "expected EULER, BODYijk or SPACEijk (for example BODY123, SPACE312)",
+            "expected EULER, RODRIGUES, BODYijk or SPACEijk (for example BODY123, SPACE312)",
         ))
     }
 

@@ -11,8 +11,9 @@ use nalgebra::{Complex, DMatrix};
 /// `sqrt(eps) |r|`, 1.5e-8 (roots of higher multiplicity split further and are not caught).
 const NEAR_REAL: f64 = 1e-7;
 
-/// The real roots of `c[0] x^n + ... + c[n]`, ascending (leading zeros dropped), or the
-/// complex roots when there are some. No coefficients but zeros, or one, give no roots.
+/// The real roots of `c[0] x^n + ... + c[n]`, ascending (leading zeros dropped), or every
+/// root (real ones polished) when some are not real. No coefficients but zeros, or one, give no
+/// roots.
 pub(super) fn real_roots(c: &[f64]) -> Result<Vec<f64>, Vec<Complex<f64>>> {
     let c: Vec<f64> = c.iter().copied().skip_while(|x| *x == 0.0).collect();
     let n = c.len().saturating_sub(1);
@@ -28,9 +29,15 @@ pub(super) fn real_roots(c: &[f64]) -> Result<Vec<f64>, Vec<Complex<f64>>> {
     }
     let z = companion.complex_eigenvalues();
     let scale = z.iter().map(|z| z.norm()).fold(1.0, f64::max);
-    let complex: Vec<Complex<f64>> = z.iter().filter(|z| z.im.abs() > NEAR_REAL * scale).copied().collect();
-    if !complex.is_empty() {
-        return Err(complex);
+    if z.iter().any(|z| z.im.abs() > NEAR_REAL * scale) {
+        let all = z.iter().map(|z| {
+            if z.im.abs() > NEAR_REAL * scale {
+                *z
+            } else {
+                Complex::new(polish(&c, z.re), 0.0)
+            }
+        });
+        return Err(all.collect());
     }
     let mut roots: Vec<f64> = z.iter().map(|z| polish(&c, z.re)).collect();
     roots.sort_by(f64::total_cmp);

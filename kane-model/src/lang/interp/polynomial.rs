@@ -24,7 +24,6 @@ use crate::expr::ExprId;
 use super::super::ast::Expr;
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
-use super::eigen::short;
 use super::poly_roots::real_roots;
 use super::value::Value;
 use super::{At, IResult, Interpreter};
@@ -161,35 +160,23 @@ impl Interpreter {
                 format!("ROOTS needs finite coefficients, not {x}"),
             ));
         }
-        let roots = match numbers {
-            Some(v) => self.number_roots(&v, &e.span)?,
-            None => self.symbolic_roots(&c[c.len() - kept..], &e.span)?,
-        };
-        Ok(Value::column(roots))
+        match numbers {
+            Some(v) => self.number_roots(&v, &e.span),
+            None => Ok(Value::column(self.symbolic_roots(&c[c.len() - kept..], &e.span)?)),
+        }
     }
 
-    /// The real roots of number coefficients, or the error naming the complex ones.
-    fn number_roots(&mut self, c: &[f64], span: &Span) -> IResult<Vec<ExprId>> {
-        let roots = real_roots(c).map_err(|mut z| {
-            z.sort_by(|a, b| a.re.total_cmp(&b.re).then(a.im.total_cmp(&b.im)));
-            let named: Vec<String> = z
-                .iter()
-                .map(|z| {
-                    format!("{} {} {}i", short(z.re), if z.im < 0.0 { '-' } else { '+' }, short(z.im.abs()))
-                })
-                .collect();
-            Diagnostic::error(
-                span.clone(),
-                format!(
-                    "ROOTS: the polynomial has complex roots ({}), which values here cannot hold",
-                    named.join(", ")
-                ),
-            )
-            .with_help(
-                "values here are real numbers: ROOTS gives a polynomial's roots when they are all real",
-            )
-        })?;
-        roots.into_iter().map(|r| self.model.ar.float(r)).collect::<Result<_, _>>().at(span)
+    /// The real roots of number coefficients as a column; complex ones as Autolev's session
+    /// shows them (a model cannot use them).
+    fn number_roots(&mut self, c: &[f64], span: &Span) -> IResult<Value> {
+        match real_roots(c) {
+            Ok(roots) => {
+                let column =
+                    roots.into_iter().map(|r| self.model.ar.float(r)).collect::<Result<_, _>>().at(span)?;
+                Ok(Value::column(column))
+            }
+            Err(z) => Ok(Value::Shown(complex_column(z))),
+        }
     }
 
     /// Degree 1 and 2 with symbols in the coefficients, by formula.
@@ -241,4 +228,17 @@ fn describe(v: &Value) -> String {
         Value::Matrix { rows, cols, .. } => format!("a {rows}x{cols} matrix"),
         other => other.kind().to_string(),
     }
+}
+
+/// `[a + bi; c - di]`, sorted by real then imaginary part.
+pub(super) fn complex_column(mut z: Vec<nalgebra::Complex<f64>>) -> String {
+    z.sort_by(|a, b| a.re.total_cmp(&b.re).then(a.im.total_cmp(&b.im)));
+    let named: Vec<String> = z
+        .iter()
+        .map(|z| match z.im {
+            0.0 => format!("{}", z.re),
+            im => format!("{} {} {}i", z.re, if im < 0.0 { '-' } else { '+' }, im.abs()),
+        })
+        .collect();
+    format!("[{}]", named.join("; "))
 }

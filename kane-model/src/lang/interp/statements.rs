@@ -53,7 +53,8 @@ impl Interpreter {
                 Ok(())
             }
             StmtKind::Input(items) => self.input(items),
-            StmtKind::Output(items) => {
+            StmtKind::Output(items) | StmtKind::Encode(items) => {
+                let encode = matches!(s.kind, StmtKind::Encode(_));
                 for item in items {
                     if let Some(u) = &item.unit {
                         unit_size(u).map_err(|e| unit_error(&item.span, e))?;
@@ -65,7 +66,11 @@ impl Interpreter {
                         let key = format!("{}{suffix}", item.name.to_ascii_uppercase());
                         self.bindings.insert(key, Binding::Value(v));
                     }
-                    self.outputs.push((item.name.clone(), item.unit.clone()));
+                    if encode {
+                        self.encoded.push(item.name.clone());
+                    } else {
+                        self.outputs.push((item.name.clone(), item.unit.clone()));
+                    }
                 }
                 Ok(())
             }

@@ -15,6 +15,9 @@ pub enum Value {
     Vector(Vector),
     /// A dyadic.
     Dyadic(Dyadic),
+    /// A value Autolev's session shows but a model cannot use (complex roots and eigenvalues,
+    /// FACTORIAL of a symbol), as it prints.
+    Shown(String),
     /// A matrix of scalars, row-major.
     Matrix {
         /// The number of rows.
@@ -52,6 +55,9 @@ impl Value {
             Value::Vector(_) => "a vector",
             Value::Dyadic(_) => "a dyadic",
             Value::Matrix { .. } => "a matrix",
+            Value::Shown(_) => {
+                "a value only Autolev's session shows (complex numbers, FACTORIAL of a symbol)"
+            }
         }
     }
 
@@ -98,6 +104,7 @@ pub fn add(m: &mut Model, a: &Value, b: &Value, negate: bool) -> Result<Option<V
 /// `k * v` for a scalar `k`.
 pub fn scale(m: &mut Model, v: &Value, k: ExprId) -> Result<Value> {
     Ok(match v {
+        Value::Shown(text) => Value::Shown(format!("{}*({text})", m.ar.to_text(k))),
         Value::Scalar(x) => Value::Scalar(m.ar.mul(&[k, *x])?),
         Value::Vector(x) => Value::Vector(m.scale(x, k)?),
         Value::Dyadic(x) => Value::Dyadic(m.scale_dyadic(x, k)?),

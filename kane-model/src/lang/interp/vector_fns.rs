@@ -174,6 +174,25 @@ impl Interpreter {
     /// vector: `D . v`, or `v . D = D^T . v`).
     fn dot_product(&mut self, a: &Expr, b: &Expr, e: &Expr) -> IResult<Value> {
         let fail: &Span = &e.span;
+        // A matrix of vectors written out (`DOT(V1>, [V2>; 2*V2>])`): the matrix of the dots.
+        for (list, other, list_first) in [(b, a, false), (a, b, true)] {
+            let ExprKind::Matrix(rows) = &list.kind else { continue };
+            let cols = rows.first().map_or(0, Vec::len);
+            let mut data = Vec::with_capacity(rows.len() * cols);
+            for entry in rows.iter().flatten() {
+                let (x, y) = if list_first { (entry, other) } else { (other, entry) };
+                match self.dot_product(x, y, e)? {
+                    Value::Scalar(d) => data.push(d),
+                    v => {
+                        return Err(Diagnostic::error(
+                            entry.span.clone(),
+                            format!("DOT of a matrix of vectors gives scalars, not {}", v.kind()),
+                        ))
+                    }
+                }
+            }
+            return Ok(Value::Matrix { rows: rows.len(), cols, data });
+        }
         match (self.eval(a)?, self.eval(b)?) {
             (Value::Dyadic(d), Value::Vector(v)) => {
                 Ok(Value::Vector(self.model.dyadic_dot(&d, &v).at(fail)?))

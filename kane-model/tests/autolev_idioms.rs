@@ -1,0 +1,389 @@
+//! Idioms of research Autolev files, each in a small file of our own: they run as written, with
+//! Autolev's meaning (assigned kinematics, the language's commands and functions).
+
+use kane_model::expr::ExprId;
+use kane_model::lang::{self, LoadedModel, Severity, Value};
+
+/// Checks `src`, failing the test on an error; the checked model and its warnings' text.
+fn checks(src: &str) -> (LoadedModel, String) {
+    match lang::check("idiom.al", src) {
+        Ok(c) => (c.model, c.warnings.to_string()),
+        Err(r) => panic!("{r}"),
+    }
+}
+
+/// The report of a file that must not check.
+fn fails(src: &str) -> String {
+    match lang::check("idiom.al", src) {
+        Ok(_) => panic!("checked:\n{src}"),
+        Err(r) => r.to_string(),
+    }
+}
+
+/// Values for symbols by name (`Q1` = 0.3, ...); others 0.
+fn at<'a>(
+    m: &'a LoadedModel,
+    values: &'a [(&str, f64)],
+) -> impl Fn(kane_model::expr::SymbolId) -> Option<f64> + 'a {
+    move |s| {
+        let name = &m.model.ar.symbol_info(s).name;
+        Some(values.iter().find(|(n, _)| n.eq_ignore_ascii_case(name)).map_or(0.0, |(_, v)| *v))
+    }
+}
+
+fn scalar(m: &LoadedModel, name: &str) -> ExprId {
+    match m.value(name) {
+        Some(Value::Scalar(x)) => x,
+        other => panic!("{name}: {other:?}"),
+    }
+}
+
+/// The value of the scalar `name` at `values`.
+fn number(m: &LoadedModel, name: &str, values: &[(&str, f64)]) -> f64 {
+    m.model.ar.eval(&[scalar(m, name)], at(m, values)).unwrap()[0]
+}
+
+/// The measure numbers of the vector `name` in `frame` at `values`.
+fn measures(m: &mut LoadedModel, name: &str, frame: &str, values: &[(&str, f64)]) -> [f64; 3] {
+    let Some(Value::Vector(v)) = m.value(name) else { panic!("{name} is not a vector") };
+    in_frame(m, &v, frame, values)
+}
+
+/// The velocity of `point` in N at `values`, in N.
+fn velocity(m: &mut LoadedModel, point: &str, values: &[(&str, f64)]) -> [f64; 3] {
+    let (p, n) = (m.model.point(point).unwrap(), m.model.frame("N").unwrap());
+    let v = m.model.velocity(p, n).unwrap();
+    in_frame(m, &v, "N", values)
+}
+
+fn in_frame(
+    m: &mut LoadedModel,
+    v: &kane_model::mechanics::Vector,
+    frame: &str,
+    values: &[(&str, f64)],
+) -> [f64; 3] {
+    let f = m.model.frame(frame).unwrap();
+    let e = m.model.express(v, f).unwrap();
+    let x = m.model.ar.eval(&e, at(m, values)).unwrap();
+    [x[0], x[1], x[2]]
+}
+
+fn close(a: [f64; 3], b: [f64; 3]) -> bool {
+    a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-12)
+}
+
+/// A disc of radius R rolling on N's X axis: its contact point is located with N's unit vector.
+const ROLLING_DISC: &str = "NEWTONIAN N
+BODIES D
+POINTS DN
+CONSTANTS R, M, G
+VARIABLES Q1', Q2', U1', U2'
+SIMPROT(N, D, 3, Q2)
+Q1' = U1
+Q2' = U2
+P_NO_DO> = Q1*N1> + R*N2>
+V_DO_N> = U1*N1>
+W_D_N> = U2*N3>
+P_DO_DN> = -R*N2>
+V2PTS(N, D, DO, DN)
+MASS D = M
+INERTIA D, 1, 1, 1
+GRAVITY(-G*N2>)
+ZERO = FR() + FRSTAR()
+KANE()
+";
+
+#[test]
+fn a_contact_points_velocity_is_that_of_the_bodys_point_there() {
+    let (mut m, warnings) = checks(ROLLING_DISC);
+    assert!(warnings.is_empty(), "{warnings}");
+    // The material point of D at the contact, not the contact's rate (U1 N1>).
+    let v = velocity(&mut m, "DN", &[("U1", 0.5), ("U2", 2.0), ("R", 0.3)]);
+    assert!(close(v, [0.5 + 0.3 * 2.0, 0.0, 0.0]), "{v:?}");
+}
+
+#[test]
+fn a_velocity_assigned_as_the_rate_of_a_position_checks() {
+    let src = ROLLING_DISC.replace("V_DO_N> = U1*N1>", "V_DO_N> = DT(P_NO_DO>, N)");
+    let (mut m, _) = checks(&src);
+    let v = velocity(&mut m, "DO", &[("U1", 0.5)]);
+    assert!(close(v, [0.5, 0.0, 0.0]), "{v:?}");
+}
+
+#[test]
+fn a_velocity_that_contradicts_the_positions_is_an_error_naming_both_lines() {
+    let src = ROLLING_DISC.replace("V_DO_N> = U1*N1>", "V_DO_N> = U2*N1>");
+    let text = fails(&src);
+    assert!(text.contains("idiom.al:10:1: error: `V_DO_N> = U2*N1>` contradicts"), "{text}");
+    assert!(text.contains("idiom.al:9:1: note:"), "{text}");
+}
+
+/// A body B turning about N3 carrying a rotor RW whose orientation is not tracked.
+fn rotor(inertia: &str) -> String {
+    format!(
+        "NEWTONIAN N\nBODIES B, RW\nVARIABLES Q1', U1', U2'\nCONSTANTS J, K\n\
+         SIMPROT(N, B, 3, Q1)\nSIMPROT(B, RW, 1, 0)\nQ1' = U1\nW_B_N> = U1*B3>\nW_RW_B> = U2*B1>\nV_BO_N> = 0>\nV_RWO_N> = 0>\n\
+         MASS B = 1, RW = 1\nINERTIA B, 1, 2, 3\nINERTIA RW, {inertia}\n\
+         ZERO = FR() + FRSTAR()\nKANE()\n"
+    )
+}
+
+#[test]
+fn an_untracked_rotor_symmetric_about_its_axis_checks() {
+    let (m, warnings) = checks(&rotor("J, K, K"));
+    assert!(warnings.is_empty(), "{warnings}");
+    assert_eq!(m.equations.unwrap().speeds.len(), 2);
+}
+
+#[test]
+fn an_untracked_rotor_that_is_not_symmetric_is_an_error() {
+    let text = fails(&rotor("J, K, 2*K"));
+    assert!(text.contains("`W_RW_B> = U2*B1>`"), "{text}");
+    assert!(text.contains("idiom.al:6:1"), "names the SIMPROT line: {text}");
+}
+
+#[test]
+fn the_gimbal_with_its_rotor_off_the_gimbal_centre_stays_an_error() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/gimbal_gyroscope.al");
+    let src = std::fs::read_to_string(path).unwrap();
+    assert!(src.contains("P_O_DO> = 0>   "));
+    let text = fails(&src.replace("P_O_DO> = 0>   ", "P_O_DO> = 0.05*C2>"));
+    assert!(text.contains("`A_DO_A> = 0>` contradicts the acceleration of DO in A"), "{text}");
+}
+
+#[test]
+fn vector_of_measure_numbers_in_a_frame() {
+    let src = "NEWTONIAN N\nFRAMES A\nVARIABLES Q'\nSIMPROT(N, A, 3, Q)\nX> = VECTOR(A, 1, 2, 3)\n";
+    let (mut m, _) = checks(src);
+    let v = measures(&mut m, "X>", "A", &[("Q", 0.4)]);
+    assert!(close(v, [1.0, 2.0, 3.0]), "{v:?}");
+}
+
+#[test]
+fn exit_ends_the_file() {
+    let (m, _) = checks("CONSTANTS A\nX = 2*A\nEXIT\nX = UNDEFINED_NAME\n");
+    assert_eq!(number(&m, "X", &[("A", 1.5)]), 3.0);
+}
+
+#[test]
+fn units_with_dotted_products_and_lists() {
+    let (m, _) = checks("CONSTANTS I, A, B\nUNITS I = KG.M^2, [A, B] = M\n");
+    assert_eq!(m.units.get("I").map(String::as_str), Some("KG*M^2"));
+    assert_eq!(m.units.get("A").map(String::as_str), Some("M"));
+    assert_eq!(m.units.get("B").map(String::as_str), Some("M"));
+}
+
+#[test]
+fn a_matrix_may_be_named_like_a_frame() {
+    let (m, _) = checks("NEWTONIAN N\nFRAMES A, B\nA = [1, 2; 3, 4]\nX = A[2, 1]\n");
+    assert_eq!(number(&m, "X", &[]), 3.0);
+}
+
+#[test]
+fn orientations_may_be_written_from_the_leaves() {
+    let src = "NEWTONIAN N\nFRAMES C, F\nVARIABLES Q1', Q2'\nSIMPROT(N, F, 1, Q1)\nSIMPROT(C, F, 2, Q2)\n\
+               X = DOT(C3>, N3>)\n";
+    let (m, _) = checks(src);
+    // c3 = f-frame rotation back by Q2 about F2, then by Q1 about N1: c3 . n3 = cos Q1 cos Q2.
+    let x = number(&m, "X", &[("Q1", 0.3), ("Q2", 0.5)]);
+    assert!((x - 0.3f64.cos() * 0.5f64.cos()).abs() < 1e-12, "{x}");
+}
+
+#[test]
+fn a_later_simprot_replaces_the_earlier() {
+    let src = "NEWTONIAN N\nFRAMES A\nVARIABLES Q'\nSIMPROT(N, A, 1, Q)\nSIMPROT(N, A, 3, Q)\n\
+               X = DOT(A1>, N2>)\n";
+    let (m, _) = checks(src);
+    assert!((number(&m, "X", &[("Q", 0.4)]) - 0.4f64.sin()).abs() < 1e-12);
+}
+
+#[test]
+fn rodrigues_parameters_orient_a_frame() {
+    let src = "NEWTONIAN N\nFRAMES A\nVARIABLES G1, G2, G3\nDIRCOS(N, A, RODRIGUES, G1, G2, G3)\n\
+               X = DOT(A1>, N2>)\nY = DOT(A1>, N1>)\n";
+    let (m, _) = checks(src);
+    // About N3 by 0.6 rad: g3 = tan(0.3).
+    let g = [("G3", 0.3f64.tan())];
+    assert!((number(&m, "X", &g) - 0.6f64.sin()).abs() < 1e-12);
+    assert!((number(&m, "Y", &g) - 0.6f64.cos()).abs() < 1e-12);
+}
+
+#[test]
+fn a_specifieds_derivative_and_an_aliases_derivative_may_be_assigned() {
+    let src = "NEWTONIAN N\nBODIES B\nSPECIFIED DA''\nVARIABLES Q4', U4'\nSIMPROT(N, B, 3, Q4)\n\
+               V_BO_N> = 0>\nMASS B = 1\nINERTIA B, 1, 1, 1\nDA' = T^3\nQ4' = U4\nLH = Q4\nLH' = U4\n\
+               X = DT(DA)\nY = DT(DT(DA))\nZ = DT(LH)\nZERO = FR() + FRSTAR()\nKANE()\nOUTPUT X, Y, Z\n";
+    let (m, _) = checks(src);
+    let spec = m.into_spec("idiom").unwrap();
+    let out = |name: &str, values: &[(&str, f64)]| {
+        let o = spec.outputs.iter().find(|o| o.name == name).unwrap();
+        let by_name = |s| {
+            let n = &spec.model.ar.symbol_info(s).name;
+            Some(values.iter().find(|(k, _)| k.eq_ignore_ascii_case(n)).map_or(0.0, |(_, v)| *v))
+        };
+        spec.model.ar.eval(&o.components, by_name).unwrap()[0]
+    };
+    assert!((out("X", &[("T", 2.0)]) - 8.0).abs() < 1e-12);
+    assert!((out("Y", &[("T", 2.0)]) - 12.0).abs() < 1e-12, "{}", out("Y", &[("T", 2.0)]));
+    assert!((out("Z", &[("U4", 0.7)]) - 0.7).abs() < 1e-12);
+}
+
+#[test]
+fn a_partial_derivative_by_a_specified_given_earlier() {
+    let src = "SPECIFIED S\nVARIABLES Q'\nS = Q^2\nX = D(S*Q, S)\n";
+    let (m, _) = checks(src);
+    assert!((number(&m, "X", &[("Q", 0.5)]) - 0.5).abs() < 1e-12);
+}
+
+#[test]
+fn solve_of_a_literal_list_for_coordinate_rates() {
+    let src = "VARIABLES X', Y', Q', U'\nCONSTANTS R\nQ' = U\n\
+               SOLVE([X' - R*U*COS(Q), Y' - R*U*SIN(Q)], [X', Y'])\nV = X'\n";
+    let (m, _) = checks(src);
+    let x = number(&m, "V", &[("R", 2.0), ("U", 0.5), ("Q", 0.0)]);
+    assert!((x - 1.0).abs() < 1e-12, "{x}");
+}
+
+#[test]
+fn the_rates_solve_gives_are_kinematic_equations_not_speeds() {
+    let src = format!("{}VARIABLES X'\nSOLVE([X' - Q1'], [X'])\n", ROLLING_DISC.replace("KANE()\n", ""))
+        + "KANE()\n";
+    let (m, _) = checks(&src);
+    let e = m.equations.unwrap();
+    assert_eq!(e.speeds.len(), 2, "U1 and U2 only");
+}
+
+#[test]
+fn names_used_only_in_mass_and_inertia_are_declared_by_use() {
+    let src = "NEWTONIAN N\nBODIES B\nVARIABLES Q', U'\nSIMPROT(N, B, 3, Q)\nQ' = U\nW_B_N> = U*N3>\nV_BO_N> = 0>\n\
+               MASS B = MB\nINERTIA B, I1, I2, I3\nZERO = FR() + FRSTAR()\nKANE()\n";
+    let (m, warnings) = checks(src);
+    assert!(warnings.contains("MB"), "{warnings}");
+    assert!(warnings.contains("I3"), "{warnings}");
+    assert!(m.equations.is_some());
+}
+
+#[test]
+fn zee_leaves_values_unchanged() {
+    let (m, _) = checks("CONSTANTS A\nX = ZEE(A^2 + 1)\n");
+    assert_eq!(number(&m, "X", &[("A", 2.0)]), 5.0);
+}
+
+#[test]
+fn evaluate_with_a_rate_set_to_zero() {
+    let (m, _) = checks("VARIABLES Q1'\nX = Q1' + Q1\nY = EVALUATE(X, Q1'=0)\n");
+    assert_eq!(number(&m, "Y", &[("Q1", 0.25), ("Q1'", 3.0)]), 0.25);
+}
+
+#[test]
+fn animate_is_accepted() {
+    let src = "NEWTONIAN N\nBODIES B\nPOINTS O\nVARIABLES Q'\nSIMPROT(N, B, 3, Q)\nANIMATE(N, O, B)\n";
+    checks(src);
+}
+
+#[test]
+fn angular_velocity_in_coordinate_rates_without_speeds() {
+    let src = "NEWTONIAN N\nFRAMES A\nVARIABLES Q'\nSIMPROT(N, A, 3, Q)\nX = DOT(W_A_N>, A3>)\n";
+    let (m, _) = checks(src);
+    assert_eq!(number(&m, "X", &[("Q'", 1.25)]), 1.25);
+}
+
+#[test]
+fn kindiffs_after_an_angle_is_fixed() {
+    let src = "NEWTONIAN N\nBODIES B\nVARIABLES Q{4}', U{3}'\nDIRCOS(N, B, BODY123, Q1, Q2, Q3)\n\
+               W_B_N> = U1*B1> + U2*B2> + U3*B3>\nQ4 = 0\nKINDIFFS(N, B, BODY123, Q1, Q2, Q3)\n\
+               X = Q3'\n";
+    let (m, _) = checks(src);
+    // About B3 only with Q1 = Q2 = 0: Q3' = U3.
+    assert!((number(&m, "X", &[("U3", 0.8)]) - 0.8).abs() < 1e-12);
+}
+
+#[test]
+fn partial_derivatives_of_a_matrix_by_a_named_list() {
+    let src = "VARIABLES Q{2}\nQ = [Q1; Q2]\nF = [Q1^2; Q1*Q2]\nJ = D(F, Q)\nX = J[2, 1]\n";
+    let (m, _) = checks(src);
+    assert_eq!(number(&m, "X", &[("Q1", 3.0), ("Q2", 5.0)]), 5.0);
+}
+
+#[test]
+fn coef_of_a_vector() {
+    let src = "NEWTONIAN N\nVARIABLES U1, U2\nV> = (U1 + 3*U2)*N1> + 2*U2*N2>\nC> = COEF(V>, U2)\n";
+    let (mut m, _) = checks(src);
+    assert!(close(measures(&mut m, "C>", "N", &[]), [3.0, 2.0, 0.0]));
+}
+
+#[test]
+fn exclude_and_include_terms() {
+    let (m, _) = checks("VARIABLES U1, U2\nCONSTANTS G\nZ = 2*U1 + 3*U2 + G\nX = EXCLUDE(Z, [U1, U2])\n");
+    assert_eq!(number(&m, "X", &[("G", 7.0), ("U1", 1.0), ("U2", 1.0)]), 7.0);
+    let (m, _) = checks("VARIABLES U1, U2\nCONSTANTS G\nZ = 2*U1 + 3*U2 + G\nX = INCLUDE(Z, U1)\n");
+    assert_eq!(number(&m, "X", &[("G", 7.0), ("U1", 1.0), ("U2", 1.0)]), 2.0);
+}
+
+#[test]
+fn complex_roots_and_factorial_of_a_symbol_are_shown() {
+    let (m, _) = checks("CONSTANTS A\nR = ROOTS([1, 0, 1])\nF = FACTORIAL(A)\n");
+    assert!(matches!(m.value("R"), Some(Value::Shown(_))), "{:?}", m.value("R"));
+    assert!(matches!(m.value("F"), Some(Value::Shown(_))), "{:?}", m.value("F"));
+}
+
+#[test]
+fn a_specifieds_formula_may_come_after_kane() {
+    let src = "NEWTONIAN N\nBODIES B\nVARIABLES Q', U'\nSPECIFIED TQ\nSIMPROT(N, B, 3, Q)\nQ' = U\n\
+               W_B_N> = U*N3>\nV_BO_N> = 0>\nMASS B = 1\nINERTIA B, 1, 1, 2\nTORQUE(B, TQ*N3>)\n\
+               ZERO = FR() + FRSTAR()\nKANE()\nTQ = 4\n";
+    let (m, _) = checks(src);
+    let spec = m.into_spec("idiom").unwrap();
+    assert!(spec.inputs.is_empty(), "TQ has a formula");
+}
+
+#[test]
+fn an_open_specified_is_an_input_of_the_spec() {
+    let src = "NEWTONIAN N\nBODIES B\nVARIABLES Q', U'\nSPECIFIED TQ\nSIMPROT(N, B, 3, Q)\nQ' = U\n\
+               W_B_N> = U*N3>\nV_BO_N> = 0>\nMASS B = 1\nINERTIA B, 1, 1, 2\nTORQUE(B, TQ*N3>)\n\
+               ZERO = FR() + FRSTAR()\nKANE()\n";
+    let (m, _) = checks(src);
+    let spec = m.into_spec("idiom").unwrap();
+    let names: Vec<&str> = spec.inputs.iter().map(|s| spec.symbol_name(*s)).collect();
+    assert_eq!(names, ["TQ"]);
+}
+
+#[test]
+fn code_dynamics_forms_kanes_equations_from_zero() {
+    let src = "NEWTONIAN N\nBODIES B\nVARIABLES Q', U'\nSIMPROT(N, B, 3, Q)\nQ' = U\nW_B_N> = U*N3>\nV_BO_N> = 0>\n\
+               MASS B = 1\nINERTIA B, 1, 1, 2\nZERO = FR() + FRSTAR()\nCODE DYNAMICS() idiom.c\n";
+    let (m, _) = checks(src);
+    assert!(m.equations.is_some() || m.into_spec("idiom").is_ok());
+}
+
+#[test]
+fn a_file_without_dynamics_computes_its_encoded_quantities_from_inputs() {
+    let src = "NEWTONIAN N\nFRAMES A\nVARIABLES Q'\nCONSTANTS L\nSIMPROT(N, A, 3, Q)\n\
+               P_NO_P> = L*A1>\nX = [DOT(P_NO_P>, N1>); DOT(P_NO_P>, N2>)]\nXD = DT(X)\n\
+               ENCODE X, XD\nCODE ALGEBRAIC() fk.c\n";
+    let (m, _) = checks(src);
+    let spec = m.into_spec("fk").unwrap();
+    assert!(spec.states().is_empty());
+    let mut inputs: Vec<&str> = spec.inputs.iter().map(|s| spec.symbol_name(*s)).collect();
+    inputs.sort();
+    assert_eq!(inputs, ["Q", "Q'"]);
+    let names: Vec<&str> = spec.outputs.iter().map(|o| o.name.as_str()).collect();
+    assert!(names.contains(&"X_1") && names.contains(&"XD_2"), "{names:?}");
+}
+
+#[test]
+fn every_independent_problem_is_reported_in_one_run() {
+    let src = "CONSTANTS A\nX = UNKNOWN1 + A\nY = 2*A\nZ = UNKNOWN2\n";
+    let text = fails(src);
+    assert!(text.contains("UNKNOWN1") && text.contains("UNKNOWN2"), "{text}");
+    let Err(r) = lang::check("idiom.al", src) else { unreachable!() };
+    assert_eq!(r.diagnostics.iter().filter(|d| d.severity == Severity::Error).count(), 2, "{text}");
+}
+
+#[test]
+fn messages_suggest_nothing_unrelated() {
+    let text = fails("X = VECTOR(1, 2)\n");
+    assert!(!text.contains("EIG"), "{text}");
+    let text = fails("X = ZEEE(2)\n");
+    assert!(!text.contains("BEEP"), "{text}");
+}
