@@ -387,3 +387,83 @@ fn messages_suggest_nothing_unrelated() {
     let text = fails("X = ZEEE(2)\n");
     assert!(!text.contains("BEEP"), "{text}");
 }
+
+/// The kinematic equations KINDIFFS gives for `orient`ation statements of C in N.
+fn kindiffs(orient: &str) -> Vec<f64> {
+    let src = format!(
+        "NEWTONIAN N\nFRAMES A, B, C\nVARIABLES Q{{3}}', U{{3}}'\n{orient}\
+         W_C_N> = U1*C1> + U2*C2> + U3*C3>\nKINDIFFS(N, C, BODY312, Q1, Q2, Q3)\n"
+    );
+    let (m, _) = checks(&src);
+    let values = [("Q1", 0.3), ("Q2", -0.4), ("Q3", 0.7), ("U1", 0.2), ("U2", -1.1), ("U3", 0.5)];
+    ["Q1", "Q2", "Q3"]
+        .iter()
+        .map(|q| {
+            let s = m.model.ar.lookup(q).unwrap();
+            let rhs = m.model.kinematics(s).unwrap();
+            m.model.ar.eval(&[rhs], at(&m, &values)).unwrap()[0]
+        })
+        .collect()
+}
+
+#[test]
+fn kindiffs_reads_the_sequence_it_names_through_a_chain_of_simprots() {
+    let chain = kindiffs("SIMPROT(N, A, 3, Q1)\nSIMPROT(A, B, 1, Q2)\nSIMPROT(B, C, 2, Q3)\n");
+    let direct = kindiffs("DIRCOS(N, C, BODY312, Q1, Q2, Q3)\n");
+    assert!(chain.iter().zip(&direct).all(|(a, b)| (a - b).abs() < 1e-12), "{chain:?} {direct:?}");
+    // Q2' = cos(Q3) U1 + sin(Q3) U3 for a 3-1-2 sequence.
+    assert!((chain[1] - (0.7f64.cos() * 0.2 + 0.7f64.sin() * 0.5)).abs() < 1e-12, "{chain:?}");
+}
+
+#[test]
+fn a_claim_is_checked_against_the_angular_velocities_of_its_time() {
+    // Line 12 restates W_B_N> (a slip for W_C_N>): an error there, and not at the V2PTS before.
+    let src = "NEWTONIAN N\nBODIES B, C\nPOINT O\nMOTIONVARIABLES' Q{2}''\nCONSTANTS L\n\
+               SIMPROT(N, B, 3, Q1)\nW_B_N> = Q1'*N3>\nP_O_BO> = L*B1>\nV_O_N> = 0>\nV2PTS(N, B, O, BO)\n\
+               SIMPROT(B, C, 3, Q2)\nW_B_N> = (Q1' + Q2')*N3>\n";
+    let Err(r) = lang::check("idiom.al", src) else { panic!("checked") };
+    let errors: Vec<String> =
+        r.diagnostics.iter().filter(|d| d.severity == Severity::Error).map(|d| d.message.clone()).collect();
+    assert_eq!(errors.len(), 1, "{r}");
+    assert!(errors[0].contains("W_B_N> = (Q1' + Q2')*N3>"), "{r}");
+}
+
+/// A fresh folder for one test.
+fn folder(name: &str) -> std::path::PathBuf {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("autolev_idioms").join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn a_run_files_statements_come_where_the_run_is() {
+    // The wheel and its angular velocity come from the file RUN reads; the contact follows.
+    let dir = folder("run_order");
+    let body = "NEWTONIAN N\nBODIES D\nCONSTANTS R\nVARIABLES Q1', Q2', U1', U2'\nSIMPROT(N, D, 3, Q2)\n\
+                Q1' = U1\nQ2' = U2\nW_D_N> = U2*N3>\nP_NO_DO> = Q1*N1> + R*N2>\nV_DO_N> = U1*N1>\n";
+    std::fs::write(dir.join("wheel.al"), body).unwrap();
+    let main = dir.join("main.al");
+    let src = "RUN wheel.al\nPOINTS DN\nP_DO_DN> = -R*N2>\nV2PTS(N, D, DO, DN)\n";
+    std::fs::write(&main, src).unwrap();
+    if let Err(r) = lang::check(main.to_str().unwrap(), src) {
+        panic!("{r}");
+    }
+}
+
+#[test]
+fn code_dynamics_of_a_file_that_assigns_every_rate_integrates_them() {
+    // A pendulum's equation written by hand: no speeds, no KANE(); Q and W are the states.
+    let src =
+        "CONSTANTS G\nVARIABLES Q', W'\nQ' = W\nSOLVE(W' + G*SIN(Q), W')\nINPUT G = 9.8, Q = 0.1, W = 0\n\
+               OUTPUT Q, W, Q'\nCODE DYNAMICS() pendulum.c\n";
+    let (m, _) = checks(src);
+    let mut spec = m.into_spec("pendulum").unwrap();
+    let states: Vec<String> = spec.states().iter().map(|s| spec.symbol_name(*s).to_string()).collect();
+    assert_eq!(states.len(), 2, "{states:?}");
+    assert!(states.iter().any(|s| s == "Q") && states.iter().any(|s| s == "W"), "{states:?}");
+    let w = spec.model.ar.lookup("W").unwrap();
+    let w = spec.model.ar.symbol_expr(w);
+    let rate = spec.outputs.iter().find(|o| o.name == "Q'").expect("Q' is an output");
+    assert_eq!(rate.components, [w]);
+}

@@ -40,7 +40,11 @@ impl LoadedModel {
         let mut formulas = super::interp::specified_formulas(&mut self.model, &self.formulas)?;
         // A file without dynamics: its code computes OUTPUT and ENCODE quantities from inputs
         // (coordinates, speeds and their rates among them), as Autolev's CODE ALGEBRAIC() does.
-        let algebraic = self.equations.is_none() && !self.forces_formed;
+        // One whose CODE DYNAMICS() integrates the variables whose rates it assigns has those
+        // rates as its equations.
+        let integrates = self.code.iter().any(|c| matches!(c.kind.as_str(), "DYNAMICS" | "ODE"));
+        let algebraic = self.equations.is_none() && !self.forces_formed && !integrates;
+        let formed = self.equations.is_some() || self.forces_formed;
         let mut eqs = match self.equations.clone() {
             Some(eqs) => eqs,
             // FR() + FRSTAR() formed without KANE() or SOLVE (a file that writes its residuals
@@ -50,6 +54,7 @@ impl LoadedModel {
                 eqs.substitute(&mut self.model.ar, &formulas)?;
                 eqs
             }
+            None if !algebraic => KaneEquations::none(),
             None => {
                 for name in std::mem::take(&mut self.encoded) {
                     if !self.outputs.iter().any(|(o, _)| o.eq_ignore_ascii_case(&name)) {
@@ -101,7 +106,7 @@ impl LoadedModel {
         spec.add_configuration_residuals("CONFIG", "")?;
         spec.add_motion_residuals("CONSTRAINT", "");
         spec.add_constraint_matrix("CONSTRAINT_MATRIX");
-        if !algebraic && !spec.outputs.iter().any(|o| o.name.eq_ignore_ascii_case("KE")) {
+        if formed && !spec.outputs.iter().any(|o| o.name.eq_ignore_ascii_case("KE")) {
             let unit = spec.unit("KE").to_string();
             spec.add_kinetic_energy("KE", &unit)?;
         }
@@ -196,6 +201,17 @@ impl LoadedModel {
             {
                 let e = self.model.ar.symbol_expr(r);
                 out.push((bare.to_string(), Output::Value(Value::Scalar(e))));
+                continue;
+            }
+            // A coordinate's rate: its kinematic equation.
+            let rate_of = |q: &crate::expr::SymbolId| {
+                let name = &self.model.ar.symbol_info(*q).name;
+                oname.len() == name.len() + 1
+                    && oname.ends_with('\'')
+                    && oname[..name.len()].eq_ignore_ascii_case(name)
+            };
+            if let Some(k) = eqs.coordinates.iter().position(rate_of) {
+                out.push((bare.to_string(), Output::Value(Value::Scalar(eqs.kinematics[k]))));
                 continue;
             }
             let dependent = eqs.constraints.iter().flat_map(|c| &c.dependent);

@@ -122,7 +122,7 @@ pub(super) fn acceleration_contradictions(m: &mut LoadedModel, motions: &Motions
         let Ok(v) = model.velocity(point, frame) else { continue };
         // The rate is taken with the frames' motions as they stand at the end.
         let frames: Vec<FrameId> = v.terms().iter().map(|(f, _)| *f).collect();
-        if frames_restated_after(model, &m.sources, &frames, source.span.start) {
+        if frames_restated_after(model, &m.sources, &frames, m.sources.rank(source.span.start)) {
             continue;
         }
         let Ok(implied) = model.dt_in(&v, frame) else { continue };
@@ -193,7 +193,7 @@ fn rigid_frames(model: &Model, carrier: Carrier, frame: FrameId) -> Vec<FrameId>
 /// origin, at rest) that does not itself follow from `p`'s, reached by positions not restated
 /// since.
 fn bases(model: &Model, sources: &Sources, p: PointId, frame: FrameId) -> Vec<PointId> {
-    let at = sources.velocities.get(&(p, frame)).map_or(usize::MAX, |s| s.span.start);
+    let at = sources.velocities.get(&(p, frame)).map_or(usize::MAX, |s| sources.rank(s.span.start));
     let mut candidates: Vec<PointId> =
         sources.velocities.get(&(p, frame)).map(|s| s.bases().collect()).unwrap_or_default();
     if let Some((parent, _)) = &model.points[p.index()].position {
@@ -214,13 +214,13 @@ fn bases(model: &Model, sources: &Sources, p: PointId, frame: FrameId) -> Vec<Po
         .filter(|y| *y != p && seen.insert(*y))
         .filter(|y| model.points[y.index()].velocity.contains_key(&frame) && component.contains(y))
         // What a statement says is checked against what came before it.
-        .filter(|y| sources.velocities.get(&(*y, frame)).is_none_or(|s| s.span.start <= at))
+        .filter(|y| sources.velocities.get(&(*y, frame)).is_none_or(|s| sources.rank(s.span.start) <= at))
         // A position restated after the claim is not the geometry the claim was made in.
         .filter(|y| {
             model
                 .position_path(p, *y)
                 .iter()
-                .all(|(a, b)| sources.position_of(*a, *b).is_none_or(|s| s.start <= at))
+                .all(|(a, b)| sources.position_of(*a, *b).is_none_or(|s| sources.rank(s.start) <= at))
         })
         // So is a frame of those positions turned or oriented anew after it.
         .filter(|y| !frames_restated_after(model, sources, &model.position_path_frames(p, *y), at))
@@ -239,7 +239,7 @@ fn frames_restated_after(model: &Model, sources: &Sources, frames: &[FrameId], a
             if !seen.insert(g) {
                 break;
             }
-            let later = |s: Option<&Span>| s.is_some_and(|s| s.start > at);
+            let later = |s: Option<&Span>| s.is_some_and(|s| sources.rank(s.start) > at);
             if later(sources.angular_velocities.get(&g)) || later(sources.orientation_of(model, g)) {
                 return true;
             }

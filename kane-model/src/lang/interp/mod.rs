@@ -344,6 +344,7 @@ impl Interpreter {
                 tainted.add_line_of(source, at);
             }
             self.settle_before(s);
+            self.sources.executed.push(s.span.clone());
             self.kinematic_reads.clear();
             let done = match self.defers(s) {
                 Ok(true) => Ok(()),

@@ -113,11 +113,12 @@ impl Interpreter {
     fn sequence_kinematics(
         &mut self,
         b: FrameId,
+        kind: &Kind,
         w: &[ExprId; 3],
         angles: &[ExprId],
         span: &Span,
     ) -> IResult<()> {
-        let implied = self.model.orientation_angular_velocity(b).at(span)?;
+        let implied = self.model.orientation_rates(&kind.orientation(angles), b).at(span)?;
         let implied = self.model.express(&implied, b).at(span)?;
         let ar = &mut self.model.ar;
         let moving: Vec<(ExprId, SymbolId)> = angles
@@ -202,7 +203,7 @@ impl Interpreter {
                 out.push(ar.mul(&[mh, dot]).at(span)?);
                 out
             }
-            _ => return self.sequence_kinematics(b, &w, &syms, span),
+            _ => return self.sequence_kinematics(b, &k, &w, &syms, span),
         };
         for (q, r) in syms.iter().zip(rhs) {
             let s = self.model.ar.as_symbol(*q).ok_or_else(|| {

@@ -30,6 +30,8 @@ pub(crate) struct Sources {
     pub(crate) loads: Vec<LoadSource>,
     /// Constants MASS and INERTIA declared by using them (`MASS A = MA`), with where.
     pub(crate) implicit_constants: Vec<(String, Span)>,
+    /// Every statement run, in the order run.
+    pub(crate) executed: Vec<Span>,
 }
 
 /// The statement that set a point's velocity or acceleration in a frame, and what it took.
@@ -71,6 +73,15 @@ pub(crate) struct LoadSource {
 }
 
 impl Sources {
+    /// The place in the run of the statement at byte `offset`: a file's RUN statement runs the
+    /// other file's statements there, although their text follows the file's.
+    pub(crate) fn rank(&self, offset: usize) -> usize {
+        self.executed
+            .iter()
+            .position(|s| s.start <= offset && offset < s.end.max(s.start + 1))
+            .unwrap_or(usize::MAX)
+    }
+
     /// Records the statement relating points `a` and `b`.
     pub(crate) fn position(&mut self, a: PointId, b: PointId, span: &Span) {
         self.positions.insert(pair(a, b), span.clone());

@@ -102,8 +102,12 @@ impl Interpreter {
 
     /// Kane's equations for CODE DYNAMICS() in a file that formed `ZERO = FR() + FRSTAR()`
     /// without KANE() or SOLVE: Autolev's code solves them for the speeds' rates at each step,
-    /// as KANE() does.
+    /// as KANE() does. A file that gives every rate itself (`Q' = W`, `SOLVE(EQ, W')`) needs
+    /// none: its code integrates the variables whose rates it assigned.
     fn equations_for_code(&mut self, span: &Span) -> IResult<()> {
+        if self.kane_sums.is_empty() && !self.model.coordinates_with_kinematics().is_empty() {
+            return Ok(());
+        }
         if self.kane_sums.is_empty() {
             return Err(Diagnostic::error(span.clone(), "CODE DYNAMICS() needs equations of motion")
                 .with_help("form them first: ZERO = FR() + FRSTAR(), then KANE() or SOLVE(ZERO, U1', ...)"));
