@@ -467,3 +467,55 @@ fn code_dynamics_of_a_file_that_assigns_every_rate_integrates_them() {
     let rate = spec.outputs.iter().find(|o| o.name == "Q'").expect("Q' is an output");
     assert_eq!(rate.components, [w]);
 }
+
+#[test]
+fn solve_of_zero_after_kane_with_loads_assigns_kanes_rates() {
+    // A particle sliding on a table, its normal force brought into evidence by an auxiliary
+    // speed: KANE(FN) solves FN; SOLVE(ZERO, U') then assigns U' (ZERO's auxiliary row dropped).
+    let src = "NEWTONIAN N\nPARTICLES P\nVARIABLES Q', U', UA'\nCONSTANTS M, G, K\nSPECIFIED FN\nQ' = U\n\
+               P_NO_P> = Q*N1>\nV_P_N> = U*N1> + UA*N2>\nA_P_N> = U'*N1> + UA'*N2>\nCONSTRAIN(AUXILIARY[UA])\n\
+               MASS P = M\nFORCE_P> = -K*Q*N1> - M*G*N2> + FN*N2>\nZERO = FR() + FRSTAR()\nKANE(FN)\n\
+               SOLVE(ZERO, U')\n";
+    let (m, _) = checks(src);
+    assert!(m.equations.as_ref().is_some_and(|e| e.loads.is_some()));
+}
+
+#[test]
+fn coef_by_a_rate_solve_gave_takes_the_rate_itself() {
+    let src =
+        "VARIABLES W'\nCONSTANTS A, B\nZ = A*W' + B\nSOLVE(Z, W')\nC = COEF(Z, W')\nE = EXCLUDE(Z, [W'])\n";
+    let (m, _) = checks(src);
+    assert_eq!(number(&m, "C", &[("A", 3.0), ("B", 2.0)]), 3.0);
+    assert_eq!(number(&m, "E", &[("A", 3.0), ("B", 2.0)]), 2.0);
+}
+
+#[test]
+fn exclude_of_an_expression_too_large_to_expand_that_is_polynomial_in_the_names() {
+    // (A1 + ... + A10) ... (F1 + ... + F10) expands into a million terms.
+    let mut src = String::from("VARIABLES W'\nCONSTANTS G\n");
+    let mut factors = Vec::new();
+    for c in ['A', 'B', 'C', 'D', 'E', 'F'] {
+        src.push_str(&format!("CONSTANTS {c}{{10}}\n"));
+        factors.push(format!("({})", (1..=10).map(|i| format!("{c}{i}")).collect::<Vec<_>>().join(" + ")));
+    }
+    src.push_str(&format!(
+        "Z = {}*W' + G*W'^2 + 7\nX = EXCLUDE(Z, [W', G])\nY = INCLUDE(Z, G)\n",
+        factors.join("*")
+    ));
+    let (m, _) = checks(&src);
+    assert_eq!(number(&m, "X", &[("W'", 2.0), ("G", 3.0)]), 7.0);
+    assert_eq!(number(&m, "Y", &[("W'", 2.0), ("G", 3.0)]), 12.0);
+    // Not polynomial in W' (inside a sine): too large to select from, said so.
+    let text = fails(&src.replace("G*W'^2", "G*SIN(W')"));
+    assert!(text.contains("expanding this expression would give"), "{text}");
+}
+
+#[test]
+fn a_matrix_of_vectors_dots_into_a_matrix() {
+    let src = "NEWTONIAN N\nVARIABLES U1, U2\nCONSTANTS F1, F2\nV> = U1*N1> + 2*U2*N2>\n\
+               P = [COEF(V>, U1), COEF(V>, U2)]\nF> = F1*N1> + F2*N2>\nX = DOT(P, F>)\n";
+    let (m, _) = checks(src);
+    let Some(Value::Matrix { rows: 1, cols: 2, data }) = m.value("X") else { panic!("{:?}", m.value("X")) };
+    let v = m.model.ar.eval(&data, at(&m, &[("F1", 3.0), ("F2", 5.0)])).unwrap();
+    assert_eq!(v, [3.0, 10.0]);
+}

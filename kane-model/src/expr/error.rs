@@ -33,10 +33,17 @@ pub enum ExprError {
         /// The symbol it is not linear in.
         symbol: String,
     },
-    /// A linear system has no unique solution (a zero pivot, or unknowns and equations differ in
-    /// number).
+    /// A linear system has no unique solution (a zero pivot).
     #[error("the linear system has no unique solution (singular coefficient matrix)")]
     SingularSystem,
+    /// A linear system with more or fewer equations than unknowns.
+    #[error("{equations} equations for {unknowns} unknowns: a linear system needs one equation per unknown")]
+    NotSquare {
+        /// The number of equations.
+        equations: usize,
+        /// The number of unknowns.
+        unknowns: usize,
+    },
     /// An expansion would produce too many terms.
     #[error("expanding this expression would give {0} terms or more; expand a smaller expression")]
     TooLarge(usize),

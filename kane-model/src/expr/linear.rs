@@ -47,7 +47,7 @@ impl Arena {
     ) -> Result<Vec<ExprId>, ExprError> {
         let m = unknowns.len();
         if equations.len() != m {
-            return Err(ExprError::SingularSystem);
+            return Err(ExprError::NotSquare { equations: equations.len(), unknowns: m });
         }
         let mut rows: Vec<(Vec<ExprId>, ExprId)> = Vec::with_capacity(m);
         for &g in equations {

@@ -74,6 +74,30 @@ impl Arena {
         syms
     }
 
+    /// True when `e` is a polynomial in `syms`: they appear only in sums, products and powers
+    /// with positive integer exponents (so the terms of `e` expanded that hold none of them are
+    /// `e` with them zero).
+    pub fn is_polynomial_in(&self, e: ExprId, syms: &[SymbolId]) -> bool {
+        // Per node: (holds one of syms, is a polynomial in them), children first.
+        let mut seen: FxHashMap<ExprId, (bool, bool)> = FxHashMap::default();
+        for id in self.bottom_up(&[e], |_| false) {
+            let node = self.node(id);
+            let kids: Vec<(bool, bool)> = node.children().iter().map(|c| seen[c]).collect();
+            let holds = matches!(node, Node::Symbol(s) if syms.contains(s)) || kids.iter().any(|k| k.0);
+            let poly = kids.iter().all(|k| k.1)
+                && match node {
+                    Node::Pow([_, x]) => match self.node(*x) {
+                        Node::Rational(r) => !kids[0].0 || (r.is_integer() && r.numer() > 0),
+                        _ => !holds,
+                    },
+                    Node::Func(..) | Node::Atan2(_) => !holds,
+                    _ => true,
+                };
+            seen.insert(id, (holds, poly));
+        }
+        seen[&e].1
+    }
+
     /// Number of distinct nodes in the expression graph of `e`.
     pub fn graph_size(&self, e: ExprId) -> usize {
         self.bottom_up(&[e], |_| false).len()

@@ -59,6 +59,16 @@ fn value_text(m: &mut Model, p: &Presenter, v: &Value, frame: Option<FrameId>) -
             vector_text(m, p, &v).map_err(err)
         }
         Value::Dyadic(d) => dyadic_text(m, p, d).map_err(err),
+        Value::Vectors { rows, cols, data } => {
+            let mut out = Vec::with_capacity(*rows);
+            for r in 0..*rows {
+                let row = (0..*cols)
+                    .map(|c| value_text(m, p, &Value::Vector(data[r * cols + c].clone()), frame))
+                    .collect::<Result<Vec<_>, _>>()?;
+                out.push(row.join(", "));
+            }
+            Ok(format!("[{}]", out.join("; ")))
+        }
         Value::Matrix { rows, cols, data } => {
             let mut out = Vec::with_capacity(*rows);
             for r in 0..*rows {

@@ -114,6 +114,18 @@ impl LoadedModel {
         for o in &mut spec.outputs {
             o.components = spec.model.ar.subs_many(&o.components, &formulas)?;
         }
+        if !formed && !algebraic {
+            // Rates the file assigned, read through one another.
+            let mut outputs = std::mem::take(&mut spec.outputs);
+            for o in &mut outputs {
+                for c in &mut o.components {
+                    for _ in 0..2 {
+                        *c = spec.in_states(*c)?;
+                    }
+                }
+            }
+            spec.outputs = outputs;
+        }
         if algebraic {
             let computed: Vec<_> = spec.outputs.iter().flat_map(|o| o.components.iter().copied()).collect();
             for s in spec.model.ar.free_symbols(&computed) {

@@ -337,6 +337,12 @@ impl Interpreter {
         }
         let names: Vec<String> =
             syms.iter().map(|s| self.model.ar.symbol_info(*s).name.to_ascii_uppercase()).collect();
+        if self.equations.is_some() && self.kane_sums.contains(&key) && self.are_speed_rates(&syms) {
+            // KANE() formed the equations (KANE(F1, ...) solved its loads from the auxiliary
+            // rows, which Autolev then drops from ZERO): SOLVE assigns their rates.
+            self.rates_solved = true;
+            return Ok(());
+        }
         if self.equations.is_none() && self.are_speed_rates(&syms) {
             // The equations of motion: formed as KANE() does when they are FR() + FRSTAR(); the
             // rates are then assigned, as Autolev's SOLVE assigns them (read by name later).

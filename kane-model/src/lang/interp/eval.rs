@@ -83,10 +83,37 @@ impl Interpreter {
             .with_help("assign the entry first, e.g. EQN[1] = ..."))
     }
 
+    /// `[v1>, v2>; ...]` of vectors only: a matrix of vectors (rows of one length); `None`
+    /// when the first entry is not a vector.
+    fn vector_matrix(&mut self, rows: &[Vec<Expr>], e: &Expr) -> IResult<Option<Value>> {
+        let Some(first) = rows.first().and_then(|r| r.first()) else { return Ok(None) };
+        let Value::Vector(v) = self.eval(first)? else { return Ok(None) };
+        let cols = rows[0].len();
+        if rows.iter().any(|r| r.len() != cols) {
+            return Err(Diagnostic::error(e.span.clone(), "matrix rows have different lengths"));
+        }
+        let mut data = vec![v];
+        for x in rows.iter().flatten().skip(1) {
+            match self.eval(x)? {
+                Value::Vector(v) => data.push(v),
+                other => {
+                    return Err(Diagnostic::error(
+                        x.span.clone(),
+                        format!("a matrix of vectors holds vectors only, not {}", other.kind()),
+                    ))
+                }
+            }
+        }
+        Ok(Some(Value::Vectors { rows: rows.len(), cols, data }))
+    }
+
     /// `[a, b; c, d]`: a matrix of scalars; an entry may itself be a matrix, joined to its
     /// neighbours in the row (same number of rows) and to the rows above and below (same
     /// number of columns): `[FK; X]` appends X to the column FK.
     fn matrix_literal(&mut self, rows: &[Vec<Expr>], e: &Expr) -> IResult<Value> {
+        if let Some(v) = self.vector_matrix(rows, e)? {
+            return Ok(v);
+        }
         let mut data = Vec::new();
         let (mut height, mut width) = (0, None);
         for r in rows {

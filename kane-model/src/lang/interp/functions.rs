@@ -128,17 +128,30 @@ impl Interpreter {
                 cols: *cols,
                 data: data.iter().map(|x| f(&mut self.model, *x)).collect::<Result<_, _>>().at(fail)?,
             },
-            Value::Vector(vec) => {
-                let mut out = vec.clone();
-                for (_, m) in out.terms.iter_mut() {
-                    for x in m.iter_mut() {
-                        *x = f(&mut self.model, *x).at(fail)?;
-                    }
-                }
-                Value::Vector(out)
-            }
+            Value::Vector(vec) => Value::Vector(self.map_measures(vec, fail, &f)?),
+            Value::Vectors { rows, cols, data } => Value::Vectors {
+                rows: *rows,
+                cols: *cols,
+                data: data.iter().map(|v| self.map_measures(v, fail, &f)).collect::<IResult<_>>()?,
+            },
             Value::Dyadic(d) => Value::Dyadic(d.clone()),
         })
+    }
+
+    /// `v` with `f` applied to each measure number.
+    fn map_measures(
+        &mut self,
+        v: &crate::mechanics::Vector,
+        fail: &Span,
+        f: &impl Fn(&mut Model, ExprId) -> crate::mechanics::Result<ExprId>,
+    ) -> IResult<crate::mechanics::Vector> {
+        let mut out = v.clone();
+        for (_, m) in out.terms.iter_mut() {
+            for x in m.iter_mut() {
+                *x = f(&mut self.model, *x).at(fail)?;
+            }
+        }
+        Ok(out)
     }
 
     /// The frame an argument names (a frame or a body).

@@ -135,7 +135,19 @@ impl Interpreter {
         let keep_with = upper == "INCLUDE";
         self.map_scalars(&v, &e.span, |m, x| {
             if m.ar.expansion_bounds(&[x])[0] > TERMS_TO_SELECT_FROM {
-                return Err(crate::expr::ExprError::TooLarge(TERMS_TO_SELECT_FROM as usize).into());
+                if !m.ar.is_polynomial_in(x, &syms) {
+                    return Err(crate::expr::ExprError::TooLarge(TERMS_TO_SELECT_FROM as usize).into());
+                }
+                // Too large to expand, but polynomial in the quantities: the terms without them
+                // are the expression with them zero.
+                let zero = m.ar.zero();
+                let map = syms.iter().map(|s| (m.ar.symbol_expr(*s), zero)).collect();
+                let without = m.ar.subs(x, &map)?;
+                if !keep_with {
+                    return Ok(without);
+                }
+                let minus = m.ar.neg(without)?;
+                return Ok(m.ar.add(&[x, minus])?);
             }
             let expanded = m.ar.expand(x)?;
             let terms: Vec<ExprId> = match m.ar.node(expanded) {
@@ -171,19 +183,34 @@ impl Interpreter {
         self.scalar(x)
     }
 
+    /// The scalars COEF's second argument evaluates to.
+    fn coefficient_values(&mut self, y: &Expr) -> IResult<Vec<ExprId>> {
+        match self.eval(y)? {
+            Value::Scalar(x) => Ok(vec![x]),
+            Value::Matrix { data, .. } => Ok(data),
+            other => {
+                Err(Diagnostic::error(y.span.clone(), format!("COEF takes symbols, not {}", other.kind())))
+            }
+        }
+    }
+
     /// `COEF(x, y)`: the coefficients of the symbols `y` in the scalars `x` (linear in them).
     fn coefficients(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
         super::arity("COEF", args, 2, &e.span)?;
         let v = self.eval(&args[0])?;
-        let wrt = match self.eval(&args[1])? {
-            Value::Scalar(x) => vec![x],
-            Value::Matrix { data, .. } => data,
-            other => {
-                return Err(Diagnostic::error(
-                    args[1].span.clone(),
-                    format!("COEF takes symbols, not {}", other.kind()),
-                ))
+        // Quantities named (`W'`, `[U7', U8']`) are the symbols, even after SOLVE gave a value.
+        let named = |s: &Self, x: &Expr| match &x.kind {
+            ExprKind::Name { name, .. } => {
+                matches!(s.bindings.get(&name.to_ascii_uppercase()), Some(Binding::Symbol(..)))
             }
+            _ => false,
+        };
+        let wrt = match &args[1].kind {
+            ExprKind::Matrix(rows) if rows.iter().flatten().all(|x| named(self, x)) => {
+                rows.iter().flatten().map(|x| self.substitution_key(x)).collect::<IResult<Vec<_>>>()?
+            }
+            _ if named(self, &args[1]) => vec![self.substitution_key(&args[1])?],
+            _ => self.coefficient_values(&args[1])?,
         };
         let syms = wrt
             .iter()

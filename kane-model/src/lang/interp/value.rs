@@ -18,6 +18,15 @@ pub enum Value {
     /// A value Autolev's session shows but a model cannot use (complex roots and eigenvalues,
     /// FACTORIAL of a symbol), as it prints.
     Shown(String),
+    /// A matrix of vectors, row-major (`[COEF(V>, U1), COEF(V>, U2)]`: partial velocities).
+    Vectors {
+        /// The number of rows.
+        rows: usize,
+        /// The number of columns.
+        cols: usize,
+        /// Entries, row by row.
+        data: Vec<Vector>,
+    },
     /// A matrix of scalars, row-major.
     Matrix {
         /// The number of rows.
@@ -55,6 +64,7 @@ impl Value {
             Value::Vector(_) => "a vector",
             Value::Dyadic(_) => "a dyadic",
             Value::Matrix { .. } => "a matrix",
+            Value::Vectors { .. } => "a matrix of vectors",
             Value::Shown(_) => {
                 "a value only Autolev's session shows (complex numbers, FACTORIAL of a symbol)"
             }
@@ -105,6 +115,11 @@ pub fn add(m: &mut Model, a: &Value, b: &Value, negate: bool) -> Result<Option<V
 pub fn scale(m: &mut Model, v: &Value, k: ExprId) -> Result<Value> {
     Ok(match v {
         Value::Shown(text) => Value::Shown(format!("{}*({text})", m.ar.to_text(k))),
+        Value::Vectors { rows, cols, data } => Value::Vectors {
+            rows: *rows,
+            cols: *cols,
+            data: data.iter().map(|x| m.scale(x, k)).collect::<Result<_>>()?,
+        },
         Value::Scalar(x) => Value::Scalar(m.ar.mul(&[k, *x])?),
         Value::Vector(x) => Value::Vector(m.scale(x, k)?),
         Value::Dyadic(x) => Value::Dyadic(m.scale_dyadic(x, k)?),

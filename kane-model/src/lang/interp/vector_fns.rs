@@ -194,6 +194,13 @@ impl Interpreter {
             return Ok(Value::Matrix { rows: rows.len(), cols, data });
         }
         match (self.eval(a)?, self.eval(b)?) {
+            // A matrix of vectors named (`DOT(VCA, F>)`): the matrix of the dots.
+            (Value::Vectors { rows, cols, data }, other) | (other, Value::Vectors { rows, cols, data }) => {
+                let w = self.vector_of(other, e)?;
+                let data =
+                    data.iter().map(|v| self.model.dot(v, &w)).collect::<Result<Vec<_>, _>>().at(fail)?;
+                Ok(Value::Matrix { rows, cols, data })
+            }
             (Value::Dyadic(d), Value::Vector(v)) => {
                 Ok(Value::Vector(self.model.dyadic_dot(&d, &v).at(fail)?))
             }

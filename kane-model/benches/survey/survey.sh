@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Public research Autolev files, run as written: `kane check`, `kane gen` and a 1 s `gyro-sim run`
+# of each file listed in manifest.tsv (repository, commit, path, blob), with the first error of
+# each that fails. Not part of the build or the tests; needs git and the network to fetch.
+#
+# usage: kane-model/benches/survey/survey.sh [CACHE] [KIND]
+#   CACHE  where repositories are fetched (default: ~/.cache/kane-survey)
+#   KIND   research (default), course, grammar or all
+# Writes CACHE/results.tsv (path, check, gen, run, first error) and prints the counts.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../../.." && pwd)"
+cache="${1:-$HOME/.cache/kane-survey}"
+kind="${2:-research}"
+mkdir -p "$cache/repos" "$cache/out"
+(cd "$root" && cargo build --release -q --bin kane --bin gyro-sim)
+kane="$root/target/release/kane"
+gyro="$root/target/release/gyro-sim"
+
+# A repository at a commit, fetched once.
+checkout() {
+  local repo=$1 commit=$2 dir="$cache/repos/${1//\//+}@${2:0:10}"
+  if [ ! -d "$dir/.git" ]; then
+    git init -q "$dir"
+    git -C "$dir" fetch -q --depth 1 "https://github.com/$repo" "$commit"
+    git -C "$dir" checkout -q FETCH_HEAD
+  fi
+  echo "$dir"
+}
+
+results="$cache/results.tsv"
+printf 'file\tcheck\tgen\trun\terror\n' > "$results"
+tail -n +2 "$here/manifest.tsv" | while IFS=$'\t' read -r repo commit path blob what _models; do
+  [ "$kind" = all ] || [ "$what" = "$kind" ] || continue
+  dir=$(checkout "$repo" "$commit")
+  file="$dir/$path"
+  if [[ "$path" == *'!'* ]]; then
+    # A file inside a committed tar archive: unpacked beside it.
+    archive="$dir/${path%%!*}"; member="${path#*!}"
+    [ -f "$archive.d/$member" ] || { mkdir -p "$archive.d" && tar -xf "$archive" -C "$archive.d" "$member"; }
+    file="$archive.d/$member"
+  fi
+  got=$(git hash-object "$file")
+  [ "$got" = "$blob" ] || { echo "$repo:$path: blob $got, manifest $blob" >&2; exit 1; }
+  key=$(printf '%s' "$repo/$path" | md5sum | cut -c1-10)
+  log="$cache/out/$key"
+  check=0; gen=-; run=-
+  (cd "$(dirname "$file")" && timeout 120 "$kane" check "$file") > "$log.check" 2>&1 || check=$?
+  if [ "$check" = 0 ]; then
+    gen=0; timeout 300 "$kane" gen "$file" > "$log.rs" 2> "$log.gen" || gen=$?
+    if [ "$gen" = 0 ]; then
+      run=0
+      timeout 300 "$gyro" run --model "$file" --t-final 1 --engine instant --no-view --out "$log.run" \
+        > "$log.runlog" 2>&1 || run=$?
+    fi
+  fi
+  error=$(cat "$log.check" "$log.gen" "$log.runlog" 2>/dev/null | grep -m1 -E '×|error' | sed "s|$dir/||" | cut -c1-200 || true)
+  printf '%s:%s\t%s\t%s\t%s\t%s\n' "$repo" "$path" "$check" "$gen" "$run" "$error" >> "$results"
+done
+awk -F'\t' 'NR > 1 {n++; if ($2 == 0) c++; if ($3 == 0) g++; if ($4 == 0) r++}
+  END {printf "%d files: check %d (%.0f %%), gen %d (%.0f %%), 1 s run %d (%.0f %%)\n", n, c, 100*c/n, g, 100*g/n, r, 100*r/n}' "$results"
+echo "results: $results"
