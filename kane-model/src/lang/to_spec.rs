@@ -68,7 +68,10 @@ impl LoadedModel {
             self.extra_coordinates(&mut eqs)?;
         }
         // Auxiliary speeds are zero in every motion the outputs are computed along.
-        formulas.extend(self.model.auxiliary_zero_map()?);
+        let auxiliary = self.model.auxiliary_zero_map()?;
+        // A coordinate whose rate is an auxiliary speed (`Q1' = U1`, AUXILIARY[1] = U1) is still.
+        eqs.kinematics = self.model.ar.subs_many(&eqs.kinematics, &auxiliary)?;
+        formulas.extend(auxiliary);
         let outputs = self.output_values(&eqs)?;
         let inputs = self.open_quantities(&formulas);
         let mut spec = ModelSpec::new(name, self.model, eqs);

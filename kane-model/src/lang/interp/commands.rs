@@ -337,9 +337,14 @@ impl Interpreter {
         }
         let names: Vec<String> =
             syms.iter().map(|s| self.model.ar.symbol_info(*s).name.to_ascii_uppercase()).collect();
-        if self.equations.is_some() && self.kane_sums.contains(&key) && self.are_speed_rates(&syms) {
-            // KANE() formed the equations (KANE(F1, ...) solved its loads from the auxiliary
-            // rows, which Autolev then drops from ZERO): SOLVE assigns their rates.
+        let with_loads = self.equations.as_ref().is_some_and(|q| q.loads.is_some());
+        if with_loads
+            && eqs.len() > syms.len()
+            && self.kane_sums.contains(&key)
+            && self.are_speed_rates(&syms)
+        {
+            // KANE(F1, ...) solved its loads from the auxiliary rows, which Autolev then drops
+            // from ZERO: SOLVE assigns the rates of KANE()'s equations.
             self.rates_solved = true;
             return Ok(());
         }
