@@ -19,12 +19,20 @@ fn generated_gimbal_module_snapshot() {
 }
 
 #[test]
-fn a_model_without_kane_is_refused() {
-    let loaded = kane_model::lang::load("m.al", "NEWTONIAN N\nCONSTANTS A\n").unwrap();
-    let err = loaded.into_spec("m").err().unwrap();
-    assert_eq!(
-        err.to_string(),
-        "the model derives no equations: form them in the model file (ZERO = FR() + FRSTAR(), then KANE())"
+fn a_model_without_dynamics_generates_its_encoded_quantities_from_inputs() {
+    let src = "NEWTONIAN N\nFRAMES A\nVARIABLES Q'\nCONSTANTS L\nSIMPROT(N, A, 3, Q)\n\
+               X = L*COS(Q)\nENCODE X\nCODE ALGEBRAIC() x.c\n";
+    let loaded = kane_model::lang::load("m.al", src).unwrap();
+    let mut spec = loaded.into_spec("m").unwrap();
+    assert!(spec.states().is_empty());
+    let emitted = kane_model::codegen::generate(&mut spec, &Default::default()).unwrap();
+    let text = kane_model::codegen::to_source(&emitted).unwrap();
+    syn::parse_file(&text).unwrap();
+    assert!(
+        text.contains("pub const N_STATES: usize = 0usize;")
+            && text.contains("pub const N_OUTPUTS: usize = 1usize;"),
+        "{}",
+        &text[..text.len().min(3000)]
     );
 }
 

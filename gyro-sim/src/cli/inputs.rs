@@ -19,7 +19,7 @@ pub(super) fn open_inputs_warning(scene: &Scene, info: &ModelInfo) -> Option<Str
     }
     let first = left[0];
     Some(format!(
-        "warning: {} {} the model leaves open (SPECIFIED without a formula): 0 in this run; give {} with --set {first}=VALUE, [parameters] {first} = VALUE, or [specified] {first} = \"a formula of time T\" (or a table)",
+        "warning: {} {} the model leaves open (SPECIFIED without a formula, or a variable without an equation): 0 in this run; give {} with --set {first}=VALUE, [parameters] {first} = VALUE, or [specified] {first} = \"a formula of time T\" (or a table)",
         left.join(", "),
         if left.len() == 1 { "is an input" } else { "are inputs" },
         if left.len() == 1 { "it" } else { "them" },

@@ -72,10 +72,21 @@ fn splice(out: &mut Expanded, stmts: Vec<Stmt>, dir: Option<&Path>, depth: usize
         }
         let found = match &s.kind {
             StmtKind::Run(name) => Some(run_file(name, dir, &s)),
-            StmtKind::Expr(Expr { kind: ExprKind::Call { name, args }, .. }) => {
+            StmtKind::Expr(Expr { kind: ExprKind::Call { name, args }, .. })
+                if macro_file(name, dir).is_some() =>
+            {
                 macro_file(name, dir).map(|path| macro_text(&path, args, &out.source, &s))
             }
-            _ => None,
+            _ => super::user_functions::expand(&s, &out.source, dir).map(|r| {
+                r.map(|e| {
+                    let call = out.source.get(s.span.clone()).unwrap_or("").trim();
+                    Included {
+                        label: format!("{} (from `{call}`)", e.path.display()),
+                        path: e.path,
+                        text: e.text,
+                    }
+                })
+            }),
         };
         let Some(found) = found else {
             kept.push(s);
@@ -157,7 +168,7 @@ fn macro_text(path: &Path, args: &[Expr], source: &str, s: &Stmt) -> Result<Incl
 }
 
 /// `name` relative to `dir`, then to each folder above it; an absolute `name` as it is.
-fn find(name: &str, dir: Option<&Path>) -> Option<PathBuf> {
+pub(super) fn find(name: &str, dir: Option<&Path>) -> Option<PathBuf> {
     let name = name.replace('\\', "/");
     let relative = Path::new(&name);
     if relative.is_absolute() {

@@ -29,6 +29,7 @@ mod sum_tree;
 mod to_spec;
 mod token;
 pub mod units;
+mod user_functions;
 
 pub use ast::{BinOp, Expr, ExprKind, Stmt, StmtKind};
 pub use check::{bookkeeping_summary, check, check_for_generation, Checked, OVERRIDE_MARKER};

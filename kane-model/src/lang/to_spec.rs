@@ -114,32 +114,55 @@ impl LoadedModel {
             spec.add_kinetic_energy("KE", &unit)?;
         }
         let drawing = if drawn { Some(spec.add_drawing(self.gravity.as_ref())?) } else { None };
-        for o in &mut spec.outputs {
-            o.components = spec.model.ar.subs_many(&o.components, &formulas)?;
-        }
-        if !formed && !algebraic {
-            // Rates the file assigned, read through one another.
-            let mut outputs = std::mem::take(&mut spec.outputs);
-            for o in &mut outputs {
-                for c in &mut o.components {
-                    for _ in 0..2 {
-                        *c = spec.in_states(*c)?;
-                    }
-                }
-            }
-            spec.outputs = outputs;
-        }
-        if algebraic {
-            let computed: Vec<_> = spec.outputs.iter().flat_map(|o| o.components.iter().copied()).collect();
-            for s in spec.model.ar.free_symbols(&computed) {
-                if matches!(spec.model.ar.symbol_info(s).kind, crate::expr::SymbolKind::Variable { .. }) {
-                    spec.add_input(s);
-                }
-            }
-        }
+        finish_outputs(&mut spec, &formulas, formed, algebraic)?;
         Ok((spec, drawing))
     }
+}
 
+/// The outputs with the formulas put in; for a file that assigns its rates, those rates read
+/// through one another; for a file without dynamics, every variable they read an input.
+fn finish_outputs(
+    spec: &mut ModelSpec,
+    formulas: &rustc_hash::FxHashMap<crate::expr::ExprId, crate::expr::ExprId>,
+    formed: bool,
+    algebraic: bool,
+) -> Result<(), SpecError> {
+    for o in &mut spec.outputs {
+        o.components = spec.model.ar.subs_many(&o.components, formulas)?;
+    }
+    if !formed && !algebraic {
+        // Rates the file assigned (and their rates, `Q''`), read through one another.
+        let mut second = rustc_hash::FxHashMap::default();
+        for k in 0..spec.equations.coordinates.len() {
+            let name = format!("{}''", spec.symbol_name(spec.equations.coordinates[k]));
+            if let Some(d2) = spec.model.ar.lookup(&name) {
+                let rate = spec.model.dt(spec.equations.kinematics[k])?;
+                second.insert(spec.model.ar.symbol_expr(d2), rate);
+            }
+        }
+        let mut outputs = std::mem::take(&mut spec.outputs);
+        for o in &mut outputs {
+            o.components = spec.model.ar.subs_many(&o.components, &second)?;
+            for c in &mut o.components {
+                for _ in 0..2 {
+                    *c = spec.in_states(*c)?;
+                }
+            }
+        }
+        spec.outputs = outputs;
+    }
+    if algebraic {
+        let computed: Vec<_> = spec.outputs.iter().flat_map(|o| o.components.iter().copied()).collect();
+        for s in spec.model.ar.free_symbols(&computed) {
+            if matches!(spec.model.ar.symbol_info(s).kind, crate::expr::SymbolKind::Variable { .. }) {
+                spec.add_input(s);
+            }
+        }
+    }
+    Ok(())
+}
+
+impl LoadedModel {
     /// Variables whose rates the file gives after its equations of motion were formed
     /// (`POSA1' = DOT(V_DISKAO_N>, N1>)` after KANE()), added to `eqs`' coordinates: Autolev's
     /// code integrates every variable whose rate is assigned.

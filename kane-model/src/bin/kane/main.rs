@@ -415,7 +415,7 @@ fn eval(file: PathBuf, set: Vec<String>, json: bool) -> Result<(), String> {
     let value_of = |s: SymbolId| values.get(&ar.symbol_info(s).name.to_ascii_uppercase()).copied();
     let rates = e.rates_at(ar, &value_of).map_err(|err| format!("{}: {err}", file.display()))?;
     if !open.is_empty() {
-        eprintln!("warning: {} left open by the file (SPECIFIED without a formula): 0 here; give a value with --set {}=VALUE", open.join(", "), open[0]);
+        eprintln!("warning: {} left open by the file (SPECIFIED without a formula, or a variable without an equation): 0 here; give a value with --set {}=VALUE", open.join(", "), open[0]);
     }
     if json {
         let v = serde_json::json!({

@@ -58,7 +58,7 @@ mod tests {
         assert_eq!(
             bookkeeping_summary(&m, src).unwrap(),
             "applied: UNITSYSTEM (line 1); ignored (they change only Autolev's own printing, saving or \
-             pausing): AUTOZ (line 2), ENCODE (line 4), PAUSE (line 5)"
+             pausing): AUTOZ (line 2), PAUSE (line 5)"
         );
         let code = "CONSTANTS M\nE = M\nCODE ALGEBRAIC(E, M) a.c\n";
         let with_code = crate::lang::load("c.al", code).unwrap();
