@@ -194,3 +194,25 @@ fn corpus_files_match_sympy_or_are_rejected_precisely() {
     }
     assert!(mismatches.is_empty(), "{}\n\n{}", mismatches.join("\n"), summary.join("\n"));
 }
+
+#[test]
+fn corpus_files_pass_the_kinematics_check_but_the_pendulum_whose_velocity_has_the_wrong_sign() {
+    for (name, src) in CORPUS {
+        let checked = lang::check(name, src);
+        if *name != "pydy-example-repo/non_min_pendulum.al" {
+            if let Err(r) = checked {
+                panic!("{name}:\n{r}");
+            }
+            continue;
+        }
+        // `V_P_N> = DT(P_P_PN>, N)` for P located from the fixed PN: the sign is wrong.
+        let Err(r) = checked else { panic!("{name} checked") };
+        let text = r.to_string();
+        let line = |start: &str| src.lines().position(|l| l.starts_with(start)).unwrap() + 1;
+        assert!(
+            text.contains(&format!("{name}:{}:1: error: `V_P_N>=DT(P_P_PN>, N)`", line("V_P_N>"))),
+            "{text}"
+        );
+        assert!(text.contains(&format!("{name}:{}:1: note:", line("P_PN_P>"))), "{text}");
+    }
+}
