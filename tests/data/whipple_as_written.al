@@ -75,7 +75,7 @@ KANE()
 % The energy: kinetic, and the masses' heights above the ground the rear contact is on.
 PE = G*(MR*DOT(P_CR_WRO>, N3>) + MB*DOT(P_CR_RBO>, N3>) + MH*DOT(P_CR_FBO>, N3>) + MF*DOT(P_CR_WFO>, N3>))
 ENERGY = KE() + PE
-OUTPUT Q2, Q5, U1, U4, U6, ENERGY
+OUTPUT Q2, Q5, U1, U4, U6, U1', ENERGY
 INPUT W = 1.02, C = 0.08, LAMBDA = 0.3141592653589793, RR = 0.3, RF = 0.35, G = 9.81
 INPUT XB = 0.3, ZB = 0.9, XH = 0.9, ZH = 0.7
 INPUT MR = 2, MB = 85, MH = 4, MF = 3
