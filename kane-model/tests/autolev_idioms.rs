@@ -490,6 +490,12 @@ fn coef_by_a_rate_solve_gave_takes_the_rate_itself() {
 }
 
 #[test]
+fn coef_by_a_coordinates_rate_reads_its_kinematic_equation() {
+    let (m, _) = checks("VARIABLES Q', U'\nCONSTANTS A, B\nQ' = U\nE = A*Q' + B\nC = COEF(E, Q')\n");
+    assert_eq!(number(&m, "C", &[("A", 3.0)]), 3.0);
+}
+
+#[test]
 fn exclude_of_an_expression_too_large_to_expand_that_is_polynomial_in_the_names() {
     // (A1 + ... + A10) ... (F1 + ... + F10) expands into a million terms.
     let mut src = String::from("VARIABLES W'\nCONSTANTS G\n");
@@ -518,4 +524,6 @@ fn a_matrix_of_vectors_dots_into_a_matrix() {
     let Some(Value::Matrix { rows: 1, cols: 2, data }) = m.value("X") else { panic!("{:?}", m.value("X")) };
     let v = m.model.ar.eval(&data, at(&m, &[("F1", 3.0), ("F2", 5.0)])).unwrap();
     assert_eq!(v, [3.0, 10.0]);
+    let text = fails("NEWTONIAN N\nX = DOT(N1>, [N1>, N2>; N3>])\n");
+    assert!(text.contains("matrix rows have different lengths"), "{text}");
 }

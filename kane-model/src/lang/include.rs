@@ -77,12 +77,13 @@ fn splice(out: &mut Expanded, stmts: Vec<Stmt>, dir: Option<&Path>, depth: usize
             {
                 macro_file(name, dir).map(|path| macro_text(&path, args, &out.source, &s))
             }
+            // The statement is read again from the model's folder (for the calls left in it).
             _ => super::user_functions::expand(&s, &out.source, dir).map(|r| {
                 r.map(|e| {
                     let call = out.source.get(s.span.clone()).unwrap_or("").trim();
                     Included {
                         label: format!("{} (from `{call}`)", e.path.display()),
-                        path: e.path,
+                        path: dir.unwrap_or(Path::new("")).join("statement"),
                         text: e.text,
                     }
                 })

@@ -25,8 +25,13 @@ pub(super) fn expand(s: &Stmt, source: &str, dir: Option<&Path>) -> Option<Resul
     };
     let mut calls = Vec::new();
     collect_calls(root, &mut calls);
-    let mut found: Vec<(&Expr, PathBuf)> =
-        calls.into_iter().filter_map(|(c, name)| function_file(name, dir).map(|p| (c, p))).collect();
+    // Autolev's own functions are never a file's.
+    let builtin = |name: &str| super::interp::KNOWN_CALLS.contains(&name.to_ascii_uppercase().as_str());
+    let mut found: Vec<(&Expr, PathBuf)> = calls
+        .into_iter()
+        .filter(|(_, name)| !builtin(name))
+        .filter_map(|(c, name)| function_file(name, dir).map(|p| (c, p)))
+        .collect();
     if found.is_empty() {
         return None;
     }
@@ -114,8 +119,10 @@ mod tests {
         let dir = std::env::temp_dir().join(format!("kane-user-fn-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         std::fs::write(dir.join("half_sum.r"), "% the half sum\n(#1# + #2#)/2\n").unwrap();
+        // Autolev's own functions are never replaced by a file's.
+        std::fs::write(dir.join("sin.r"), "#1#^2\n").unwrap();
         let main = dir.join("main.al");
-        let src = "CONSTANTS A, B\nX = 3*HALF_SUM(A, 2*B) + 1\nY = HALF_SUM(HALF_SUM(A, B), 1)\n";
+        let src = "CONSTANTS A, B\nX = 3*HALF_SUM(A, 2*B) + 1\nY = HALF_SUM(HALF_SUM(A, B), 1)\nZ = SIN(A)\n";
         let m = super::super::load(&main.display().to_string(), src).unwrap_or_else(|r| panic!("{r}"));
         let ar = &m.model.ar;
         let value = |name: &str| {
@@ -125,6 +132,7 @@ mod tests {
         };
         assert_eq!(value("X"), 3.0 * (2.0 + 10.0) / 2.0 + 1.0);
         assert_eq!(value("Y"), ((2.0 + 5.0) / 2.0 + 1.0) / 2.0);
+        assert_eq!(value("Z"), 2f64.sin());
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -161,7 +161,10 @@ impl Interpreter {
         let body = self.frame_arg(&args[1])?;
         let from = self.point_arg(&args[2])?;
         let to = self.point_arg(&args[3])?;
-        if self.model.velocity(from, frame).is_err() {
+        if matches!(
+            self.model.velocity(from, frame),
+            Err(crate::mechanics::MechanicsError::VelocityUndefined { .. })
+        ) {
             // A point whose motion nothing gives: at rest there, said in a warning.
             let (p, f) = (self.model.point_name(from).to_string(), self.model.frame_name(frame).to_string());
             self.warnings.push(

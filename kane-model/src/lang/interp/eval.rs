@@ -83,11 +83,9 @@ impl Interpreter {
             .with_help("assign the entry first, e.g. EQN[1] = ..."))
     }
 
-    /// `[v1>, v2>; ...]` of vectors only: a matrix of vectors (rows of one length); `None`
-    /// when the first entry is not a vector.
-    fn vector_matrix(&mut self, rows: &[Vec<Expr>], e: &Expr) -> IResult<Option<Value>> {
-        let Some(first) = rows.first().and_then(|r| r.first()) else { return Ok(None) };
-        let Value::Vector(v) = self.eval(first)? else { return Ok(None) };
+    /// `[v1>, v2>; ...]` of vectors only, the first `v`: a matrix of vectors (rows of one
+    /// length).
+    fn vector_matrix(&mut self, rows: &[Vec<Expr>], v: Vector, e: &Expr) -> IResult<Value> {
         let cols = rows[0].len();
         if rows.iter().any(|r| r.len() != cols) {
             return Err(Diagnostic::error(e.span.clone(), "matrix rows have different lengths"));
@@ -104,22 +102,30 @@ impl Interpreter {
                 }
             }
         }
-        Ok(Some(Value::Vectors { rows: rows.len(), cols, data }))
+        Ok(Value::Vectors { rows: rows.len(), cols, data })
     }
 
     /// `[a, b; c, d]`: a matrix of scalars; an entry may itself be a matrix, joined to its
     /// neighbours in the row (same number of rows) and to the rows above and below (same
     /// number of columns): `[FK; X]` appends X to the column FK.
     fn matrix_literal(&mut self, rows: &[Vec<Expr>], e: &Expr) -> IResult<Value> {
-        if let Some(v) = self.vector_matrix(rows, e)? {
-            return Ok(v);
+        let mut first = match rows.first().and_then(|r| r.first()) {
+            Some(x) => Some(self.eval(x)?),
+            None => None,
+        };
+        if let Some(Value::Vector(v)) = &first {
+            return self.vector_matrix(rows, v.clone(), e);
         }
         let mut data = Vec::new();
         let (mut height, mut width) = (0, None);
         for r in rows {
             let mut blocks: Vec<(usize, usize, Vec<crate::expr::ExprId>)> = Vec::with_capacity(r.len());
             for x in r {
-                blocks.push(match self.eval(x)? {
+                let value = match first.take() {
+                    Some(v) => v,
+                    None => self.eval(x)?,
+                };
+                blocks.push(match value {
                     Value::Scalar(s) => (1, 1, vec![s]),
                     Value::Matrix { rows, cols, data } => (rows, cols, data),
                     other => {

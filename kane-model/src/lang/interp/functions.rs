@@ -65,6 +65,12 @@ impl Interpreter {
         if self.number(&args[0]).is_err() {
             // Of a symbol, only Autolev's session shows these.
             let x = self.eval(&args[0])?;
+            if !matches!(x, Value::Scalar(_) | Value::Shown(_)) {
+                return Err(Diagnostic::error(
+                    args[0].span.clone(),
+                    format!("{upper} takes a scalar, not {}", x.kind()),
+                ));
+            }
             return Ok(Value::Shown(format!("{upper}{}", self.shown_text(&x))));
         }
         let x = self.number(&args[0]).map_err(|_| {

@@ -17,6 +17,7 @@ mod deferral;
 mod eigen;
 mod eval;
 mod functions;
+pub(crate) use functions::KNOWN_CALLS;
 mod inertia;
 mod mass_fns;
 mod matrix_fns;

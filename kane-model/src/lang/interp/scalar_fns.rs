@@ -198,10 +198,12 @@ impl Interpreter {
     fn coefficients(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
         super::arity("COEF", args, 2, &e.span)?;
         let v = self.eval(&args[0])?;
-        // Quantities named (`W'`, `[U7', U8']`) are the symbols, even after SOLVE gave a value.
+        // Rates SOLVE gave (`W'`, `[U7', U8']`) named here are the rates themselves.
         let named = |s: &Self, x: &Expr| match &x.kind {
-            ExprKind::Name { name, .. } => {
-                matches!(s.bindings.get(&name.to_ascii_uppercase()), Some(Binding::Symbol(..)))
+            ExprKind::Name { name, primes, suffix: 0 } => {
+                let key = format!("{}{}", name.to_ascii_uppercase(), "'".repeat(*primes as usize));
+                s.solved.contains_key(&key)
+                    && matches!(s.bindings.get(&name.to_ascii_uppercase()), Some(Binding::Symbol(..)))
             }
             _ => false,
         };

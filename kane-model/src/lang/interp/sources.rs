@@ -32,6 +32,8 @@ pub(crate) struct Sources {
     pub(crate) implicit_constants: Vec<(String, Span)>,
     /// Every statement run, in the order run.
     pub(crate) executed: Vec<Span>,
+    /// `executed` as (start, end, place in the run), by start: made once the run is over.
+    by_start: std::cell::OnceCell<Vec<(usize, usize, usize)>>,
 }
 
 /// The statement that set a point's velocity or acceleration in a frame, and what it took.
@@ -76,10 +78,17 @@ impl Sources {
     /// The place in the run of the statement at byte `offset`: a file's RUN statement runs the
     /// other file's statements there, although their text follows the file's.
     pub(crate) fn rank(&self, offset: usize) -> usize {
-        self.executed
-            .iter()
-            .position(|s| s.start <= offset && offset < s.end.max(s.start + 1))
-            .unwrap_or(usize::MAX)
+        let sorted = self.by_start.get_or_init(|| {
+            let mut v: Vec<(usize, usize, usize)> =
+                self.executed.iter().enumerate().map(|(k, s)| (s.start, s.end.max(s.start + 1), k)).collect();
+            v.sort_unstable();
+            v
+        });
+        let at = sorted.partition_point(|(start, _, _)| *start <= offset);
+        match at.checked_sub(1).map(|k| sorted[k]) {
+            Some((_, end, k)) if offset < end => k,
+            _ => usize::MAX,
+        }
     }
 
     /// Records the statement relating points `a` and `b`.

@@ -178,6 +178,9 @@ impl Interpreter {
         for (list, other, list_first) in [(b, a, false), (a, b, true)] {
             let ExprKind::Matrix(rows) = &list.kind else { continue };
             let cols = rows.first().map_or(0, Vec::len);
+            if rows.iter().any(|r| r.len() != cols) {
+                return Err(Diagnostic::error(list.span.clone(), "matrix rows have different lengths"));
+            }
             let mut data = Vec::with_capacity(rows.len() * cols);
             for entry in rows.iter().flatten() {
                 let (x, y) = if list_first { (entry, other) } else { (other, entry) };
