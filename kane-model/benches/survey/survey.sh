@@ -17,8 +17,8 @@ mkdir -p "$cache/repos" "$cache/out"
 if [ -z "${KANE:-}" ] || [ -z "${GYRO_SIM:-}" ]; then
   (cd "$root" && cargo build --release -q --bin kane --bin gyro-sim)
 fi
-kane="${KANE:-$root/target/release/kane}"
-gyro="${GYRO_SIM:-$root/target/release/gyro-sim}"
+kane="$(realpath "${KANE:-$root/target/release/kane}")"
+gyro="$(realpath "${GYRO_SIM:-$root/target/release/gyro-sim}")"
 
 # A repository at a commit, fetched once.
 checkout() {
