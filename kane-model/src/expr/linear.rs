@@ -49,30 +49,13 @@ impl Arena {
         if equations.len() != m {
             return Err(ExprError::NotSquare { equations: equations.len(), unknowns: m });
         }
-        let mut rows: Vec<(Vec<ExprId>, ExprId)> = Vec::with_capacity(m);
+        let (mut a, mut b) = (Vec::with_capacity(m), Vec::with_capacity(m));
         for &g in equations {
             let (coeffs, rest) = self.linear_coefficients(g, unknowns)?;
-            let rhs = self.neg(rest)?;
-            rows.push((coeffs, rhs));
+            a.push(coeffs);
+            b.push(vec![self.neg(rest)?]);
         }
-        for col in 0..m {
-            let pivot = (col..m).find(|&r| !self.is_zero(rows[r].0[col])).ok_or(ExprError::SingularSystem)?;
-            rows.swap(col, pivot);
-            let p = rows[col].0[col];
-            for r in 0..m {
-                if r == col || self.is_zero(rows[r].0[col]) {
-                    continue;
-                }
-                let factor = self.div(rows[r].0[col], p)?;
-                for k in 0..m {
-                    let t = self.mul(&[factor, rows[col].0[k]])?;
-                    rows[r].0[k] = self.sub(rows[r].0[k], t)?;
-                }
-                let t = self.mul(&[factor, rows[col].1])?;
-                rows[r].1 = self.sub(rows[r].1, t)?;
-            }
-        }
-        (0..m).map(|i| self.div(rows[i].1, rows[i].0[i])).collect()
+        Ok(self.solve_matrix(&a, &b)?.into_iter().map(|x| x[0]).collect())
     }
 }
 

@@ -131,7 +131,7 @@ fn finish_outputs(
         o.components = spec.model.ar.subs_many(&o.components, formulas)?;
     }
     if !formed && !algebraic {
-        // Rates the file assigned (and their rates, `Q''`), read through one another.
+        // Rates the file assigned (and their rates, `Q''`), read by their equations.
         let mut second = rustc_hash::FxHashMap::default();
         for k in 0..spec.equations.coordinates.len() {
             let name = format!("{}''", spec.symbol_name(spec.equations.coordinates[k]));
@@ -144,9 +144,7 @@ fn finish_outputs(
         for o in &mut outputs {
             o.components = spec.model.ar.subs_many(&o.components, &second)?;
             for c in &mut o.components {
-                for _ in 0..2 {
-                    *c = spec.in_states(*c)?;
-                }
+                *c = spec.in_states(*c)?;
             }
         }
         spec.outputs = outputs;

@@ -174,16 +174,7 @@ impl Model {
             return Ok(Vec::new());
         }
         // The chain's own angular velocity from the orientations' rates, frame by frame.
-        let (up_f, up_r) = self.paths_to_common(frame, reference)?;
-        let mut chain = Vector::zero();
-        for &f in &up_f[..up_f.len() - 1] {
-            let rel = self.orientation_angular_velocity(f)?;
-            chain = self.add_vectors(&chain, &rel)?;
-        }
-        for &f in &up_r[..up_r.len() - 1] {
-            let rel = self.orientation_angular_velocity(f)?;
-            chain = self.sub_vectors(&chain, &rel)?;
-        }
+        let chain = self.along_tree(frame, reference, Model::orientation_angular_velocity)?;
         let difference = self.sub_vectors(&chain, w)?;
         let equations = self.express(&difference, frame)?;
         let rates: Vec<SymbolId> = self
@@ -528,17 +519,29 @@ impl Model {
         if let Some(w) = self.ang_vel_cache.get(&(b, a)) {
             return Ok(w.clone());
         }
+        let w = self.along_tree(b, a, Model::ang_vel_in_parent)?;
+        self.ang_vel_cache.insert((b, a), w.clone());
+        Ok(w)
+    }
+
+    /// The sum of `rel(f)` (a frame's angular velocity in its parent) over the frames from `b`
+    /// up to the frame it shares with `a`, less the same from `a`: `b`'s in `a`.
+    fn along_tree(
+        &mut self,
+        b: FrameId,
+        a: FrameId,
+        rel: fn(&mut Model, FrameId) -> Result<Vector>,
+    ) -> Result<Vector> {
         let (up_b, up_a) = self.paths_to_common(b, a)?;
         let mut w = Vector::zero();
         for &f in &up_b[..up_b.len() - 1] {
-            let rel = self.ang_vel_in_parent(f)?;
-            w = self.add_vectors(&w, &rel)?;
+            let r = rel(self, f)?;
+            w = self.add_vectors(&w, &r)?;
         }
         for &f in &up_a[..up_a.len() - 1] {
-            let rel = self.ang_vel_in_parent(f)?;
-            w = self.sub_vectors(&w, &rel)?;
+            let r = rel(self, f)?;
+            w = self.sub_vectors(&w, &r)?;
         }
-        self.ang_vel_cache.insert((b, a), w.clone());
         Ok(w)
     }
 
