@@ -62,49 +62,15 @@ pub fn lex_from(src: &str, from: usize) -> (Vec<Token>, Vec<LexError>) {
     let bytes = src.as_bytes();
     let mut out = Vec::new();
     let mut i = from;
-    let suffix = |i: &mut usize| -> u8 {
-        let mut n = 0;
-        while *i < bytes.len() && bytes[*i] == b'>' && n < 2 {
-            n += 1;
-            *i += 1;
-        }
-        n
-    };
     // Set by a `&` written right after a name or number: a name or number starting the next
     // line continues that token (`THET&` then `A)` is `THETA)`).
     let mut glue = false;
     while i < bytes.len() {
         let c = bytes[i];
         let start = i;
-        let after_number = matches!(out.last(), Some(Token { tok: Tok::Number { .. }, .. }));
-        if glue && (c.is_ascii_alphanumeric() || c == b'_') {
-            if let Some(Token {
-                tok: Tok::Name { text, suffix: 0 } | Tok::Number { text, suffix: 0 },
-                span,
-            }) = out.last_mut()
-            {
-                while i < bytes.len()
-                    && (bytes[i].is_ascii_alphanumeric()
-                        || bytes[i] == b'_'
-                        || (after_number && bytes[i] == b'.'))
-                {
-                    i += 1;
-                }
-                text.push_str(&src[start..i]);
-                span.end = i;
-                let joined = text.clone();
-                let s = suffix(&mut i);
-                let last = out.len() - 1;
-                out[last].span.end = i;
-                let is_name = joined.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_');
-                out[last].tok = if is_name {
-                    Tok::Name { text: joined, suffix: s }
-                } else {
-                    Tok::Number { text: joined, suffix: s }
-                };
-                glue = false;
-                continue;
-            }
+        if glue && (c.is_ascii_alphanumeric() || c == b'_') && glue_onto_last(src, &mut i, &mut out) {
+            glue = false;
+            continue;
         }
         if !matches!(c, b' ' | b'\t' | b'\r') {
             glue = false;
@@ -116,24 +82,8 @@ pub fn lex_from(src: &str, from: usize) -> (Vec<Token>, Vec<LexError>) {
                 }
             }
             b'&' => {
-                // Continuation: skip to the end of the line, newline included.
                 glue = i > 0 && (bytes[i - 1].is_ascii_alphanumeric() || matches!(bytes[i - 1], b'_' | b'.'));
-                i += 1;
-                while i < bytes.len() && bytes[i] != b'\n' {
-                    if !bytes[i].is_ascii_whitespace() && bytes[i] != b'%' {
-                        break;
-                    }
-                    if bytes[i] == b'%' {
-                        while i < bytes.len() && bytes[i] != b'\n' {
-                            i += 1;
-                        }
-                        break;
-                    }
-                    i += 1;
-                }
-                if i < bytes.len() && bytes[i] == b'\n' {
-                    i += 1;
-                }
+                i = after_continuation(bytes, i + 1);
             }
             b'\n' => {
                 out.push(Token { tok: Tok::Newline, span: start..start + 1 });
@@ -141,23 +91,9 @@ pub fn lex_from(src: &str, from: usize) -> (Vec<Token>, Vec<LexError>) {
             }
             b' ' | b'\t' | b'\r' => i += 1,
             b'0'..=b'9' | b'.' => {
-                while i < bytes.len() && (bytes[i].is_ascii_digit() || bytes[i] == b'.') {
-                    i += 1;
-                }
-                if i < bytes.len() && (bytes[i] == b'e' || bytes[i] == b'E') {
-                    let mut j = i + 1;
-                    if j < bytes.len() && (bytes[j] == b'+' || bytes[j] == b'-') {
-                        j += 1;
-                    }
-                    if j < bytes.len() && bytes[j].is_ascii_digit() {
-                        i = j;
-                        while i < bytes.len() && bytes[i].is_ascii_digit() {
-                            i += 1;
-                        }
-                    }
-                }
+                i = number_end(bytes, i);
                 let text = src[start..i].to_string();
-                let s = suffix(&mut i);
+                let s = suffix(bytes, &mut i);
                 out.push(Token { tok: Tok::Number { text, suffix: s }, span: start..i });
             }
             c if c.is_ascii_alphabetic() || c == b'_' => {
@@ -165,7 +101,7 @@ pub fn lex_from(src: &str, from: usize) -> (Vec<Token>, Vec<LexError>) {
                     i += 1;
                 }
                 let text = src[start..i].to_string();
-                let s = suffix(&mut i);
+                let s = suffix(bytes, &mut i);
                 out.push(Token { tok: Tok::Name { text, suffix: s }, span: start..i });
             }
             b'+' if bytes.get(i + 1) == Some(&b'=') => {
@@ -191,6 +127,84 @@ pub fn lex_from(src: &str, from: usize) -> (Vec<Token>, Vec<LexError>) {
     }
     out.push(Token { tok: Tok::Newline, span: src.len()..src.len() });
     (out, errors)
+}
+
+/// The `>` after a name or number (at most two), consumed from `i`.
+fn suffix(bytes: &[u8], i: &mut usize) -> u8 {
+    let mut n = 0;
+    while *i < bytes.len() && bytes[*i] == b'>' && n < 2 {
+        n += 1;
+        *i += 1;
+    }
+    n
+}
+
+/// Where a number starting at `i` ends (digits and points, then an exponent if one follows).
+fn number_end(bytes: &[u8], mut i: usize) -> usize {
+    while i < bytes.len() && (bytes[i].is_ascii_digit() || bytes[i] == b'.') {
+        i += 1;
+    }
+    if i < bytes.len() && (bytes[i] == b'e' || bytes[i] == b'E') {
+        let mut j = i + 1;
+        if j < bytes.len() && (bytes[j] == b'+' || bytes[j] == b'-') {
+            j += 1;
+        }
+        if j < bytes.len() && bytes[j].is_ascii_digit() {
+            i = j;
+            while i < bytes.len() && bytes[i].is_ascii_digit() {
+                i += 1;
+            }
+        }
+    }
+    i
+}
+
+/// Where the text after a continuation `&` (at `i`, just past it) resumes: past blanks, a
+/// comment and the newline of its line; at the first other character on that line.
+fn after_continuation(bytes: &[u8], mut i: usize) -> usize {
+    while i < bytes.len() && bytes[i] != b'\n' {
+        if !bytes[i].is_ascii_whitespace() && bytes[i] != b'%' {
+            break;
+        }
+        if bytes[i] == b'%' {
+            while i < bytes.len() && bytes[i] != b'\n' {
+                i += 1;
+            }
+            break;
+        }
+        i += 1;
+    }
+    if i < bytes.len() && bytes[i] == b'\n' {
+        i += 1;
+    }
+    i
+}
+
+/// Joins the name or number characters at `i` to the last token when it is a name or number
+/// without `>` (a continued token); false, and nothing consumed, when it is not.
+fn glue_onto_last(src: &str, i: &mut usize, out: &mut [Token]) -> bool {
+    let bytes = src.as_bytes();
+    let after_number = matches!(out.last(), Some(Token { tok: Tok::Number { .. }, .. }));
+    let Some(Token { tok: Tok::Name { text, suffix: 0 } | Tok::Number { text, suffix: 0 }, .. }) =
+        out.last_mut()
+    else {
+        return false;
+    };
+    let start = *i;
+    while *i < bytes.len()
+        && (bytes[*i].is_ascii_alphanumeric() || bytes[*i] == b'_' || (after_number && bytes[*i] == b'.'))
+    {
+        *i += 1;
+    }
+    text.push_str(&src[start..*i]);
+    let joined = text.clone();
+    let s = suffix(bytes, i);
+    let last = out.len() - 1;
+    out[last].span.end = *i;
+    let is_name = joined.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_');
+    out[last].tok =
+        if is_name { Tok::Name { text: joined, suffix: s } } else { Tok::Number { text: joined, suffix: s } };
+    true
 }
 
 #[cfg(test)]
