@@ -567,7 +567,16 @@ fn the_compiled_path_builds_once_per_file_version() {
     let model = dir.join("my_gimbal.al");
     std::fs::copy(VARIANT, &model).unwrap();
     let out = dir.join("out");
-    let args = ["--model", model.to_str().unwrap(), "--t-final", "1", "--out", out.to_str().unwrap()];
+    let args = [
+        "--model",
+        model.to_str().unwrap(),
+        "--engine",
+        "compiled",
+        "--t-final",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+    ];
     let first = gyro_sim(&args, &dir);
     assert!(first.status.success(), "{}", text(&first));
     assert!(text(&first).contains("compiling the model"), "{}", text(&first));
@@ -582,6 +591,11 @@ fn the_compiled_path_builds_once_per_file_version() {
     let worst = compiled_rows.iter().flatten().zip(instant_rows.iter().flatten());
     let worst = worst.map(|(x, y)| (x - y).abs() / x.abs().max(1.0)).fold(0.0, f64::max);
     assert!(worst < 1e-12, "compiled vs instant {worst:e}");
+    let jit = gyro_sim(&[&args[..], &["--engine", "jit"]].concat(), &dir);
+    assert!(jit.status.success() && text(&jit).contains("ran jit"), "{}", text(&jit));
+    let worst = compiled_rows.iter().flatten().zip(rows(&out).into_iter().flatten());
+    let worst = worst.map(|(x, y)| (x - y).abs() / x.abs().max(1.0)).fold(0.0, f64::max);
+    assert!(worst < 1e-12, "compiled vs jit {worst:e}");
     // The compiled binary computes the model's drawing as the instant path does.
     let instant_view = view_data(&out);
     assert_eq!(compiled_view["view"], instant_view["view"]);
@@ -637,7 +651,8 @@ fn without_a_toolchain_the_compiled_path_says_so() {
     let text_of = std::fs::read_to_string(VARIANT).unwrap() + "% no toolchain here\n";
     std::fs::write(&model, text_of).unwrap();
     let run = Command::new(env!("CARGO_BIN_EXE_gyro-sim"))
-        .args(["run", "--model", model.to_str().unwrap(), "--out", dir.join("out").to_str().unwrap()])
+        .args(["run", "--model", model.to_str().unwrap(), "--engine", "compiled"])
+        .args(["--out", dir.join("out").to_str().unwrap()])
         .env("GYRO_SIM_CACHE", dir.join("cache"))
         .env("GYRO_SIM_TARGET_DIR", dir.join("target"))
         .env_remove("CARGO")
@@ -650,4 +665,36 @@ fn without_a_toolchain_the_compiled_path_says_so() {
         e.contains("needs a Rust toolchain, and `cargo` was not found") && e.contains("--engine instant"),
         "{e}"
     );
+}
+
+#[test]
+fn an_edited_gimbal_runs_on_the_jit_engine_without_a_toolchain() {
+    let dir = folder("jit_no_toolchain");
+    let model = dir.join("edited_gimbal.al");
+    // A changed axis (the inner gimbal turns about B3 instead of -B1) and an offset mass centre.
+    let source = std::fs::read_to_string(VARIANT).unwrap();
+    let edited = source
+        .replace("SIMPROT(B, C, -1, Q2)", "SIMPROT(B, C, 3, Q2)")
+        .replace("P_O_DO> = OFF*D2>", "P_O_DO> = OFF*D2> + 0.02*D1>");
+    assert_ne!(edited, source);
+    std::fs::write(&model, edited).unwrap();
+    let out = dir.join("out");
+    let run = Command::new(env!("CARGO_BIN_EXE_gyro-sim"))
+        .args(["run", "--model", model.to_str().unwrap(), "--out", out.to_str().unwrap()])
+        .env("GYRO_SIM_CACHE", dir.join("cache"))
+        .env("GYRO_SIM_TARGET_DIR", dir.join("target"))
+        .env_remove("CARGO")
+        .env("PATH", dir.join("empty"))
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert!(run.status.success() && text(&run).contains("ran jit"), "{}", text(&run));
+    assert!(!dir.join("cache").exists() && !dir.join("target").exists(), "nothing was built");
+    let jit_rows = rows(&out);
+    let instant = gyro_sim(
+        &["--model", model.to_str().unwrap(), "--engine", "instant", "--out", out.to_str().unwrap()],
+        &dir,
+    );
+    assert!(instant.status.success(), "{}", text(&instant));
+    assert_eq!(jit_rows, rows(&out), "the JIT engine computes the evaluator's operations");
 }

@@ -28,6 +28,9 @@ pub enum CliError {
     /// The model file's compiled path cannot be built.
     #[error(transparent)]
     Compile(#[from] CompileError),
+    /// The model file's program cannot be compiled by the JIT engine.
+    #[error(transparent)]
+    Jit(#[from] kane_model::codegen::jit::JitError),
     /// An integration stopped.
     #[error(transparent)]
     Solve(Box<SolveError>),

@@ -154,9 +154,11 @@ struct RunArgs {
     /// Absolute tolerance, in place of the scene's (or the file's ABSERR).
     #[arg(long, allow_hyphen_values = true, value_parser = model_scene::parse_tolerance)]
     atol: Option<f64>,
-    /// How a model file's equations run: compiled (cached native code, built once per file
-    /// version) or instant (no compilation; slower per step).
-    #[arg(long, value_enum, default_value = "compiled")]
+    /// How a model file's equations run: jit (machine code compiled in process, ready in
+    /// milliseconds), compiled (a cached binary built by cargo once per file version, for the
+    /// last percent of speed) or instant (evaluated, the reference the others are tested
+    /// against).
+    #[arg(long, value_enum, default_value = "jit")]
     engine: EngineChoice,
     /// Print the scene a --model run uses (to save and edit) and stop.
     #[arg(long, requires = "model")]
@@ -188,6 +190,7 @@ impl RunArgs {
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum EngineChoice {
+    Jit,
     Compiled,
     Instant,
 }
@@ -279,7 +282,7 @@ fn run_command(
         None => {
             let file = ModelFile::from_source(&file_path, source, drawn)?;
             eprint!("{}", file.warnings);
-            let entry = crate::models::file_entry(&file);
+            let entry = crate::models::in_process_entry(&file, args.engine == EngineChoice::Jit)?;
             (entry, file.run.clone(), Some(file))
         }
     };

@@ -80,14 +80,17 @@ pub enum Engine {
     Compiled,
     /// The lowered program evaluated directly (no compilation).
     Instant,
+    /// The lowered program compiled to machine code in process.
+    Jit,
 }
 
 impl Engine {
-    /// Its name in messages (`compiled`, `instant`).
+    /// Its name in messages (`compiled`, `instant`, `jit`).
     pub fn label(self) -> &'static str {
         match self {
             Engine::Compiled => "compiled",
             Engine::Instant => "instant",
+            Engine::Jit => "jit",
         }
     }
 }

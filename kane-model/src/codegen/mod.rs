@@ -18,6 +18,8 @@
 pub mod event;
 pub mod fault;
 pub mod ir;
+#[cfg(feature = "jit")]
+pub mod jit;
 pub mod linearize;
 mod lower;
 mod meta;

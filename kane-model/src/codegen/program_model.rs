@@ -47,6 +47,12 @@ impl ProgramModel {
         self.info
     }
 
+    /// Whether output `k` is an orientation written as a quaternion (its section gives the
+    /// direction cosine matrix).
+    pub fn is_quaternion(&self, k: usize) -> bool {
+        self.quaternion[k]
+    }
+
     /// The lowered program it evaluates.
     pub fn program(&self) -> &Program {
         &self.program

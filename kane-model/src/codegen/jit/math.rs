@@ -1,0 +1,93 @@
+//! The math functions machine code calls: each the Rust function the evaluator uses, behind the
+//! C calling convention, so both engines compute the same values.
+
+use crate::expr::Func;
+
+extern "C" fn sin(x: f64) -> f64 {
+    x.sin()
+}
+extern "C" fn cos(x: f64) -> f64 {
+    x.cos()
+}
+extern "C" fn tan(x: f64) -> f64 {
+    x.tan()
+}
+extern "C" fn asin(x: f64) -> f64 {
+    x.asin()
+}
+extern "C" fn acos(x: f64) -> f64 {
+    x.acos()
+}
+extern "C" fn atan(x: f64) -> f64 {
+    x.atan()
+}
+extern "C" fn exp(x: f64) -> f64 {
+    x.exp()
+}
+extern "C" fn ln(x: f64) -> f64 {
+    x.ln()
+}
+extern "C" fn sign(x: f64) -> f64 {
+    crate::runtime::sign(x)
+}
+extern "C" fn sinh(x: f64) -> f64 {
+    x.sinh()
+}
+extern "C" fn cosh(x: f64) -> f64 {
+    x.cosh()
+}
+extern "C" fn tanh(x: f64) -> f64 {
+    x.tanh()
+}
+extern "C" fn powf(x: f64, y: f64) -> f64 {
+    x.powf(y)
+}
+extern "C" fn atan2(y: f64, x: f64) -> f64 {
+    y.atan2(x)
+}
+
+/// A function of one or two `f64`s that machine code calls by address.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Callee {
+    /// Its symbol in the compiled module.
+    pub name: &'static str,
+    /// Its address.
+    pub address: *const u8,
+    /// How many `f64` arguments it takes.
+    pub arity: usize,
+}
+
+/// The callee computing `f`; None for a function compiled inline (`abs`).
+pub(super) fn unary(f: Func) -> Option<Callee> {
+    let (name, function): (&'static str, extern "C" fn(f64) -> f64) = match f {
+        Func::Sin => ("kane_sin", sin),
+        Func::Cos => ("kane_cos", cos),
+        Func::Tan => ("kane_tan", tan),
+        Func::Asin => ("kane_asin", asin),
+        Func::Acos => ("kane_acos", acos),
+        Func::Atan => ("kane_atan", atan),
+        Func::Exp => ("kane_exp", exp),
+        Func::Ln => ("kane_ln", ln),
+        Func::Sign => ("kane_sign", sign),
+        Func::Sinh => ("kane_sinh", sinh),
+        Func::Cosh => ("kane_cosh", cosh),
+        Func::Tanh => ("kane_tanh", tanh),
+        Func::Abs => return None,
+    };
+    Some(Callee { name, address: function as *const u8, arity: 1 })
+}
+
+/// `x ^ y`.
+pub(super) fn powf_callee() -> Callee {
+    Callee { name: "kane_powf", address: powf as extern "C" fn(f64, f64) -> f64 as *const u8, arity: 2 }
+}
+
+/// `atan2(y, x)`.
+pub(super) fn atan2_callee() -> Callee {
+    Callee { name: "kane_atan2", address: atan2 as extern "C" fn(f64, f64) -> f64 as *const u8, arity: 2 }
+}
+
+/// Every callee, for the module's symbol table.
+pub(super) fn all() -> Vec<Callee> {
+    Func::ALL.iter().filter_map(|&f| unary(f)).chain([powf_callee(), atan2_callee()]).collect()
+}

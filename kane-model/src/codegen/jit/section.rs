@@ -1,0 +1,290 @@
+//! One section in machine code: in comes a [`Section`]; out goes a [`CompiledSection`], a
+//! native function compiled in process by Cranelift that performs the section's operations in
+//! the evaluator's order (no reassociation, no fused multiply-add), so its results equal the
+//! evaluator's.
+
+use std::collections::HashMap;
+
+use cranelift_codegen::ir::{self, types, AbiParam, InstBuilder, MemFlagsData, UserFuncName, Value};
+use cranelift_codegen::settings::{self, Configurable};
+use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
+use cranelift_jit::{JITBuilder, JITModule};
+use cranelift_module::{default_libcall_names, Linkage, Module};
+
+use super::math::{self, Callee};
+use super::JitError;
+use crate::codegen::ir::{Input, Op, Section};
+
+/// What a compiled section reads: time and five arrays.
+#[derive(Clone, Copy, Debug)]
+pub struct Reads<'a> {
+    /// Time.
+    pub t: f64,
+    /// The state.
+    pub y: &'a [f64],
+    /// Parameters.
+    pub params: &'a [f64],
+    /// Parameter-only quantities.
+    pub constants: &'a [f64],
+    /// Speed rates `u'`.
+    pub rates: &'a [f64],
+    /// Positional values (event sections' names).
+    pub slots: &'a [f64],
+}
+
+/// The arrays a section reads, in the order of the native function's pointer arguments.
+const ARRAYS: usize = 5;
+
+type NativeFn =
+    unsafe extern "C" fn(f64, *const f64, *const f64, *const f64, *const f64, *const f64, *mut f64);
+
+/// A section compiled to machine code, callable from any thread.
+pub struct CompiledSection {
+    module: Option<JITModule>,
+    function: NativeFn,
+    /// The least length of each array the code reads (one past the largest index).
+    lengths: [usize; ARRAYS],
+    results: usize,
+}
+
+// SAFETY: after `finalize_definitions` the module is never touched again but to free its
+// memory on drop; the code it holds is immutable and reads only its arguments.
+unsafe impl Send for CompiledSection {}
+// SAFETY: as above; calling the code mutates nothing but the caller's `out`.
+unsafe impl Sync for CompiledSection {}
+
+impl Drop for CompiledSection {
+    fn drop(&mut self) {
+        if let Some(module) = self.module.take() {
+            // SAFETY: `function` points into this module's memory and is dropped with it; no
+            // call can be running, since a call borrows `self`.
+            unsafe { module.free_memory() }
+        }
+    }
+}
+
+impl std::fmt::Debug for CompiledSection {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("CompiledSection").field("results", &self.results).finish_non_exhaustive()
+    }
+}
+
+impl CompiledSection {
+    /// Compiles `section` for this machine.
+    pub fn new(section: &Section) -> Result<CompiledSection, JitError> {
+        let mut module = new_module()?;
+        let pointer = module.target_config().pointer_type();
+        let mut ctx = module.make_context();
+        ctx.func.signature.params.push(AbiParam::new(types::F64));
+        for _ in 0..=ARRAYS {
+            ctx.func.signature.params.push(AbiParam::new(pointer));
+        }
+        let id = module
+            .declare_function("section", Linkage::Local, &ctx.func.signature)
+            .map_err(|e| JitError::Compile(e.to_string()))?;
+        ctx.func.name = UserFuncName::user(0, id.as_u32());
+        let mut fctx = FunctionBuilderContext::new();
+        let lengths = {
+            let mut b = FunctionBuilder::new(&mut ctx.func, &mut fctx);
+            let mut body = Body::new(&mut module, &mut b);
+            let lengths = body.emit(section)?;
+            b.finalize(module.target_config());
+            lengths
+        };
+        module.define_function(id, &mut ctx).map_err(|e| JitError::Compile(format!("{e:?}")))?;
+        module.clear_context(&mut ctx);
+        module.finalize_definitions().map_err(|e| JitError::Compile(e.to_string()))?;
+        let code = module.get_finalized_function(id);
+        // SAFETY: `code` was compiled from a signature of exactly these parameters.
+        let function = unsafe { std::mem::transmute::<*const u8, NativeFn>(code) };
+        Ok(CompiledSection { module: Some(module), function, lengths, results: section.results.len() })
+    }
+
+    /// Number of results.
+    pub fn results(&self) -> usize {
+        self.results
+    }
+
+    /// Runs the section on `reads`, its results into `out`.
+    ///
+    /// # Panics
+    /// When an array is shorter than the section reads or `out` shorter than its results.
+    pub fn run(&self, reads: &Reads<'_>, out: &mut [f64]) {
+        let arrays = [reads.y, reads.params, reads.constants, reads.rates, reads.slots];
+        for (array, &least) in arrays.iter().zip(&self.lengths) {
+            assert!(
+                array.len() >= least,
+                "a compiled section reads {least} values of an array of {}",
+                array.len()
+            );
+        }
+        assert!(out.len() >= self.results, "a compiled section writes {} results", self.results);
+        let [y, params, constants, rates, slots] = arrays.map(<[f64]>::as_ptr);
+        // SAFETY: every index the code reads is below the lengths checked above, and it writes
+        // `out[..results]` only.
+        unsafe { (self.function)(reads.t, y, params, constants, rates, slots, out.as_mut_ptr()) }
+    }
+}
+
+/// A module for this machine, the math callees in its symbol table.
+fn new_module() -> Result<JITModule, JitError> {
+    let mut flags = settings::builder();
+    let set = |flags: &mut settings::Builder, name: &str, value: &str| {
+        flags.set(name, value).map_err(|e| JitError::Compile(e.to_string()))
+    };
+    set(&mut flags, "use_colocated_libcalls", "false")?;
+    set(&mut flags, "is_pic", "false")?;
+    set(&mut flags, "opt_level", "speed")?;
+    let isa = cranelift_native::builder()
+        .map_err(|e| JitError::UnsupportedHost(e.to_string()))?
+        .finish(settings::Flags::new(flags))
+        .map_err(|e| JitError::UnsupportedHost(e.to_string()))?;
+    let mut builder = JITBuilder::with_isa(isa, default_libcall_names());
+    for callee in math::all() {
+        builder.symbol(callee.name, callee.address);
+    }
+    Ok(JITModule::new(builder))
+}
+
+/// The function body being emitted: its block's parameters and the callees declared so far.
+struct Body<'m, 'b, 'f> {
+    module: &'m mut JITModule,
+    b: &'b mut FunctionBuilder<'f>,
+    callees: HashMap<&'static str, ir::FuncRef>,
+}
+
+impl<'m, 'b, 'f> Body<'m, 'b, 'f> {
+    fn new(module: &'m mut JITModule, b: &'b mut FunctionBuilder<'f>) -> Self {
+        Body { module, b, callees: HashMap::new() }
+    }
+
+    /// Emits `section` as the whole function; returns the least length of each array it reads.
+    fn emit(&mut self, section: &Section) -> Result<[usize; ARRAYS], JitError> {
+        let block = self.b.create_block();
+        self.b.append_block_params_for_function_params(block);
+        self.b.switch_to_block(block);
+        self.b.seal_block(block);
+        let params = self.b.block_params(block).to_vec();
+        let (t, arrays, out) = (params[0], &params[1..=ARRAYS], params[ARRAYS + 1]);
+        let mut lengths = [0; ARRAYS];
+        let mut values: Vec<Value> = Vec::with_capacity(section.ops.len());
+        for op in &section.ops {
+            let value = match *op {
+                Op::Input(k) => {
+                    let input = section.inputs[k as usize];
+                    match array_of(input) {
+                        None => t,
+                        Some((array, index)) => {
+                            lengths[array] = lengths[array].max(index + 1);
+                            self.load(arrays[array], index)?
+                        }
+                    }
+                }
+                ref op => self.operation(op, &values)?,
+            };
+            values.push(value);
+        }
+        for (k, &v) in section.results.iter().enumerate() {
+            self.b.ins().store(MemFlagsData::trusted(), values[v as usize], out, offset(k)?);
+        }
+        self.b.ins().return_(&[]);
+        Ok(lengths)
+    }
+
+    /// `array[index]`.
+    fn load(&mut self, array: Value, index: usize) -> Result<Value, JitError> {
+        Ok(self.b.ins().load(types::F64, MemFlagsData::trusted().with_readonly(), array, offset(index)?))
+    }
+
+    /// The value of an arithmetic instruction, its operands among `values`.
+    fn operation(&mut self, op: &Op, values: &[Value]) -> Result<Value, JitError> {
+        let v = |i: u32| values[i as usize];
+        Ok(match *op {
+            Op::Input(_) => unreachable!("inputs are loaded by `emit`"),
+            Op::Const(c) => self.b.ins().f64const(c),
+            Op::Add(a, b) => self.b.ins().fadd(v(a), v(b)),
+            Op::Sub(a, b) => self.b.ins().fsub(v(a), v(b)),
+            Op::Mul(a, b) => self.b.ins().fmul(v(a), v(b)),
+            Op::Div(a, b) => self.b.ins().fdiv(v(a), v(b)),
+            Op::Neg(a) => self.b.ins().fneg(v(a)),
+            Op::Sqrt(a) => self.b.ins().sqrt(v(a)),
+            Op::Powi(a, k) => self.powi(v(a), k),
+            Op::Powf(a, b) => self.call(math::powf_callee(), &[v(a), v(b)])?,
+            Op::Atan2(a, b) => self.call(math::atan2_callee(), &[v(a), v(b)])?,
+            Op::Func(f, a) => match math::unary(f) {
+                Some(callee) => self.call(callee, &[v(a)])?,
+                None => self.b.ins().fabs(v(a)),
+            },
+        })
+    }
+
+    /// `x ^ k` by the multiplications of the runtime's `powi` (binary powering, then one
+    /// division for a negative power), so the value is the same to the last bit.
+    fn powi(&mut self, x: Value, k: i32) -> Value {
+        let mut result: Option<Value> = None;
+        let (mut base, mut n) = (x, k.unsigned_abs());
+        loop {
+            if n & 1 == 1 {
+                result = Some(match result {
+                    None => base,
+                    Some(r) => self.b.ins().fmul(r, base),
+                });
+            }
+            n /= 2;
+            if n == 0 {
+                break;
+            }
+            base = self.b.ins().fmul(base, base);
+        }
+        let value = result.unwrap_or_else(|| self.b.ins().f64const(1.0));
+        if k < 0 {
+            let one = self.b.ins().f64const(1.0);
+            self.b.ins().fdiv(one, value)
+        } else {
+            value
+        }
+    }
+
+    /// A call of `callee` on `args`.
+    fn call(&mut self, callee: Callee, args: &[Value]) -> Result<Value, JitError> {
+        let func = match self.callees.get(callee.name) {
+            Some(&f) => f,
+            None => {
+                let mut signature = self.module.make_signature();
+                for _ in 0..callee.arity {
+                    signature.params.push(AbiParam::new(types::F64));
+                }
+                signature.returns.push(AbiParam::new(types::F64));
+                let id = self
+                    .module
+                    .declare_function(callee.name, Linkage::Import, &signature)
+                    .map_err(|e| JitError::Compile(e.to_string()))?;
+                let f = self.module.declare_func_in_func(id, self.b.func);
+                self.callees.insert(callee.name, f);
+                f
+            }
+        };
+        let call = self.b.ins().call(func, args);
+        Ok(self.b.inst_results(call)[0])
+    }
+}
+
+/// Which array an input is read from and at what index; None for time.
+fn array_of(input: Input) -> Option<(usize, usize)> {
+    match input {
+        Input::Time => None,
+        Input::State(i) => Some((0, i)),
+        Input::Param(i) => Some((1, i)),
+        Input::ParamConstant(i) => Some((2, i)),
+        Input::Rate(i) => Some((3, i)),
+        Input::Slot(i) => Some((4, i)),
+    }
+}
+
+/// The byte offset of `f64` number `index`.
+fn offset(index: usize) -> Result<i32, JitError> {
+    index
+        .checked_mul(8)
+        .and_then(|b| i32::try_from(b).ok())
+        .ok_or_else(|| JitError::Compile(format!("index {index} is past what one section can address")))
+}
