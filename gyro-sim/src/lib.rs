@@ -54,7 +54,8 @@ mod study;
 // The front door: everything outside the crate names these, and nothing else.
 pub use cli::{main_with, CompiledModel};
 pub use models::{
-    content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, ModelFile, ModelFileError, Registry,
+    content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, InstantSystem, JitSystem, ModelFile,
+    ModelFileError, Registry,
 };
 pub use ode::test_problems;
 pub use ode::{

@@ -29,6 +29,7 @@ impl<'a> JitSystem<'a> {
 }
 
 impl System for JitSystem<'_> {
+    const UNROLL_ANY_DIM: bool = true;
     fn dim(&self) -> usize {
         self.model.info().state_names.len()
     }

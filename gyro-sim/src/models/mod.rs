@@ -17,8 +17,8 @@ mod registry;
 
 pub use builtin::{gimbal_gyroscope, heavy_top};
 pub use compiled::{cache_dir, content_hash, ensure_binary, not_a_program, registry_key, CompileError};
-pub use instant::file_entry;
-pub use jit::jit_file_entry;
+pub use instant::{file_entry, InstantSystem};
+pub use jit::{jit_file_entry, JitSystem};
 pub use model_file::{source_with, FileRun, ModelFile, ModelFileError};
 pub use registry::Registry;
 

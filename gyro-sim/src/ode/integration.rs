@@ -73,7 +73,7 @@ impl<'a, S: System + ?Sized> Integration<'a, S> {
     /// at each; `ControlFlow::Break` ends the run there, which is no error
     /// ([`StopReason::OutputBreak`]). A Runge-Kutta method's steps are unrolled for the
     /// system's [`System::FIXED_DIM`] or [`System::REDUCED_DIM`] (1 to 8) when its dimension
-    /// is that one.
+    /// is that one, or for any dimension 1 to 8 when [`System::UNROLL_ANY_DIM`].
     pub fn run(
         self,
         times: &[f64],
@@ -104,6 +104,8 @@ impl<'a, S: System + ?Sized> Integration<'a, S> {
             unrolled_for!(S::FIXED_DIM)
         } else if dim == S::REDUCED_DIM {
             unrolled_for!(S::REDUCED_DIM)
+        } else if S::UNROLL_ANY_DIM {
+            unrolled_for!(dim)
         } else {
             start.run_erk::<0>(times, unwatched, out)
         }

@@ -53,6 +53,10 @@ pub trait System {
     /// state count without its cyclic coordinates, which a run that reads none of them leaves
     /// out ([`crate::Reduced`]).
     const REDUCED_DIM: usize = 0;
+    /// Whether steps are unrolled for whatever dimension 1 to 8 a value has (found at run
+    /// time), for a type whose dimension is known only then (a JIT-compiled model); false by
+    /// default, so no unrolled code is compiled for the type.
+    const UNROLL_ANY_DIM: bool = false;
     /// Number of states.
     fn dim(&self) -> usize;
     /// Writes `f(t, y)` into `dy`.

@@ -46,6 +46,7 @@ impl<'a, S: System + ?Sized> UnitNorm<'a, S> {
 impl<S: System + ?Sized> System for UnitNorm<'_, S> {
     const FIXED_DIM: usize = S::FIXED_DIM;
     const REDUCED_DIM: usize = S::REDUCED_DIM;
+    const UNROLL_ANY_DIM: bool = S::UNROLL_ANY_DIM;
     fn dim(&self) -> usize {
         self.inner.dim()
     }

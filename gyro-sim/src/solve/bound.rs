@@ -104,6 +104,7 @@ impl<S: System> System for Reduced<'_, S> {
     // another number of states takes general steps.
     const FIXED_DIM: usize = S::FIXED_DIM;
     const REDUCED_DIM: usize = S::REDUCED_DIM;
+    const UNROLL_ANY_DIM: bool = S::UNROLL_ANY_DIM;
     fn dim(&self) -> usize {
         self.keep.len()
     }

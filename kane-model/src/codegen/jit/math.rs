@@ -39,6 +39,18 @@ extern "C" fn cosh(x: f64) -> f64 {
 extern "C" fn tanh(x: f64) -> f64 {
     x.tanh()
 }
+/// `sin(x)` and `cos(x)`, returned in two registers.
+#[repr(C)]
+pub(super) struct SinCos {
+    sin: f64,
+    cos: f64,
+}
+
+extern "C" fn sin_cos(x: f64) -> SinCos {
+    let (sin, cos) = x.sin_cos();
+    SinCos { sin, cos }
+}
+
 extern "C" fn powf(x: f64, y: f64) -> f64 {
     x.powf(y)
 }
@@ -55,6 +67,8 @@ pub(super) struct Callee {
     pub address: *const u8,
     /// How many `f64` arguments it takes.
     pub arity: usize,
+    /// How many `f64` results it returns.
+    pub results: usize,
 }
 
 /// The callee computing `f`; None for a function compiled inline (`abs`).
@@ -74,20 +88,41 @@ pub(super) fn unary(f: Func) -> Option<Callee> {
         Func::Tanh => ("kane_tanh", tanh),
         Func::Abs => return None,
     };
-    Some(Callee { name, address: function as *const u8, arity: 1 })
+    Some(Callee { name, address: function as *const u8, arity: 1, results: 1 })
 }
 
 /// `x ^ y`.
 pub(super) fn powf_callee() -> Callee {
-    Callee { name: "kane_powf", address: powf as extern "C" fn(f64, f64) -> f64 as *const u8, arity: 2 }
+    Callee {
+        name: "kane_powf",
+        address: powf as extern "C" fn(f64, f64) -> f64 as *const u8,
+        arity: 2,
+        results: 1,
+    }
 }
 
 /// `atan2(y, x)`.
 pub(super) fn atan2_callee() -> Callee {
-    Callee { name: "kane_atan2", address: atan2 as extern "C" fn(f64, f64) -> f64 as *const u8, arity: 2 }
+    Callee {
+        name: "kane_atan2",
+        address: atan2 as extern "C" fn(f64, f64) -> f64 as *const u8,
+        arity: 2,
+        results: 1,
+    }
+}
+
+/// `sin(x)` and `cos(x)` in one call (two results, `sin` first).
+pub(super) fn sin_cos_callee() -> Callee {
+    Callee {
+        name: "kane_sin_cos",
+        address: sin_cos as extern "C" fn(f64) -> SinCos as *const u8,
+        arity: 1,
+        results: 2,
+    }
 }
 
 /// Every callee, for the module's symbol table.
 pub(super) fn all() -> Vec<Callee> {
-    Func::ALL.iter().filter_map(|&f| unary(f)).chain([powf_callee(), atan2_callee()]).collect()
+    let binary = [powf_callee(), atan2_callee(), sin_cos_callee()];
+    Func::ALL.iter().filter_map(|&f| unary(f)).chain(binary).collect()
 }

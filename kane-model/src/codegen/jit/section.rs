@@ -3,7 +3,7 @@
 //! the evaluator's order (no reassociation, no fused multiply-add), so its results equal the
 //! evaluator's.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use cranelift_codegen::ir::{self, types, AbiParam, InstBuilder, MemFlagsData, UserFuncName, Value};
 use cranelift_codegen::settings::{self, Configurable};
@@ -14,6 +14,7 @@ use cranelift_module::{default_libcall_names, Linkage, Module};
 use super::math::{self, Callee};
 use super::JitError;
 use crate::codegen::ir::{Input, Op, Section};
+use crate::expr::Func;
 
 /// What a compiled section reads: time and five arrays.
 #[derive(Clone, Copy, Debug)]
@@ -151,11 +152,15 @@ struct Body<'m, 'b, 'f> {
     module: &'m mut JITModule,
     b: &'b mut FunctionBuilder<'f>,
     callees: HashMap<&'static str, ir::FuncRef>,
+    /// The operands whose sine and cosine are both taken.
+    paired: HashSet<u32>,
+    /// `(sin, cos)` of a paired operand, once computed.
+    sin_cos: HashMap<u32, (Value, Value)>,
 }
 
 impl<'m, 'b, 'f> Body<'m, 'b, 'f> {
     fn new(module: &'m mut JITModule, b: &'b mut FunctionBuilder<'f>) -> Self {
-        Body { module, b, callees: HashMap::new() }
+        Body { module, b, callees: HashMap::new(), paired: HashSet::new(), sin_cos: HashMap::new() }
     }
 
     /// Emits `section` as the whole function; returns the least length of each array it reads.
@@ -166,6 +171,7 @@ impl<'m, 'b, 'f> Body<'m, 'b, 'f> {
         self.b.seal_block(block);
         let params = self.b.block_params(block).to_vec();
         let (t, arrays, out) = (params[0], &params[1..=ARRAYS], params[ARRAYS + 1]);
+        self.paired = paired_operands(section);
         let mut lengths = [0; ARRAYS];
         let mut values: Vec<Value> = Vec::with_capacity(section.ops.len());
         for op in &section.ops {
@@ -180,7 +186,7 @@ impl<'m, 'b, 'f> Body<'m, 'b, 'f> {
                         }
                     }
                 }
-                ref op => self.operation(op, &values)?,
+                ref op => self.operation(op, &section.ops, &values)?,
             };
             values.push(value);
         }
@@ -196,8 +202,8 @@ impl<'m, 'b, 'f> Body<'m, 'b, 'f> {
         Ok(self.b.ins().load(types::F64, MemFlagsData::trusted().with_readonly(), array, offset(index)?))
     }
 
-    /// The value of an arithmetic instruction, its operands among `values`.
-    fn operation(&mut self, op: &Op, values: &[Value]) -> Result<Value, JitError> {
+    /// The value of an arithmetic instruction of `ops`, its operands among `values`.
+    fn operation(&mut self, op: &Op, ops: &[Op], values: &[Value]) -> Result<Value, JitError> {
         let v = |i: u32| values[i as usize];
         Ok(match *op {
             Op::Input(_) => unreachable!("inputs are loaded by `emit`"),
@@ -205,12 +211,26 @@ impl<'m, 'b, 'f> Body<'m, 'b, 'f> {
             Op::Add(a, b) => self.b.ins().fadd(v(a), v(b)),
             Op::Sub(a, b) => self.b.ins().fsub(v(a), v(b)),
             Op::Mul(a, b) => self.b.ins().fmul(v(a), v(b)),
-            Op::Div(a, b) => self.b.ins().fdiv(v(a), v(b)),
+            Op::Div(a, b) => match exact_reciprocal(ops[b as usize]) {
+                Some(r) => {
+                    let r = self.b.ins().f64const(r);
+                    self.b.ins().fmul(v(a), r)
+                }
+                None => self.b.ins().fdiv(v(a), v(b)),
+            },
             Op::Neg(a) => self.b.ins().fneg(v(a)),
             Op::Sqrt(a) => self.b.ins().sqrt(v(a)),
             Op::Powi(a, k) => self.powi(v(a), k),
             Op::Powf(a, b) => self.call(math::powf_callee(), &[v(a), v(b)])?,
             Op::Atan2(a, b) => self.call(math::atan2_callee(), &[v(a), v(b)])?,
+            Op::Func(f @ (Func::Sin | Func::Cos), a) if self.paired.contains(&a) => {
+                let (sin, cos) = self.sin_cos(a, v(a))?;
+                if f == Func::Sin {
+                    sin
+                } else {
+                    cos
+                }
+            }
             Op::Func(f, a) => match math::unary(f) {
                 Some(callee) => self.call(callee, &[v(a)])?,
                 None => self.b.ins().fabs(v(a)),
@@ -245,8 +265,24 @@ impl<'m, 'b, 'f> Body<'m, 'b, 'f> {
         }
     }
 
-    /// A call of `callee` on `args`.
+    /// `(sin, cos)` of operand `a` (value `x`), by one call the first time.
+    fn sin_cos(&mut self, a: u32, x: Value) -> Result<(Value, Value), JitError> {
+        if let Some(&pair) = self.sin_cos.get(&a) {
+            return Ok(pair);
+        }
+        let results = self.call_all(math::sin_cos_callee(), &[x])?;
+        let pair = (results[0], results[1]);
+        self.sin_cos.insert(a, pair);
+        Ok(pair)
+    }
+
+    /// A call of `callee` on `args`: its first result.
     fn call(&mut self, callee: Callee, args: &[Value]) -> Result<Value, JitError> {
+        Ok(self.call_all(callee, args)?[0])
+    }
+
+    /// A call of `callee` on `args`: its results.
+    fn call_all(&mut self, callee: Callee, args: &[Value]) -> Result<Vec<Value>, JitError> {
         let func = match self.callees.get(callee.name) {
             Some(&f) => f,
             None => {
@@ -254,7 +290,9 @@ impl<'m, 'b, 'f> Body<'m, 'b, 'f> {
                 for _ in 0..callee.arity {
                     signature.params.push(AbiParam::new(types::F64));
                 }
-                signature.returns.push(AbiParam::new(types::F64));
+                for _ in 0..callee.results {
+                    signature.returns.push(AbiParam::new(types::F64));
+                }
                 let id = self
                     .module
                     .declare_function(callee.name, Linkage::Import, &signature)
@@ -265,8 +303,30 @@ impl<'m, 'b, 'f> Body<'m, 'b, 'f> {
             }
         };
         let call = self.b.ins().call(func, args);
-        Ok(self.b.inst_results(call)[0])
+        Ok(self.b.inst_results(call).to_vec())
     }
+}
+
+/// `1 / c` for a constant `c` whose reciprocal is exact (a power of two, its reciprocal
+/// normal), so dividing by `c` and multiplying by it give the same bits.
+fn exact_reciprocal(op: Op) -> Option<f64> {
+    let Op::Const(c) = op else { return None };
+    let r = 1.0 / c;
+    let power_of_two = c.is_normal() && c.to_bits() & ((1u64 << 52) - 1) == 0;
+    (power_of_two && r.is_normal()).then_some(r)
+}
+
+/// The operands of `section` whose sine and cosine are both taken (computed by one call).
+fn paired_operands(section: &Section) -> HashSet<u32> {
+    let (mut sines, mut cosines) = (HashSet::new(), HashSet::new());
+    for op in &section.ops {
+        match *op {
+            Op::Func(Func::Sin, a) => sines.insert(a),
+            Op::Func(Func::Cos, a) => cosines.insert(a),
+            _ => false,
+        };
+    }
+    sines.intersection(&cosines).copied().collect()
 }
 
 /// Which array an input is read from and at what index; None for time.
