@@ -567,16 +567,8 @@ fn the_compiled_path_builds_once_per_file_version() {
     let model = dir.join("my_gimbal.al");
     std::fs::copy(VARIANT, &model).unwrap();
     let out = dir.join("out");
-    let args = [
-        "--model",
-        model.to_str().unwrap(),
-        "--engine",
-        "compiled",
-        "--t-final",
-        "1",
-        "--out",
-        out.to_str().unwrap(),
-    ];
+    let base = ["--model", model.to_str().unwrap(), "--t-final", "1", "--out", out.to_str().unwrap()];
+    let args = [&base[..], &["--engine", "compiled"]].concat();
     let first = gyro_sim(&args, &dir);
     assert!(first.status.success(), "{}", text(&first));
     assert!(text(&first).contains("compiling the model"), "{}", text(&first));
@@ -585,13 +577,13 @@ fn the_compiled_path_builds_once_per_file_version() {
     let compiled_view = view_data(&out);
     let again = gyro_sim(&args, &dir);
     assert!(again.status.success() && !text(&again).contains("compiling"), "{}", text(&again));
-    let instant = gyro_sim(&[&args[..], &["--engine", "instant"]].concat(), &dir);
+    let instant = gyro_sim(&[&base[..], &["--engine", "instant"]].concat(), &dir);
     assert!(instant.status.success(), "{}", text(&instant));
     let instant_rows = rows(&out);
     let worst = compiled_rows.iter().flatten().zip(instant_rows.iter().flatten());
     let worst = worst.map(|(x, y)| (x - y).abs() / x.abs().max(1.0)).fold(0.0, f64::max);
     assert!(worst < 1e-12, "compiled vs instant {worst:e}");
-    let jit = gyro_sim(&[&args[..], &["--engine", "jit"]].concat(), &dir);
+    let jit = gyro_sim(&[&base[..], &["--engine", "jit"]].concat(), &dir);
     assert!(jit.status.success() && text(&jit).contains("ran jit"), "{}", text(&jit));
     let worst = compiled_rows.iter().flatten().zip(rows(&out).into_iter().flatten());
     let worst = worst.map(|(x, y)| (x - y).abs() / x.abs().max(1.0)).fold(0.0, f64::max);
@@ -613,7 +605,7 @@ fn the_compiled_path_builds_once_per_file_version() {
     assert!(input_edit.status.success() && !text(&input_edit).contains("compiling"), "{}", text(&input_edit));
     assert!(text(&input_edit).contains("ran compiled"), "{}", text(&input_edit));
     let compiled_rows = rows(&out);
-    assert!(gyro_sim(&[&args[..], &["--engine", "instant"]].concat(), &dir).status.success());
+    assert!(gyro_sim(&[&base[..], &["--engine", "instant"]].concat(), &dir).status.success());
     let instant_after = rows(&out);
     let worst = compiled_rows.iter().flatten().zip(instant_after.iter().flatten());
     let worst = worst.map(|(x, y)| (x - y).abs() / x.abs().max(1.0)).fold(0.0, f64::max);
