@@ -253,3 +253,39 @@ fn a_mass_declared_by_its_use_without_a_value_is_a_warning_naming_a_near_name() 
     assert!(warnings.contains("`MROD` (declared by its use here) has no INPUT value"), "{warnings}");
     assert!(checked.warnings.diagnostics.iter().all(|d| d.severity == Severity::Warning));
 }
+
+/// A planar chain of `n` point masses on massless rods, each link's angle relative to the last.
+fn particle_chain(n: usize) -> String {
+    let list = |f: &dyn Fn(usize) -> String| (1..=n).map(f).collect::<Vec<_>>().join(", ");
+    let mut text = format!(
+        "NEWTONIAN N\nFRAMES {}\nPOINTS O\nPARTICLES {}\nCONSTANTS L{{{n}}}, M{{{n}}}, G\nVARIABLES Q{{{n}}}', U{{{n}}}'\n",
+        list(&|i| format!("F{i}")),
+        list(&|i| format!("P{i}")),
+    );
+    for i in 1..=n {
+        let parent = if i == 1 { "N".to_string() } else { format!("F{}", i - 1) };
+        text.push_str(&format!("SIMPROT({parent}, F{i}, 3, Q{i})\nQ{i}' = U{i}\n"));
+    }
+    text.push_str("V_O_N> = 0>\n");
+    for i in 1..=n {
+        let from = if i == 1 { "O".to_string() } else { format!("P{}", i - 1) };
+        text.push_str(&format!("P_{from}_P{i}> = L{i}*F{i}1>\nV2PTS(N, F{i}, {from}, P{i})\n"));
+    }
+    text.push_str(&format!("MASS {}\n", list(&|i| format!("P{i} = M{i}"))));
+    text.push_str("GRAVITY(-G*N2>)\nZERO = FR() + FRSTAR()\nKANE()\n");
+    text
+}
+
+#[test]
+fn check_leaves_a_large_trees_mass_matrix_unformed_as_gen_does() {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("check_large_tree");
+    std::fs::create_dir_all(&dir).unwrap();
+    let (small, large) = (dir.join("chain3.al"), dir.join("chain120.al"));
+    std::fs::write(&small, particle_chain(3)).unwrap();
+    std::fs::write(&large, particle_chain(120)).unwrap();
+    let (ok, out, err) = kane(&["check", small.to_str().unwrap()]);
+    assert!(ok && out.contains("M 3x3 in ") && out.contains("operations, f in"), "{out}{err}");
+    let (ok, out, err) = kane(&["check", large.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    assert!(out.contains("120 speeds") && out.contains("M 120x120 not formed"), "{out}");
+}

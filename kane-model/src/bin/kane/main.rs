@@ -193,7 +193,9 @@ fn run(command: Command) -> Result<(), String> {
 /// `kane check`: the model loads and passes the checks (warnings printed); sizes of its equations.
 fn check(file: PathBuf) -> Result<(), String> {
     let src = read(&file)?;
-    let checked = lang::check(&file.display().to_string(), &src).map_err(|r| r.render())?;
+    // A large tree's M and f are left unformed, as `gen` leaves them: its order-n form needs
+    // neither, and forming them only to print their size costs O(n^3).
+    let checked = lang::check_for_generation(&file.display().to_string(), &src).map_err(|r| r.render())?;
     eprint!("{}", checked.warnings.render());
     let m = checked.model;
     let bookkeeping = lang::bookkeeping_summary(&m, &src);
@@ -213,7 +215,7 @@ fn check(file: PathBuf) -> Result<(), String> {
                 e.speeds.len(),
                 names(&m, &e.speeds).join(", "),
                 m.model.bodies().len(),
-                e.op_counts(&m.model.ar),
+                equation_sizes(e, &m.model.ar),
             );
         }
         None => outln!("{}: ok: no KANE() in this file", file.display()),
@@ -222,6 +224,16 @@ fn check(file: PathBuf) -> Result<(), String> {
         outln!("{}: bookkeeping {b}", file.display());
     }
     Ok(())
+}
+
+/// The sizes of Kane's `M` and `f` as `kane check` prints them: their operations when formed,
+/// else their order and why they were not formed.
+fn equation_sizes(e: &kane_model::mechanics::KaneEquations, ar: &kane_model::expr::Arena) -> String {
+    if e.formed {
+        return e.op_counts(ar).to_string();
+    }
+    let n = e.speeds.len();
+    format!("M {n}x{n} not formed (a tree this large is generated in its order-n form, which needs neither M nor f; `kane eoms` forms them)")
 }
 
 /// `kane eoms`: the equations of motion, simplified and collected (or in named intermediates),
