@@ -12,7 +12,7 @@
 //! The stages are modules: [`lower`] turns the spec into one [`ir::Program`] (SSA sections for
 //! `param_constants`, `rhs` with `M u' = f` solved inside it, and each output); `print` spells
 //! that program in Rust; [`taylor`] turns `rhs` into Taylor-coefficient recurrences, printed
-//! beside it.
+//! beside it; `jit` (feature `jit`) compiles the same sections to machine code in process.
 //! The same spec gives byte-identical code.
 
 pub mod event;
