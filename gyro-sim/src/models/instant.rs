@@ -10,7 +10,7 @@ use kane_model::runtime::ModelInfo;
 
 use super::model_file::ModelFile;
 use crate::ode::{System, TaylorWork};
-use crate::problem::{Engine, MechanicsSource, ModelEntry, ProgramSource};
+use crate::problem::{Engine, ModelEntry, ProgramSource};
 use crate::solve::{solve_bound, BoundModel};
 
 /// A program model with its parameters bound.
@@ -55,9 +55,7 @@ impl BoundModel for InstantSystem<'_> {
 
 /// The registry entry running the model file `file` on the instant path, its mechanics known.
 pub fn file_entry(file: &ModelFile) -> ModelEntry {
-    let entry =
-        instant_entry(file.program.clone()).with_mechanics(MechanicsSource::ready(file.model.clone()));
-    ModelEntry { drawing: file.drawing.clone(), ..entry }
+    file.dress(instant_entry(file.program.clone()))
 }
 
 /// The registry entry running `model` on the instant path.

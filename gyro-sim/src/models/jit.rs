@@ -10,7 +10,7 @@ use kane_model::runtime::ModelInfo;
 
 use super::model_file::ModelFile;
 use crate::ode::{System, TaylorWork};
-use crate::problem::{Engine, MechanicsSource, ModelEntry, ProgramSource};
+use crate::problem::{Engine, ModelEntry, ProgramSource};
 use crate::solve::{solve_bound, BoundModel};
 
 /// A JIT-compiled model with its parameters bound.
@@ -56,8 +56,7 @@ impl BoundModel for JitSystem<'_> {
 
 /// The registry entry running the model file `file` on the JIT engine, its mechanics known.
 pub fn jit_file_entry(file: &ModelFile) -> Result<ModelEntry, JitError> {
-    let entry = jit_entry(file.program.clone())?.with_mechanics(MechanicsSource::ready(file.model.clone()));
-    Ok(ModelEntry { drawing: file.drawing.clone(), ..entry })
+    Ok(file.dress(jit_entry(file.program.clone())?))
 }
 
 /// The registry entry running `program` on the JIT engine (its `rhs` compiled now).

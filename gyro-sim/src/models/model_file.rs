@@ -7,6 +7,8 @@ use std::sync::Arc;
 
 use kane_model::codegen::ProgramModel;
 use kane_model::mechanics::Model;
+
+use crate::problem::{MechanicsSource, ModelEntry};
 use kane_model::spec::Drawing;
 use thiserror::Error;
 
@@ -108,6 +110,12 @@ impl ModelFile {
             }
             other => other,
         }
+    }
+
+    /// `entry` (an engine's entry for this file's program) with the file's mechanics and drawing.
+    pub fn dress(&self, entry: ModelEntry) -> ModelEntry {
+        let entry = entry.with_mechanics(MechanicsSource::ready(self.model.clone()));
+        ModelEntry { drawing: self.drawing.clone(), ..entry }
     }
 
     /// The file checked and lowered, with its drawing's outputs when `drawn`.

@@ -5,7 +5,7 @@
 //! written.
 //!
 //! A [`ModelEntry`] is made by the models floor (`ModelEntry::of` in `models/registry.rs`,
-//! `instant_entry` in `models/instant.rs`); its `solve` integrates a [`Problem`] of it.
+//! `instant_entry` in `models/instant.rs`, `jit_entry` in `models/jit.rs`); its `solve` integrates a [`Problem`] of it.
 
 mod event_log;
 mod event_spec;
