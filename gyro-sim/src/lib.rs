@@ -3,7 +3,7 @@
 //! A run goes one way through the stages:
 //!
 //! ```text
-//! scene text --scene--> Scene --resolve (+ models::Registry)--> Problem (carries its ModelEntry)
+//! scene text --scene--> Scene --resolve (+ models::Registry)--> Problem (carries its SharedModel)
 //!   --solve (ode steppers)--> Trajectory --output--> CSV, PNG, events.csv, view.html
 //! ```
 //!
@@ -17,7 +17,7 @@
 //!    values with their units, times, the integrator with its method found by name, the
 //!    `[[events]]`, `[[controls]]` and `[view]` tables) or a `SceneError` at a line and column.
 //! 3. `problem/`: what the stages hand each other: the `Problem` (model units; it carries the
-//!    model's `ModelEntry`, found once in the registry), and what solving gives back: the
+//!    model, a `SharedModel` found once in the registry), and what solving gives back: the
 //!    `Trajectory`, a `SolveError`, rows streamed to a `RowStream`.
 //! 4. `output/`: in comes a `Trajectory`; out go the CSV, the figures, `events.csv` and the
 //!    3-D view in display units, put in place as one set (or the CSV streamed as rows come).
@@ -25,21 +25,26 @@
 //!    `SolveError` explained where the run went wrong (`diagnose`), with an asked accuracy
 //!    reached by refinement (`refine`) and events watched on the dense output (`events`).
 //! 6. `models/`: in come generated models (built in, or a user's crate's) and model files; out
-//!    goes a `Registry` of `ModelEntry`s, each with the solver instantiated for it, on the
-//!    compiled engine (`compiled`: a cached binary for a model file) or the instant one.
+//!    goes a `Registry` of `SharedModel`s, one `SimModel` implementation per engine: compiled
+//!    (`generated`; `compiled`: a cached binary for a model file), JIT (`jit`) and instant
+//!    (`instant`).
 //! 7. `resolve/`: in come a `Scene` and a `Registry`; out goes a `Problem` (units converted, a
 //!    top's `[axle]` made Euler parameters and rates, events bound to the model, values checked
 //!    for plausibility) or a `SceneError`.
 //! 8. `run.rs`: in comes a scene; out go its trajectory and files (resolve, solve, output).
-//! 9. `study/`: many runs: parameter sweeps (`sweep`), members in lock step (`batch`), work
-//!    against precision (`work_precision`).
-//! 10. `serve/`: a scene run in a browser page, its controls as sliders.
-//! 11. `cli/`: the `gyro-sim` command.
+//! 9. `model_run/`: in comes a model file (with a scene, or a scene generated from the file
+//!    and the command line's values); out goes the run made ready: the file's model on the
+//!    engine asked, the scene, the problem resolved once, errors told at their origin.
+//! 10. `study/`: many runs: parameter sweeps (`sweep`), members in lock step (`batch`), work
+//!     against precision (`work_precision`).
+//! 11. `serve/`: a scene run in a browser page, its controls as sliders.
+//! 12. `cli/`: the `gyro-sim` command.
 //!
 //! Every module is private; what the binary, the examples, the benches, the tests and a compiled
 //! model's generated driver use is re-exported here.
 
 mod cli;
+mod model_run;
 mod models;
 mod ode;
 mod output;
@@ -52,10 +57,11 @@ mod solve;
 mod study;
 
 // The front door: everything outside the crate names these, and nothing else.
-pub use cli::{main_with, CompiledModel};
+pub use cli::main_with;
+pub use model_run::CompiledModel;
 pub use models::{
-    content_hash, gimbal_gyroscope, heavy_top, registry_key, FileRun, InstantSystem, JitSystem, ModelFile,
-    ModelFileError, Registry,
+    content_hash, generated, gimbal_gyroscope, heavy_top, registry_key, FileRun, InstantSystem, JitSystem,
+    ModelFile, ModelFileError, Registry,
 };
 pub use ode::test_problems;
 pub use ode::{
@@ -64,7 +70,8 @@ pub use ode::{
 };
 pub use output::{write, write_view, PlotError, SetError, WriteError};
 pub use problem::{
-    Column, Engine, ModelEntry, Pick, Problem, RowError, SolveError, Trajectory, MAX_KEPT_ROWS,
+    Column, Engine, Pick, Problem, RowError, RowStream, SharedModel, SimModel, SolveError, Trajectory,
+    MAX_KEPT_ROWS,
 };
 pub use resolve::{resolve, sleeping_threshold, steady_precession};
 pub use run::{run, run_with, RunError, RunSummary};
@@ -72,5 +79,5 @@ pub use scene::{
     ArrowView, BodyView, IntegratorOverrides, Length, Orientation, PointView, Scene, SceneError, Shape,
     TraceView, ViewError, ViewSpec,
 };
-pub use solve::{solve_bound, BoundModel, ModelSystem, Reduced};
+pub use solve::{solve, solve_bound, BoundModel, ModelSystem, Reduced};
 pub use study::batch::final_states;

@@ -7,7 +7,7 @@ use thiserror::Error;
 
 use crate::models::Registry;
 use crate::output::{self, WriteError, Written};
-use crate::problem::{SolveError, Trajectory};
+use crate::problem::{Problem, SolveError, Trajectory};
 use crate::resolve::resolve;
 use crate::scene::{Scene, SceneError};
 use crate::solve::solve;
@@ -54,18 +54,22 @@ pub fn run(scene: &Scene, out_dir: Option<&Path>) -> Result<RunSummary, RunError
 /// written as they are produced and the trajectory keeps a bounded, thinned set of them (see
 /// `RowStream`); a run that fails after some rows keeps them as `trajectory.partial.csv`.
 pub fn run_with(scene: &Scene, registry: &Registry, out_dir: Option<&Path>) -> Result<RunSummary, RunError> {
-    let problem = resolve(scene, registry)?;
+    run_problem(&resolve(scene, registry)?, out_dir)
+}
+
+/// Runs a resolved problem, written to `out_dir` as [`run_with`] writes it.
+pub fn run_problem(problem: &Problem, out_dir: Option<&Path>) -> Result<RunSummary, RunError> {
     let Some(dir) = out_dir else {
-        return Ok(RunSummary { trajectory: solve(&problem, None)?, written: None });
+        return Ok(RunSummary { trajectory: solve(problem, None)?, written: None });
     };
     if problem.accuracy.is_some() {
         // Refinement compares whole runs in memory; the run chosen is written at the end.
-        let trajectory = solve(&problem, None)?;
+        let trajectory = solve(problem, None)?;
         let written = output::write_set(&trajectory, problem.view.as_ref(), dir)?;
         return Ok(RunSummary { trajectory, written: Some(written) });
     }
-    let set = output::StreamedSet::begin(dir, &crate::solve::columns(&problem))?;
-    match solve(&problem, Some(&set.stream())) {
+    let set = output::StreamedSet::begin(dir, &crate::solve::columns(problem))?;
+    match solve(problem, Some(&set.stream())) {
         Ok(trajectory) => {
             let written = set.finish(&trajectory, problem.view.as_ref())?;
             Ok(RunSummary { trajectory, written: Some(written) })

@@ -173,7 +173,7 @@ fn units_compare_regardless_of_case_and_spacing() {
         let text = format!("model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[parameters]\nY = \"10 {unit}\"\n");
         let scene = Scene::parse("units.toml", &text).unwrap();
         let problem = gyro_sim::resolve(&scene, &registry).unwrap_or_else(|e| panic!("{unit}: {e}"));
-        let y = problem.model.info.param_names.iter().position(|p| *p == "Y").unwrap();
+        let y = problem.model.info().param_names.iter().position(|p| *p == "Y").unwrap();
         assert_eq!(problem.params[y], 10.0, "{unit}");
     }
     let e = error(

@@ -566,6 +566,28 @@ impl gyro_sim::System for Blowup {
     }
 }
 
+impl gyro_sim::SimModel for Blowup {
+    fn info(&self) -> &'static kane_model::runtime::ModelInfo {
+        &BLOWUP
+    }
+    fn engine(&self) -> gyro_sim::Engine {
+        gyro_sim::Engine::Compiled
+    }
+    fn initial_state(&self) -> Vec<f64> {
+        vec![0.0, 0.0]
+    }
+    fn default_params(&self) -> Vec<f64> {
+        Vec::new()
+    }
+    fn solve(
+        &self,
+        problem: &gyro_sim::Problem,
+        rows_to: Option<&gyro_sim::RowStream>,
+    ) -> Result<gyro_sim::Trajectory, gyro_sim::SolveError> {
+        gyro_sim::solve_bound(problem, self, rows_to)
+    }
+}
+
 impl gyro_sim::BoundModel for Blowup {
     fn info(&self) -> &'static kane_model::runtime::ModelInfo {
         &BLOWUP
@@ -577,18 +599,8 @@ impl gyro_sim::BoundModel for Blowup {
 #[test]
 fn a_rate_turning_nan_in_a_fixed_step_run_is_named_with_the_time_and_the_state_where_it_did() {
     use gyro_sim::{tableau::RK4, Method};
-    // The entry a registry would hold for it; `solve_bound` below is what its `solve` calls.
-    let model = gyro_sim::ModelEntry {
-        info: &BLOWUP,
-        initial_state: std::sync::Arc::new(|| vec![0.0, 0.0]),
-        default_params: std::sync::Arc::new(Vec::new),
-        solve: std::sync::Arc::new(|problem, rows_to| gyro_sim::solve_bound(problem, &Blowup, rows_to)),
-        engine: gyro_sim::Engine::Compiled,
-        program: None,
-        source: None,
-        mechanics: None,
-        drawing: None,
-    };
+    // The model a registry would hold for it.
+    let model: gyro_sim::SharedModel = std::sync::Arc::new(Blowup);
     let problem = gyro_sim::Problem {
         title: "blowup".into(),
         model,
@@ -605,7 +617,7 @@ fn a_rate_turning_nan_in_a_fixed_step_run_is_named_with_the_time_and_the_state_w
         events: Vec::new(),
         view: None,
     };
-    let error = gyro_sim::solve_bound(&problem, &Blowup, None).unwrap_err().to_string();
+    let error = gyro_sim::solve(&problem, None).unwrap_err().to_string();
     // Found again from the last good output (t = 1): the first stage past t = 1 of the step.
     assert!(error.contains("the rate of U is NaN at t = 1.005"), "{error}");
     assert!(error.contains("at the state Q = 0.40"), "{error}");

@@ -7,6 +7,7 @@ use std::path::PathBuf;
 
 use thiserror::Error;
 
+use crate::model_run::ModelRunError;
 use crate::models::{CompileError, ModelFileError};
 use crate::ode::interrupt::Interrupted;
 use crate::output::WriteError;
@@ -25,6 +26,9 @@ pub enum CliError {
     /// The model file cannot be read, checked or lowered.
     #[error(transparent)]
     ModelFile(#[from] ModelFileError),
+    /// A model file's run cannot start.
+    #[error(transparent)]
+    ModelRun(Box<ModelRunError>),
     /// The model file's compiled path cannot be built.
     #[error(transparent)]
     Compile(#[from] CompileError),
@@ -57,15 +61,6 @@ pub enum CliError {
         /// Why the run failed.
         #[source]
         source: Box<RunError>,
-    },
-    /// An error in a `--model` run's generated scene, pointed at the argument it came from.
-    #[error("{message}")]
-    AtArguments {
-        /// The error, its place in the generated scene replaced by the argument's.
-        message: String,
-        /// The error as it came.
-        #[source]
-        source: Box<CliError>,
     },
     /// Neither a scene nor a model file was given.
     #[error("give a scene or --model")]
@@ -108,18 +103,6 @@ pub enum CliError {
         /// What the system said.
         #[source]
         source: std::io::Error,
-    },
-    /// A `--set` names neither a parameter nor a state of the model.
-    #[error("--set {name}: {model} has no parameter or state `{name}`\n  help: parameters: {}; states: {}", params.join(", "), states.join(", "))]
-    UnknownSet {
-        /// The name given.
-        name: String,
-        /// The model.
-        model: String,
-        /// Its parameters.
-        params: Vec<String>,
-        /// Its states.
-        states: Vec<String>,
     },
     /// A `--set` argument is not `NAME=VALUE`.
     #[error("`{text}` is not NAME=VALUE (for example --set Y=10 or --set \"Q2=30 deg\")")]
@@ -185,6 +168,13 @@ pub enum CliError {
         /// The varied names.
         varied: Vec<String>,
     },
+}
+
+impl From<ModelRunError> for CliError {
+    /// The model run's error, boxed (it keeps the generated scene's error with its origin).
+    fn from(e: ModelRunError) -> CliError {
+        CliError::ModelRun(Box::new(e))
+    }
 }
 
 impl From<SolveError> for CliError {

@@ -1,14 +1,11 @@
 //! The `gyro-sim` command line: in come the arguments and the models compiled in; out go the
-//! runs, their files and a summary. A scene or a model file (`--model`, or a scene's
-//! `model = "file.al"`) runs on the compiled path (a cached binary with the model compiled in,
-//! run in this one's place) or on the instant path (the lowered program evaluated directly).
+//! runs, their files and a summary. A model file (`--model`, or a scene's `model = "file.al"`)
+//! is made ready by [`crate::model_run`]; the command line runs it in process, or execs the
+//! cached binary with the model compiled in when the compiled engine is asked.
 
+mod args;
 mod bench_command;
 mod error;
-mod file_model;
-mod inputs;
-mod model_scene;
-mod origins;
 mod serve_command;
 mod summary;
 mod sweep_command;
@@ -19,14 +16,14 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
-pub use model_scene::{parse_set, scene_text, ModelRunArgs};
+use args::parse_set;
 pub use summary::print_summary;
 
 pub use error::CliError;
-use file_model::model_file_of;
 
-use crate::models::{FileRun, ModelFile, Registry};
-use crate::problem::ModelEntry;
+use crate::model_run::{model_file_of, CompiledModel, FileRunRequest, ModelRunArgs, PreparedRun};
+use crate::models::{ModelFile, Registry};
+use crate::problem::{Engine, Problem};
 use crate::scene::{IntegratorOverrides, Scene};
 
 /// Simulate models derived with Kane's method.
@@ -146,13 +143,13 @@ struct RunArgs {
     t_final: Option<f64>,
     /// The integrator, in place of the scene's (or the model file's): dop853, dopri5, vern7,
     /// vern9, taylor, rk4, or auto (picked by the tolerances).
-    #[arg(long, value_parser = model_scene::parse_method)]
+    #[arg(long, value_parser = args::parse_method)]
     method: Option<String>,
     /// Relative tolerance, in place of the scene's (or the file's RELERR).
-    #[arg(long, allow_hyphen_values = true, value_parser = model_scene::parse_tolerance)]
+    #[arg(long, allow_hyphen_values = true, value_parser = args::parse_tolerance)]
     rtol: Option<f64>,
     /// Absolute tolerance, in place of the scene's (or the file's ABSERR).
-    #[arg(long, allow_hyphen_values = true, value_parser = model_scene::parse_tolerance)]
+    #[arg(long, allow_hyphen_values = true, value_parser = args::parse_tolerance)]
     atol: Option<f64>,
     /// How a model file's equations run: jit (machine code compiled in process, ready in
     /// milliseconds), compiled (a cached binary built by cargo once per file version, for the
@@ -182,9 +179,14 @@ impl RunArgs {
         IntegratorOverrides { method: self.method.clone(), rtol: self.rtol, atol: self.atol }
     }
 
-    /// What a `--model` run was given, for errors pointed at the arguments.
-    fn given<'a>(&'a self, model: &'a Path, integrator: &'a IntegratorOverrides) -> origins::Given<'a> {
-        origins::Given { model, sets: &self.sets, t_final: self.t_final, integrator }
+    /// What the command line gives a model file's run without a scene.
+    fn model_run_args(&self) -> ModelRunArgs {
+        ModelRunArgs {
+            sets: self.sets.clone(),
+            t_final: self.t_final,
+            integrator: self.integrator(),
+            view: !self.no_view,
+        }
     }
 }
 
@@ -195,15 +197,14 @@ enum EngineChoice {
     Instant,
 }
 
-/// A model file compiled into this binary (the compiled path's cached binaries).
-#[derive(Clone)]
-pub struct CompiledModel {
-    /// Its registry key ([`crate::models::registry_key`] of the file's equations).
-    pub key: String,
-    /// The compiled model.
-    pub entry: ModelEntry,
-    /// What the file says about a run.
-    pub run: FileRun,
+impl EngineChoice {
+    fn engine(self) -> Engine {
+        match self {
+            EngineChoice::Jit => Engine::Jit,
+            EngineChoice::Compiled => Engine::Compiled,
+            EngineChoice::Instant => Engine::Instant,
+        }
+    }
 }
 
 /// Runs the command line with `registry`'s models (and `compiled`, when this binary is a
@@ -244,7 +245,7 @@ pub fn main_with(registry: Registry, compiled: Option<CompiledModel>) -> ExitCod
     }
 }
 
-/// `gyro-sim run`: finds the model file if any, takes its path, and runs.
+/// `gyro-sim run`: a scene of a built-in model, or a model file (with its scene or without).
 fn run_command(
     args: &RunArgs,
     registry: Registry,
@@ -254,115 +255,40 @@ fn run_command(
         Some(path) => Some(Scene::load_with(path, &args.integrator())?),
         None => None,
     };
-    let file_path = match (&scene, &args.model) {
-        (_, Some(m)) => Some(m.clone()),
-        (Some(s), None) => model_file_of(s),
-        (None, None) => None,
-    };
-    let Some(file_path) = file_path else {
+    let file = args.model.clone().or_else(|| scene.as_ref().and_then(model_file_of));
+    let Some(file) = file else {
         let scene = scene.ok_or(CliError::NoScene)?;
         if let Some((name, _, _)) = scene.specified.first() {
             let (path, name, model) = (scene.path.clone(), name.clone(), scene.model.clone());
             return Err(CliError::SpecifiedCompiled { scene: path, name, model });
         }
-        return finish(&scene, &registry, args);
+        let problem = crate::resolve::resolve(&scene, &registry)?;
+        return finish(&scene, &problem, &scene.path, args);
     };
-    let specified = scene.as_ref().map_or(&[][..], |s| &s.specified[..]);
-    // The default drawing's outputs only for a view that draws the model.
-    let drawn = scene.as_ref().map_or(!args.no_view, Scene::draws_model);
-    let source = crate::models::source_with(&file_path, specified)?;
-    let key = crate::models::registry_key(&source);
-    let (entry, run, file) = match compiled.filter(|c| c.key == key) {
-        Some(c) => {
-            // The binary's equations; INPUT values (perhaps edited since it was built) from the file.
-            let file = ModelFile::from_source(&file_path, source, drawn)?;
-            let current = crate::models::file_entry(&file);
-            (with_values_of(c.entry, &current), file.run.clone(), None)
-        }
-        None => {
-            let file = ModelFile::from_source(&file_path, source, drawn)?;
-            eprint!("{}", file.warnings);
-            let entry = crate::models::in_process_entry(&file, args.engine == EngineChoice::Jit)?;
-            (entry, file.run.clone(), Some(file))
-        }
-    };
-    let Some(scene) = scene else {
-        let integrator = args.integrator();
-        let given = args.given(&file_path, &integrator);
-        let scene = model_scene(&given, &run, &entry)?;
-        return run_scene(&scene, registry, entry, file.as_ref(), args)
-            .map_err(|e| at_arguments(e, &scene.source, &given));
-    };
-    run_scene(&scene, registry, entry, file.as_ref(), args)
+    let request =
+        FileRunRequest { file: &file, scene, args: args.model_run_args(), engine: args.engine.engine() };
+    let prepared = crate::model_run::prepare(request, registry, compiled)?;
+    eprint!("{}", prepared.warnings);
+    run_prepared(&prepared, args)
 }
 
-/// Runs `scene` with `entry` (a model file's, resolved before it is built or run when `file`
-/// is given, so implausible values stop it first).
-fn run_scene(
-    scene: &Scene,
-    registry: Registry,
-    entry: ModelEntry,
-    file: Option<&ModelFile>,
-    args: &RunArgs,
-) -> Result<ExitCode, CliError> {
+/// Runs a model file's prepared run: its problem resolved first, so implausible values stop it
+/// before anything is built; then in process, or on the compiled binary when it is to be built.
+fn run_prepared(prepared: &PreparedRun, args: &RunArgs) -> Result<ExitCode, CliError> {
+    let scene = &prepared.scene;
     if args.print_scene {
         print!("{}", scene.source);
         return Ok(ExitCode::SUCCESS);
     }
-    if let Some(warning) = inputs::open_inputs_warning(scene, entry.info) {
+    if let Some(warning) = prepared.open_inputs_warning() {
         eprintln!("{warning}");
     }
-    let registry = registry.with_entry(&scene.model, entry);
-    if let Some(file) = file {
-        crate::resolve::resolve(scene, &registry)?;
-        if args.engine == EngineChoice::Compiled {
-            let taylor = scene.integrator.method.name() == crate::ode::TAYLOR;
-            return run_compiled(file, taylor, scene.draws_model());
-        }
+    let problem = prepared.resolve()?;
+    if let Some(file) = &prepared.to_compile {
+        let taylor = scene.integrator.method.name() == crate::ode::TAYLOR;
+        return run_compiled(file, taylor, scene.draws_model());
     }
-    finish(scene, &registry, args)
-}
-
-/// `compiled` with its parameter defaults and initial state taken from `current` (the same
-/// equations, by name): a model file's INPUT values as they are now.
-fn with_values_of(compiled: ModelEntry, current: &ModelEntry) -> ModelEntry {
-    let (info, now) = (compiled.info, current.info);
-    let params = (current.default_params)();
-    let initial = (current.initial_state)();
-    let param_values: Vec<f64> =
-        info.param_names.iter().map(|n| now.param(n).map_or(f64::NAN, |i| params[i])).collect();
-    let state_values: Vec<f64> =
-        info.state_names.iter().map(|n| now.state(n).map_or(f64::NAN, |i| initial[i])).collect();
-    ModelEntry {
-        default_params: std::sync::Arc::new(move || param_values.clone()),
-        initial_state: std::sync::Arc::new(move || state_values.clone()),
-        program: current.program.clone(),
-        mechanics: current.mechanics.clone(),
-        drawing: current.drawing.clone(),
-        ..compiled
-    }
-}
-
-/// The scene of a `--model` run given `given`.
-fn model_scene(given: &origins::Given<'_>, run: &FileRun, entry: &ModelEntry) -> Result<Scene, CliError> {
-    let model_args = ModelRunArgs {
-        sets: given.sets.to_vec(),
-        t_final: given.t_final,
-        integrator: given.integrator.clone(),
-        view: entry.drawing.is_some(),
-    };
-    let text = scene_text(&given.model.display().to_string(), run, entry.info, &model_args)?;
-    let mut scene =
-        Scene::parse(origins::GENERATED, &text).map_err(|e| at_arguments(e.into(), &text, given))?;
-    // The model is found under the path as given (not relative to a scene file).
-    scene.path = PathBuf::from(origins::GENERATED);
-    Ok(scene)
-}
-
-/// `e`, an error in the generated scene `source`, pointed at the argument its place came from.
-fn at_arguments(e: CliError, source: &str, given: &origins::Given<'_>) -> CliError {
-    let message = origins::point_at_arguments(&e.to_string(), source, given);
-    CliError::AtArguments { message, source: Box::new(e) }
+    finish(scene, &problem, prepared.named_by(), args)
 }
 
 /// Builds (or finds) the compiled binary (with Taylor coefficients when `taylor`, the default
@@ -407,27 +333,25 @@ fn start_compiled(file: &ModelFile, taylor: bool, drawn: bool) -> Result<(PathBu
     }
 }
 
-/// Runs, writes and summarises.
-fn finish(scene: &Scene, registry: &Registry, args: &RunArgs) -> Result<ExitCode, CliError> {
+/// Runs, writes and summarises; a failure is named by `named_by` (the scene, or the model
+/// file of a run without one).
+fn finish(scene: &Scene, problem: &Problem, named_by: &Path, args: &RunArgs) -> Result<ExitCode, CliError> {
     let out = args.out.as_deref();
-    let summary = crate::run::run_with(scene, registry, out)
-        .map_err(|e| CliError::Run { scene: scene.path.clone(), source: Box::new(e) })?;
+    let summary = crate::run::run_problem(problem, out)
+        .map_err(|e| CliError::Run { scene: named_by.to_path_buf(), source: Box::new(e) })?;
     print_summary(&scene.title, &summary);
-    if let Some(entry) = registry.find(&scene.model) {
-        println!("model {} ran {}", entry.info.name, entry.engine.label());
-    }
+    println!("model {} ran {}", problem.model.info().name, problem.model.engine().label());
     if args.repeat > 0 {
-        print_timing(scene, registry, args.repeat)?;
+        print_timing(problem, args.repeat)?;
     }
     Ok(ExitCode::SUCCESS)
 }
 
 /// Integrates `times` more times and prints the median and least wall time.
-fn print_timing(scene: &Scene, registry: &Registry, times: usize) -> Result<(), CliError> {
-    let problem = crate::resolve::resolve(scene, registry)?;
+fn print_timing(problem: &Problem, times: usize) -> Result<(), CliError> {
     let mut walls = Vec::with_capacity(times);
     for _ in 0..times {
-        let t = crate::solve::solve(&problem, None)?;
+        let t = crate::solve::solve(problem, None)?;
         walls.push(t.wall.as_secs_f64() * 1e3);
     }
     walls.sort_by(f64::total_cmp);

@@ -11,7 +11,8 @@ use crate::scene::Scene;
 /// Loads the scene (a model file it names runs on the instant engine), runs it once and serves it.
 pub fn serve_command(scene: &Path, port: u16, registry: Registry) -> Result<ExitCode, CliError> {
     let scene = Scene::load(scene)?;
-    let registry = super::file_model::with_file_model(&scene, registry)?;
+    let (registry, warnings) = crate::model_run::with_file_model(&scene, registry)?;
+    eprint!("{warnings}");
     if scene.controls.is_empty() {
         eprintln!(
             "{}: the scene has no [[controls]]: the page plays its run, with nothing to move",

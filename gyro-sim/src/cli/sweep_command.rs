@@ -40,7 +40,8 @@ pub struct SweepArgs<'a> {
 pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCode, CliError> {
     // A sweep writes no view: neither its columns nor a model's drawing are computed.
     let scene = Scene { view: None, ..Scene::load(args.scene)? };
-    let registry = super::file_model::with_file_model(&scene, registry.clone())?;
+    let (registry, warnings) = crate::model_run::with_file_model(&scene, registry.clone())?;
+    eprint!("{warnings}");
     let design = match args.samples {
         Some(count) => Design::Samples { count, seed: args.seed },
         None => Design::Grid,
@@ -90,7 +91,7 @@ fn plan_of(
     members: usize,
     shard: Shard,
 ) -> Result<SweepPlan, CliError> {
-    let (model, model_text) = match super::file_model::model_file_of(scene) {
+    let (model, model_text) = match crate::model_run::model_file_of(scene) {
         Some(path) => {
             let text = std::fs::read(&path).map_err(|source| CliError::Io { path: path.clone(), source })?;
             (path.display().to_string(), sweep::identity::fnv1a64(&text))

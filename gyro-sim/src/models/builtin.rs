@@ -6,8 +6,8 @@
 
 use kane_model::runtime::GeneratedModel;
 
+use super::generated::{generated_from_file, generated_with_mechanics};
 use super::registry::Registry;
-use crate::problem::{MechanicsSource, ModelEntry};
 
 /// The 3-DOF gimballed gyroscope of the paper.
 pub mod gimbal_gyroscope {
@@ -57,32 +57,43 @@ pub mod heavy_top_rust {
     kane_derive::builtin_model!("heavy_top_rust", taylor, lanes, taylor_orders = [8, 12, 14, 16, 20]);
 }
 
+/// `M`, generated from the model file `name` in `kane-model/models/` whose text is `source`.
+fn from_file<M: GeneratedModel + 'static>(
+    registry: Registry,
+    name: &'static str,
+    source: &'static str,
+) -> Registry {
+    registry.with_entry(M::INFO.name, generated_from_file::<M>(name, source))
+}
+
 impl Registry {
     /// The models compiled into gyro-sim (those from model files with their file's text, to
     /// name the operation behind a failure).
     pub fn builtin() -> Registry {
-        Registry::new()
-            .with_entry_of::<gimbal_gyroscope::Model>(Some((
-                "gimbal_gyroscope.al",
-                include_str!("../../../kane-model/models/gimbal_gyroscope.al"),
-            )))
-            .with_entry_of::<heavy_top::Model>(Some((
-                "heavy_top.al",
-                include_str!("../../../kane-model/models/heavy_top.al"),
-            )))
-            .with_entry_of::<heavy_top_axle::Model>(Some((
-                "heavy_top_axle.al",
-                include_str!("../../../kane-model/models/heavy_top_axle.al"),
-            )))
-            .with_entry(
-                heavy_top_rust::Model::INFO.name,
-                ModelEntry::of::<heavy_top_rust::Model>().with_mechanics(MechanicsSource::new(|| {
-                    kane_model::models::HeavyTop::new().ok().map(|top| top.model)
-                })),
-            )
-            .with_entry_of::<free_body::Model>(Some((
-                "free_body.al",
-                include_str!("../../../kane-model/models/free_body.al"),
-            )))
+        let registry = Registry::new();
+        let registry = from_file::<gimbal_gyroscope::Model>(
+            registry,
+            "gimbal_gyroscope.al",
+            include_str!("../../../kane-model/models/gimbal_gyroscope.al"),
+        );
+        let registry = from_file::<heavy_top::Model>(
+            registry,
+            "heavy_top.al",
+            include_str!("../../../kane-model/models/heavy_top.al"),
+        );
+        let registry = from_file::<heavy_top_axle::Model>(
+            registry,
+            "heavy_top_axle.al",
+            include_str!("../../../kane-model/models/heavy_top_axle.al"),
+        );
+        let top = generated_with_mechanics::<heavy_top_rust::Model>(|| {
+            kane_model::models::HeavyTop::new().ok().map(|top| top.model)
+        });
+        let registry = registry.with_entry(heavy_top_rust::Model::INFO.name, top);
+        from_file::<free_body::Model>(
+            registry,
+            "free_body.al",
+            include_str!("../../../kane-model/models/free_body.al"),
+        )
     }
 }

@@ -1,5 +1,5 @@
-//! The instant path: in comes a model's lowered program ([`ProgramModel`]); out goes a registry
-//! entry that integrates it by evaluating the program's sections directly, no Rust compiled.
+//! The instant path: in comes a model's lowered program ([`ProgramModel`]); out goes a model
+//! that integrates it by evaluating the program's sections directly, no Rust compiled.
 //! Slower per step than a compiled model, but ready at once: for checking and short runs.
 
 use std::cell::RefCell;
@@ -10,7 +10,7 @@ use kane_model::runtime::ModelInfo;
 
 use super::model_file::ModelFile;
 use crate::ode::{System, TaylorWork};
-use crate::problem::{Engine, ModelEntry, ProgramSource};
+use crate::problem::{Engine, Problem, RowStream, SharedModel, SimModel, SolveError, Trajectory};
 use crate::solve::{solve_bound, BoundModel};
 
 /// A program model with its parameters bound.
@@ -53,25 +53,38 @@ impl BoundModel for InstantSystem<'_> {
     }
 }
 
-/// The registry entry running the model file `file` on the instant path, its mechanics known.
-pub fn file_entry(file: &ModelFile) -> ModelEntry {
-    file.dress(instant_entry(file.program.clone()))
+/// The lowered program on the instant engine.
+struct InstantModel {
+    program: Arc<ProgramModel>,
 }
 
-/// The registry entry running `model` on the instant path.
-pub fn instant_entry(model: Arc<ProgramModel>) -> ModelEntry {
-    let (a, b, c, d) = (model.clone(), model.clone(), model.clone(), model.clone());
-    ModelEntry {
-        info: model.info(),
-        initial_state: Arc::new(move || a.initial_state()),
-        default_params: Arc::new(move || b.default_params()),
-        solve: Arc::new(move |problem, rows_to| {
-            solve_bound(problem, &InstantSystem::new(&c, problem.params.clone()), rows_to)
-        }),
-        engine: Engine::Instant,
-        program: Some(ProgramSource(Arc::new(move || Some(d.clone())))),
-        source: None,
-        mechanics: None,
-        drawing: None,
+impl SimModel for InstantModel {
+    fn info(&self) -> &'static ModelInfo {
+        self.program.info()
     }
+    fn engine(&self) -> Engine {
+        Engine::Instant
+    }
+    fn initial_state(&self) -> Vec<f64> {
+        self.program.initial_state()
+    }
+    fn default_params(&self) -> Vec<f64> {
+        self.program.default_params()
+    }
+    fn solve(&self, problem: &Problem, rows_to: Option<&RowStream>) -> Result<Trajectory, SolveError> {
+        solve_bound(problem, &InstantSystem::new(&self.program, problem.params.clone()), rows_to)
+    }
+    fn program(&self) -> Option<Arc<ProgramModel>> {
+        Some(self.program.clone())
+    }
+}
+
+/// The model file `file` on the instant engine, its mechanics and drawing known.
+pub fn instant_file_model(file: &ModelFile) -> SharedModel {
+    file.dress(instant_model(file.program.clone()))
+}
+
+/// `program` on the instant engine.
+pub fn instant_model(program: Arc<ProgramModel>) -> SharedModel {
+    Arc::new(InstantModel { program })
 }

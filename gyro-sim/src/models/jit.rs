@@ -1,5 +1,5 @@
-//! The JIT engine: in comes a model's lowered program ([`ProgramModel`]); out goes a registry
-//! entry that integrates it as machine code compiled in process ([`JitModel`]), ready in
+//! The JIT engine: in comes a model's lowered program ([`ProgramModel`]); out goes a model
+//! that integrates it as machine code compiled in process ([`JitModel`]), ready in
 //! milliseconds and with no Rust toolchain needed.
 
 use std::sync::Arc;
@@ -10,7 +10,7 @@ use kane_model::runtime::ModelInfo;
 
 use super::model_file::ModelFile;
 use crate::ode::{System, TaylorWork};
-use crate::problem::{Engine, ModelEntry, ProgramSource};
+use crate::problem::{Engine, Pick, Problem, RowStream, SharedModel, SimModel, SolveError, Trajectory};
 use crate::solve::{solve_bound, BoundModel};
 
 /// A JIT-compiled model with its parameters bound.
@@ -54,31 +54,45 @@ impl BoundModel for JitSystem<'_> {
     }
 }
 
-/// The registry entry running the model file `file` on the JIT engine, its mechanics known.
-pub fn jit_file_entry(file: &ModelFile) -> Result<ModelEntry, JitError> {
-    Ok(file.dress(jit_entry(file.program.clone())?))
+/// The lowered program on the JIT engine.
+struct JitEngineModel {
+    jit: JitModel,
+    program: Arc<ProgramModel>,
 }
 
-/// The registry entry running `program` on the JIT engine (its `rhs` compiled now).
-pub fn jit_entry(program: Arc<ProgramModel>) -> Result<ModelEntry, JitError> {
-    let model = Arc::new(JitModel::new(program.clone())?);
-    let (a, b) = (program.clone(), program.clone());
-    Ok(ModelEntry {
-        info: program.info(),
-        initial_state: Arc::new(move || a.initial_state()),
-        default_params: Arc::new(move || b.default_params()),
-        solve: Arc::new(move |problem, rows_to| {
-            for pick in &problem.picks {
-                if let crate::problem::Pick::Output(k) = *pick {
-                    let _ = model.prepare_output(k);
-                }
+impl SimModel for JitEngineModel {
+    fn info(&self) -> &'static ModelInfo {
+        self.program.info()
+    }
+    fn engine(&self) -> Engine {
+        Engine::Jit
+    }
+    fn initial_state(&self) -> Vec<f64> {
+        self.program.initial_state()
+    }
+    fn default_params(&self) -> Vec<f64> {
+        self.program.default_params()
+    }
+    fn solve(&self, problem: &Problem, rows_to: Option<&RowStream>) -> Result<Trajectory, SolveError> {
+        for pick in &problem.picks {
+            if let Pick::Output(k) = *pick {
+                // An output the JIT refuses is evaluated instead.
+                let _ = self.jit.prepare_output(k);
             }
-            solve_bound(problem, &JitSystem::new(&model, problem.params.clone()), rows_to)
-        }),
-        engine: Engine::Jit,
-        program: Some(ProgramSource(Arc::new(move || Some(program.clone())))),
-        source: None,
-        mechanics: None,
-        drawing: None,
-    })
+        }
+        solve_bound(problem, &JitSystem::new(&self.jit, problem.params.clone()), rows_to)
+    }
+    fn program(&self) -> Option<Arc<ProgramModel>> {
+        Some(self.program.clone())
+    }
+}
+
+/// The model file `file` on the JIT engine, its mechanics and drawing known.
+pub fn jit_file_model(file: &ModelFile) -> Result<SharedModel, JitError> {
+    Ok(file.dress(jit_model(file.program.clone())?))
+}
+
+/// `program` on the JIT engine (its `rhs` compiled now).
+pub fn jit_model(program: Arc<ProgramModel>) -> Result<SharedModel, JitError> {
+    Ok(Arc::new(JitEngineModel { jit: JitModel::new(program.clone())?, program }))
 }

@@ -8,7 +8,8 @@ use std::sync::Arc;
 use kane_model::codegen::ProgramModel;
 use kane_model::mechanics::Model;
 
-use crate::problem::{MechanicsSource, ModelEntry};
+use crate::problem::{Engine, Problem, RowStream, SharedModel, SimModel, SolveError, Trajectory};
+use kane_model::runtime::ModelInfo;
 use kane_model::spec::Drawing;
 use thiserror::Error;
 
@@ -98,24 +99,29 @@ impl ModelFile {
             return ModelFile::lowered(path, source, false);
         }
         match ModelFile::lowered(path, source.clone(), true) {
-            Err(e @ (ModelFileError::Spec { .. } | ModelFileError::Lower { .. })) => {
-                let mut file = ModelFile::lowered(path, source, false)?;
-                let why = e.to_string();
-                let why = why.strip_prefix(&format!("{}: ", path.display())).unwrap_or(&why);
-                file.warnings.push_str(&format!(
-                    "{}: warning: the model's frames and points cannot be drawn ({why}): no view of them\n",
-                    path.display()
-                ));
-                Ok(file)
+            Err(ModelFileError::Spec { source: why, .. }) => {
+                ModelFile::undrawn(path, source, &why.to_string())
+            }
+            Err(ModelFileError::Lower { source: why, .. }) => {
+                ModelFile::undrawn(path, source, &why.to_string())
             }
             other => other,
         }
     }
 
-    /// `entry` (an engine's entry for this file's program) with the file's mechanics and drawing.
-    pub fn dress(&self, entry: ModelEntry) -> ModelEntry {
-        let entry = entry.with_mechanics(MechanicsSource::ready(self.model.clone()));
-        ModelEntry { drawing: self.drawing.clone(), ..entry }
+    /// The file without its drawing, a warning saying why it cannot be drawn.
+    fn undrawn(path: &Path, source: String, why: &str) -> Result<ModelFile, ModelFileError> {
+        let mut file = ModelFile::lowered(path, source, false)?;
+        file.warnings.push_str(&format!(
+            "{}: warning: the model's frames and points cannot be drawn ({why}): no view of them\n",
+            path.display()
+        ));
+        Ok(file)
+    }
+
+    /// `runs` (an engine's model of this file's program) with the file's mechanics and drawing.
+    pub fn dress(&self, runs: SharedModel) -> SharedModel {
+        Arc::new(Dressed { runs, mechanics: self.model.clone(), drawing: self.drawing.clone() })
     }
 
     /// The file checked and lowered, with its drawing's outputs when `drawn`.
@@ -144,6 +150,40 @@ impl ModelFile {
             warnings,
             drawing,
         })
+    }
+}
+
+/// A model file's model on an engine, with the file's mechanics and drawing.
+struct Dressed {
+    runs: SharedModel,
+    mechanics: Arc<Model>,
+    drawing: Option<Arc<Drawing>>,
+}
+
+impl SimModel for Dressed {
+    fn info(&self) -> &'static ModelInfo {
+        self.runs.info()
+    }
+    fn engine(&self) -> Engine {
+        self.runs.engine()
+    }
+    fn initial_state(&self) -> Vec<f64> {
+        self.runs.initial_state()
+    }
+    fn default_params(&self) -> Vec<f64> {
+        self.runs.default_params()
+    }
+    fn solve(&self, problem: &Problem, rows_to: Option<&RowStream>) -> Result<Trajectory, SolveError> {
+        self.runs.solve(problem, rows_to)
+    }
+    fn program(&self) -> Option<Arc<ProgramModel>> {
+        self.runs.program()
+    }
+    fn mechanics(&self) -> Option<Arc<Model>> {
+        Some(self.mechanics.clone())
+    }
+    fn drawing(&self) -> Option<Arc<Drawing>> {
+        self.drawing.clone()
     }
 }
 

@@ -15,7 +15,7 @@ use kane_model::runtime::{ModelInfo, OutputKind};
 
 use crate::models::Registry;
 use crate::ode::{Method, Tolerances};
-use crate::problem::ModelEntry;
+use crate::problem::SimModel;
 use crate::problem::{Pick, Problem};
 use crate::scene::{
     output_times, plot_times, too_many_rows, Axle, Scene, SceneError, Value, ViewError, ViewSpec,
@@ -31,7 +31,7 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
             &format!("the compiled models are: {}", registry.names().join(", ")),
         )
     })?;
-    let info = entry.info;
+    let info = entry.info();
     // A scene built in code, not parsed, has had no check of its grid.
     if let Some((what, help)) = too_many_rows(scene.t_final, scene.output_step) {
         return Err(scene.error_at(0..0, what, &help));
@@ -39,14 +39,14 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
     let times = output_times(scene.t_final, scene.output_step);
     let method = method(scene);
     let written = picks(scene, info)?;
-    let params = parameters(scene, entry)?;
-    let view = scene_view(scene, entry)?;
+    let params = parameters(scene, &**entry)?;
+    let view = scene_view(scene, &**entry)?;
     let problem = Problem {
         title: scene.title.clone(),
         model: entry.clone(),
         view: view_with(scene, info, view.as_ref(), &params)?,
         params,
-        initial: initial_state(scene, entry)?,
+        initial: initial_state(scene, &**entry)?,
         times: times.clone(),
         plot_times: if has_dense_output(method) {
             plot_times(&times, scene.plot_points, MAX_PLOT_POINTS)
@@ -70,16 +70,16 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
 
 /// The scene's `[view]`, with the model's frames and points when it draws the model; an error
 /// at `[view]` when the model has no drawing.
-fn scene_view(scene: &Scene, entry: &ModelEntry) -> Result<Option<ViewSpec>, SceneError> {
+fn scene_view(scene: &Scene, entry: &dyn SimModel) -> Result<Option<ViewSpec>, SceneError> {
     let Some(view) = &scene.view else { return Ok(None) };
     if !view.draw_model {
         return Ok(Some(view.clone()));
     }
-    match &entry.drawing {
-        Some(drawing) => Ok(Some(view.with_drawing(drawing))),
+    match entry.drawing() {
+        Some(drawing) => Ok(Some(view.with_drawing(&drawing))),
         None => Err(scene.error_at(
             scene.view_span.clone(),
-            format!("[view]: draw_model = true, but the model {} has no drawing (a model file's warning above says why)", entry.info.name),
+            format!("[view]: draw_model = true, but the model {} has no drawing (a model file's warning above says why)", entry.info().name),
             "draw_model draws a model file's frames and points; a built-in model's scene draws its bodies with [[view.bodies]]",
         )),
     }
@@ -153,9 +153,9 @@ fn method(scene: &Scene) -> Method {
 }
 
 /// The model's defaults with the scene's values; an error for an unknown or missing one.
-fn parameters(scene: &Scene, entry: &ModelEntry) -> Result<Vec<f64>, SceneError> {
-    let info = entry.info;
-    let mut values = (entry.default_params)();
+fn parameters(scene: &Scene, entry: &dyn SimModel) -> Result<Vec<f64>, SceneError> {
+    let info = entry.info();
+    let mut values = entry.default_params();
     given_once(scene, &scene.parameters, |n| info.param(n))?;
     for (name, v, span) in &scene.parameters {
         let Some(i) = info.param(name) else {
@@ -199,9 +199,9 @@ fn given_once<T>(
 }
 
 /// The model's initial state with the scene's values.
-fn initial_state(scene: &Scene, entry: &ModelEntry) -> Result<Vec<f64>, SceneError> {
-    let info = entry.info;
-    let mut y = (entry.initial_state)();
+fn initial_state(scene: &Scene, entry: &dyn SimModel) -> Result<Vec<f64>, SceneError> {
+    let info = entry.info();
+    let mut y = entry.initial_state();
     given_once(scene, &scene.initial, |n| info.state(n))?;
     for (name, v, span) in &scene.initial {
         let Some(i) = info.state(name) else {
@@ -448,7 +448,7 @@ mod tests {
 
     fn initial(text: &str) -> Result<(Vec<f64>, &'static ModelInfo), SceneError> {
         let scene = Scene::parse("top.toml", &format!("{HEAD}{text}"))?;
-        resolve(&scene, &Registry::builtin()).map(|p| (p.initial, p.model.info))
+        resolve(&scene, &Registry::builtin()).map(|p| (p.initial, p.model.info()))
     }
 
     fn state(y: &[f64], info: &ModelInfo, name: &str) -> f64 {

@@ -3,13 +3,13 @@
 //! or Euler parameters off unit norm, at the scene's line that gives the value (at its `model`
 //! key when the value is the model's own). Models without known mechanics are not checked.
 
-use crate::problem::{MechanicsSource, Problem};
+use crate::problem::Problem;
 use crate::scene::{Scene, SceneError};
 
 /// An error at `scene` when `problem`'s values are implausible for its model's mechanics.
 pub(crate) fn check(scene: &Scene, problem: &Problem) -> Result<(), SceneError> {
-    let Some(model) = problem.model.mechanics.as_ref().and_then(MechanicsSource::get) else { return Ok(()) };
-    let info = problem.model.info;
+    let Some(model) = problem.model.mechanics() else { return Ok(()) };
+    let info = problem.model.info();
     let value = |name: &str| {
         let param = info.param(name).map(|i| problem.params[i]);
         param.or_else(|| info.state(name).map(|i| problem.initial[i]))

@@ -35,7 +35,7 @@ use crate::problem::{Column, Pick, Problem, RowStream, SolveError, Trajectory};
 /// memory (none: every row is kept; give none when an accuracy is asked, since refinement
 /// compares whole runs).
 pub fn solve(problem: &Problem, rows_to: Option<&RowStream>) -> Result<Trajectory, SolveError> {
-    (problem.model.solve)(problem, rows_to)
+    problem.model.solve(problem, rows_to)
 }
 
 /// Integrates `problem` with the generated model `M` (rows to `rows_to` as in [`solve`]).
@@ -122,7 +122,7 @@ fn assembled<B: BoundModel>(problem: &Problem, model: &B) -> Result<Option<(Prob
 
 /// The states to integrate: all but the cyclic coordinates that no column reads.
 fn integrated_states(problem: &Problem) -> Vec<usize> {
-    let info = problem.model.info;
+    let info = problem.model.info();
     let mut needed = vec![false; info.state_names.len()];
     for p in &problem.picks {
         match p {
@@ -136,7 +136,7 @@ fn integrated_states(problem: &Problem) -> Vec<usize> {
 
 /// The columns the picks write (those past `written_picks` hidden).
 pub(crate) fn columns(problem: &Problem) -> Vec<Column> {
-    let info = problem.model.info;
+    let info = problem.model.info();
     let mut out = Vec::new();
     for (n, p) in problem.picks.iter().enumerate() {
         let hidden = n >= problem.written_picks;

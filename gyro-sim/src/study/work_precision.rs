@@ -36,7 +36,7 @@ impl Default for Options {
 /// refinement): the points, method by method, in increasing accuracy asked.
 pub fn measure(problem: &Problem, options: &Options) -> Result<Vec<WorkPrecisionPoint>, SolveError> {
     let mut base = problem.clone();
-    base.picks = (0..problem.model.info.state_names.len()).map(Pick::State).collect();
+    base.picks = (0..problem.model.info().state_names.len()).map(Pick::State).collect();
     base.written_picks = base.picks.len();
     base.accuracy = None;
     base.plot_times.clear();

@@ -269,9 +269,9 @@ fn main() -> std::process::ExitCode {{
         relerr: {relerr:?},
         outputs: vec![{outputs}],
     }};
-    let entry = gyro_sim::ModelEntry::of::<model::Model>();
+    let model = gyro_sim::generated::<model::Model>();
     let key = gyro_sim::registry_key(include_str!(concat!("../../", {model_file:?})));
-    let compiled = gyro_sim::CompiledModel {{ key, entry, run }};
+    let compiled = gyro_sim::CompiledModel {{ key, model, run }};
     // The file's model alone: the built-in models stay out of this binary.
     gyro_sim::main_with(gyro_sim::Registry::new(), Some(compiled))
 }}

@@ -226,7 +226,7 @@ pub(crate) fn explain<B: BoundModel>(
     if !explainable(&error) {
         return error;
     }
-    let program = problem.model.program.as_ref().and_then(|p| p.program()).filter(|p| {
+    let program = problem.model.program().filter(|p| {
         let (a, b) = (p.info(), sys.info());
         a.param_names == b.param_names && a.state_names == b.state_names
     });

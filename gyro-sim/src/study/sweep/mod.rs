@@ -138,7 +138,7 @@ fn first_event_times(log: &crate::problem::EventLog) -> Vec<f64> {
 /// `[parameters]` (replacing what the scene gave).
 fn with_values(scene: &Scene, ranges: &[Range], values: &[Value], registry: &Registry) -> Scene {
     let mut s = scene.clone();
-    let is_state = |name: &str| registry.find(&scene.model).is_some_and(|e| e.info.state(name).is_some());
+    let is_state = |name: &str| registry.find(&scene.model).is_some_and(|e| e.info().state(name).is_some());
     for (r, v) in ranges.iter().zip(values) {
         let table = if is_state(&r.name) { &mut s.initial } else { &mut s.parameters };
         table.retain(|(n, _, _)| !n.eq_ignore_ascii_case(&r.name));

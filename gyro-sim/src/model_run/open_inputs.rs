@@ -7,7 +7,7 @@ use kane_model::runtime::ModelInfo;
 use crate::scene::Scene;
 
 /// `warning: ...` naming the model's open inputs `scene` gives no value, or None.
-pub(super) fn open_inputs_warning(scene: &Scene, info: &ModelInfo) -> Option<String> {
+pub(crate) fn open_inputs_warning(scene: &Scene, info: &ModelInfo) -> Option<String> {
     let given = |name: &str| {
         scene.parameters.iter().any(|(n, _, _)| n.eq_ignore_ascii_case(name))
             || scene.specified.iter().any(|(n, _, _)| n.eq_ignore_ascii_case(name))
