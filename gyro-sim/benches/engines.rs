@@ -13,8 +13,8 @@ use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use gyro_sim::{tableau, Integration, JitSystem, Method, ModelFile, ModelSystem, System, Tolerances};
-use kane_model::codegen::jit::JitModel;
-use kane_model::codegen::ProgramModel;
+use kane_model::jit::JitModel;
+use kane_model::program::ProgramModel;
 use kane_model::runtime::GeneratedModel;
 
 mod gimbal {

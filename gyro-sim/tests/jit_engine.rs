@@ -6,8 +6,8 @@ use std::path::Path;
 use std::sync::Arc;
 
 use gyro_sim::ModelFile;
-use kane_model::codegen::jit::JitModel;
-use kane_model::codegen::ProgramModel;
+use kane_model::jit::JitModel;
+use kane_model::program::ProgramModel;
 use proptest::prelude::*;
 
 const MODELS: [&str; 6] = [

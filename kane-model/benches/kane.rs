@@ -36,7 +36,7 @@ fn linearisation(c: &mut Criterion) {
     let values: std::collections::HashMap<String, f64> =
         loaded.inputs.iter().map(|i| (i.name.to_ascii_uppercase(), i.value)).collect();
     let mut spec = loaded.into_spec("whipple_bicycle").expect("bicycle spec");
-    let lowered = kane_model::codegen::lower(&mut spec).expect("bicycle lowers");
+    let lowered = kane_model::program::lower(&mut spec).expect("bicycle lowers");
     let value = |s: &kane_model::expr::SymbolId| values[&spec.symbol_name(*s).to_ascii_uppercase()];
     let mut params: Vec<f64> = lowered.params.iter().map(value).collect();
     let y: Vec<f64> = lowered.states.iter().map(value).collect();
@@ -47,7 +47,7 @@ fn linearisation(c: &mut Criterion) {
             v = (v + 1.0) % 11.0;
             params[speed] = v;
             black_box(
-                kane_model::codegen::linearize::linearize(&lowered.program, &params, 0.0, &y, &[]).a.len(),
+                kane_model::program::linearize::linearize(&lowered.program, &params, 0.0, &y, &[]).a.len(),
             )
         })
     });

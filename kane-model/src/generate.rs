@@ -6,7 +6,8 @@ use std::path::Path;
 
 use thiserror::Error;
 
-use crate::codegen::{CodeOptions, CodegenError, Emitted};
+use crate::codegen::{CodeOptions, Emitted};
+use crate::program::LowerError;
 
 /// Why a model could not be generated.
 #[derive(Debug, Error)]
@@ -36,7 +37,7 @@ pub enum BuildError {
         /// The model file or name.
         model: String,
         /// Why the spec could not be lowered to code.
-        source: CodegenError,
+        source: LowerError,
     },
     /// The generated tokens are not a Rust file (a bug in the printer).
     #[error("generated code does not parse: {0}")]
@@ -71,9 +72,9 @@ pub fn generate_builtin(name: &str, options: &CodeOptions) -> Result<Emitted, Bu
     let spec = crate::models::builtin_spec(name)
         .ok_or_else(|| BuildError::UnknownBuiltin { name: name.to_string(), known })?;
     let codegen = |source| BuildError::Codegen { model: name.to_string(), source };
-    let mut spec = spec.map_err(|e| codegen(CodegenError::Mechanics(e)))?;
+    let mut spec = spec.map_err(|e| codegen(LowerError::Mechanics(e)))?;
     if options.drawing {
-        spec.add_drawing(None).map_err(|e| codegen(CodegenError::Mechanics(e)))?;
+        spec.add_drawing(None).map_err(|e| codegen(LowerError::Mechanics(e)))?;
     }
     crate::codegen::generate(&mut spec, options).map_err(codegen)
 }

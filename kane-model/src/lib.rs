@@ -4,7 +4,10 @@
 //!   CSE, numeric evaluation generic over `num_traits::Float`, and printers.
 //! - [`mechanics`]: frames, points, bodies, loads and Kane's equations `M u' = f`.
 //! - [`spec`]: what to generate from a model: equations, defaults, units, typed outputs.
-//! - [`codegen`]: a spec lowered to one straight-line program, printed as Rust.
+//! - [`program`]: a spec lowered to one straight-line program, with its evaluator, Taylor
+//!   recurrences, events, faults and linearisation.
+//! - [`codegen`]: the program printed as Rust.
+//! - `jit` (feature `jit`): the program compiled to machine code in process.
 //! - [`runtime`]: what generated code reaches (the model traits and metadata, Taylor
 //!   recurrences, dual numbers implementing `num_traits::Float`); a leaf.
 //! - [`lang`]: the Autolev-compatible model language, building models and specs.
@@ -15,10 +18,13 @@ pub mod assembly;
 pub mod codegen;
 pub mod expr;
 pub mod generate;
+#[cfg(feature = "jit")]
+pub mod jit;
 pub mod lang;
 pub mod mechanics;
 pub mod models;
 pub mod plausibility;
+pub mod program;
 pub mod runtime;
 pub mod spec;
 

@@ -168,7 +168,7 @@ fn a_specified_torque_given_a_formula_after_kane_drives_the_equations_and_the_co
     assert!((rates.speeds[0] - want).abs() < 1e-13, "{} vs {want}", rates.speeds[0]);
     // The generated code reads K and C, not T; POWER (assigned before T's formula) has it.
     let mut spec = m.into_spec("t").unwrap();
-    let lowered = kane_model::codegen::lower(&mut spec).unwrap();
+    let lowered = kane_model::program::lower(&mut spec).unwrap();
     let params: Vec<&str> = lowered.params.iter().map(|s| spec.symbol_name(*s)).collect();
     assert!(params.contains(&"K") && params.contains(&"C") && !params.contains(&"T"), "{params:?}");
     let power = spec.outputs.iter().find(|o| o.name == "POWER").unwrap().components[0];

@@ -2,8 +2,8 @@
 //! `param_constants` then `rhs` (with the lowered solve of `M u' = f`) and the outputs, for the
 //! paper's gimbal (a 2x2 and a 1x1 block) and a triple pendulum (a full 3x3 block: `LDL^T`).
 
-use kane_model::codegen::ir::Input;
-use kane_model::codegen::lower;
+use kane_model::program::ir::Input;
+use kane_model::program::lower;
 use nalgebra::{DMatrix, DVector};
 use rand::{Rng, SeedableRng};
 

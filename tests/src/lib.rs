@@ -32,11 +32,11 @@ pub fn interpreted_rhs(
 /// `y'` of a lowered program at parameters `values` (by upper-case name) and state `y`.
 pub fn lowered_rhs(
     spec: &kane_model::spec::ModelSpec,
-    lowered: &kane_model::codegen::Lowered,
+    lowered: &kane_model::program::Lowered,
     values: &rustc_hash::FxHashMap<String, f64>,
     y: &[f64],
 ) -> Vec<f64> {
-    use kane_model::codegen::ir::Input;
+    use kane_model::program::ir::Input;
     let params: Vec<f64> =
         lowered.params.iter().map(|s| values[&spec.symbol_name(*s).to_ascii_uppercase()]).collect();
     let p = &lowered.program;

@@ -4,7 +4,7 @@
 //! a parallelogram linkage (crank and rocker equal, coupler equal to the ground link) moves as
 //! a hand derivation says it must.
 
-use kane_model::codegen::{lower, ProgramModel};
+use kane_model::program::{lower, ProgramModel};
 use kane_model::spec::ModelSpec;
 use rustc_hash::FxHashMap;
 

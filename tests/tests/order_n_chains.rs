@@ -3,8 +3,8 @@
 //! particles, gravity and applied loads), it is the form generated for longer chains, and its
 //! operation count grows linearly with the number of links.
 
-use kane_model::codegen::taylor::TaylorProgram;
-use kane_model::codegen::{lower, Lowered};
+use kane_model::program::taylor::TaylorProgram;
+use kane_model::program::{lower, Lowered};
 use kane_model::spec::ModelSpec;
 use kane_tests::{interpreted_rhs, lowered_rhs as run, normwise};
 use rand::rngs::StdRng;

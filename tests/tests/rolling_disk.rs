@@ -107,7 +107,7 @@ fn the_generated_constrained_rhs_equals_the_numeric_reduction_upright_included()
     let mut tracked = RollingDisk::nonholonomic().unwrap();
     let eqs = tracked.model.kane().unwrap();
     let mut spec = kane_model::spec::ModelSpec::new("disk", tracked.model, eqs.clone());
-    let lowered = kane_model::codegen::lower(&mut spec).unwrap();
+    let lowered = kane_model::program::lower(&mut spec).unwrap();
     let mut rng = rand::rngs::StdRng::seed_from_u64(7);
     for k in 0..40 {
         let mut vals = state(&spec.model.ar, &mut rng);

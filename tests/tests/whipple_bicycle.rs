@@ -4,8 +4,8 @@
 //! equal the benchmark's linear equations at 0 to 10 m/s, and its equations are finite and
 //! agree, between eval's pivoted LU and the generated Householder solve, exactly upright.
 
-use kane_model::codegen::linearize::linearize;
-use kane_model::codegen::{lower, Lowered};
+use kane_model::program::linearize::linearize;
+use kane_model::program::{lower, Lowered};
 use kane_model::spec::ModelSpec;
 use rustc_hash::FxHashMap;
 
@@ -301,7 +301,7 @@ fn the_pitch_is_solved_from_the_front_contact_and_is_mirror_symmetric() {
     let values: FxHashMap<String, f64> =
         loaded.inputs.iter().map(|i| (i.name.to_ascii_uppercase(), i.value)).collect();
     let mut spec = loaded.into_spec("whipple_bicycle").unwrap();
-    let model = kane_model::codegen::ProgramModel::new(&mut spec).unwrap();
+    let model = kane_model::program::ProgramModel::new(&mut spec).unwrap();
     let info = model.info();
     assert_eq!(info.dependent_coordinates.iter().map(|k| info.state_names[*k]).collect::<Vec<_>>(), ["Q4"]);
     let params: Vec<f64> = info.param_names.iter().map(|n| values[*n]).collect();

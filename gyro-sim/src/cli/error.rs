@@ -34,7 +34,7 @@ pub enum CliError {
     Compile(#[from] CompileError),
     /// The model file's program cannot be compiled by the JIT engine.
     #[error(transparent)]
-    Jit(#[from] kane_model::codegen::jit::JitError),
+    Jit(#[from] kane_model::jit::JitError),
     /// An integration stopped.
     #[error(transparent)]
     Solve(Box<SolveError>),

@@ -3,8 +3,8 @@
 
 use std::sync::Arc;
 
-use kane_model::codegen::ProgramModel;
 use kane_model::mechanics::Model;
+use kane_model::program::ProgramModel;
 use kane_model::runtime::ModelInfo;
 use kane_model::spec::Drawing;
 

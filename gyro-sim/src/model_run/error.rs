@@ -17,7 +17,7 @@ pub enum ModelRunError {
     ModelFile(#[from] ModelFileError),
     /// The model file's program cannot be compiled by the JIT engine.
     #[error(transparent)]
-    Jit(#[from] kane_model::codegen::jit::JitError),
+    Jit(#[from] kane_model::jit::JitError),
     /// The user's scene is wrong, at a line and column.
     #[error(transparent)]
     Scene(Box<SceneError>),

@@ -7,8 +7,8 @@ use std::marker::PhantomData;
 use std::path::Path;
 use std::sync::{Arc, OnceLock};
 
-use kane_model::codegen::ProgramModel;
 use kane_model::mechanics::Model;
+use kane_model::program::ProgramModel;
 use kane_model::runtime::{GeneratedModel, ModelInfo};
 
 use super::model_file::ModelFile;

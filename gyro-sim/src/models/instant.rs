@@ -5,7 +5,7 @@
 use std::cell::RefCell;
 use std::sync::Arc;
 
-use kane_model::codegen::ProgramModel;
+use kane_model::program::ProgramModel;
 use kane_model::runtime::ModelInfo;
 
 use super::model_file::ModelFile;

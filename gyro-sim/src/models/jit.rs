@@ -4,8 +4,8 @@
 
 use std::sync::Arc;
 
-use kane_model::codegen::jit::{JitError, JitModel};
-use kane_model::codegen::ProgramModel;
+use kane_model::jit::{JitError, JitModel};
+use kane_model::program::ProgramModel;
 use kane_model::runtime::ModelInfo;
 
 use super::model_file::ModelFile;

@@ -6,7 +6,7 @@
 //! engine (`instant`: the program evaluated) or the compiled one (`compiled`: a cached binary
 //! with the model compiled in, whose generated driver names only `gyro_sim::` re-exports).
 
-use kane_model::codegen::jit::JitError;
+use kane_model::jit::JitError;
 
 mod builtin;
 mod compiled;

@@ -5,8 +5,8 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use kane_model::codegen::ProgramModel;
 use kane_model::mechanics::Model;
+use kane_model::program::ProgramModel;
 
 use crate::problem::{Engine, Problem, RowStream, SharedModel, SimModel, SolveError, Trajectory};
 use kane_model::runtime::ModelInfo;
@@ -46,7 +46,7 @@ pub enum ModelFileError {
         path: PathBuf,
         /// Why.
         #[source]
-        source: kane_model::codegen::CodegenError,
+        source: kane_model::program::LowerError,
     },
 }
 

@@ -2,7 +2,7 @@
 //! expression lowered to a kane-model IR section, where each of the section's inputs is read from
 //! (time, states, output columns and their rates, parameters), and the crossings that count.
 
-use kane_model::codegen::event::EventCode;
+use kane_model::program::event::EventCode;
 
 use crate::scene::Direction;
 

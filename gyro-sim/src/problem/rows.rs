@@ -45,7 +45,7 @@ impl PartialEq for RowError {
     }
 }
 
-/// A shared [`RowSink`], as a problem carries it.
+/// A shared `RowSink`, as a problem carries it.
 #[derive(Clone)]
 pub struct RowStream(pub Arc<Mutex<dyn RowSink>>);
 

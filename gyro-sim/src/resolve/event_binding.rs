@@ -3,8 +3,8 @@
 //! output columns and parameters in the CSV's units, or a scene error naming the event and the
 //! place in its expression.
 
-use kane_model::codegen::event::EventSlot;
 use kane_model::lang::event::{lower_event, EventName};
+use kane_model::program::event::EventSlot;
 use kane_model::runtime::ModelInfo;
 
 use super::presets;

@@ -1,57 +1,19 @@
-//! Code generation: in comes a [`ModelSpec`] (built from mechanics, never from the language);
-//! out goes a Rust module with a straight-line `rhs` generic over `num_traits::Float`, one
-//! function per output, and the model's runtime metadata.
-//!
-//! The crate's layers, in the order data flows through them: `expr` -> `mechanics` -> `spec` ->
-//! `codegen` (this module) -> [`crate::runtime`]. Each uses only the layers before it and
-//! `runtime`, what generated code reaches: a leaf that uses nothing else in the crate (this
-//! module's evaluators run its recurrences; its metadata are runtime types). The model
-//! language, `lang`, sits above them all and is never read here: event expressions arrive as
-//! expressions ([`event::lower`]), specs as specs.
-//!
-//! The stages are modules: [`lower`] turns the spec into one [`ir::Program`] (SSA sections for
-//! `param_constants`, `rhs` with `M u' = f` solved inside it, and each output); `print` spells
-//! that program in Rust; [`taylor`] turns `rhs` into Taylor-coefficient recurrences, printed
-//! beside it; `jit` (feature `jit`) compiles the same sections to machine code in process.
-//! The same spec gives byte-identical code.
+//! Rust code emission: in comes a [`ModelSpec`]; out goes a Rust module with a straight-line
+//! `rhs` generic over `num_traits::Float`, one function per output, Taylor coefficients when
+//! asked, and the model's runtime metadata. It prints the lowered program of
+//! [`crate::program`] (`print`), one consumer of it beside the evaluator and the JIT. The same
+//! spec gives byte-identical code.
 
-pub mod event;
-pub mod fault;
-pub mod ir;
-#[cfg(feature = "jit")]
-pub mod jit;
-pub mod linearize;
-mod lower;
-mod meta;
 mod names;
 mod print;
-mod program_model;
-pub mod taylor;
 
 use proc_macro2::TokenStream;
-use thiserror::Error;
 
+use crate::program::{lower, taylor, LowerError};
 use crate::spec::ModelSpec;
 
-pub use lower::{lower, Lowered};
-pub use meta::{Meta, OutputMeta};
 pub use names::rust_ident;
 pub use print::{print_section, Extras, Scalar, SectionStyle};
-pub use program_model::ProgramModel;
-
-/// Why a model cannot be turned into code.
-#[derive(Clone, Debug, PartialEq, Error)]
-pub enum CodegenError {
-    /// A symbol the equations need is neither a state, a parameter nor time.
-    #[error("`{0}` is a time-dependent quantity that is not a state and has no formula: give it one in the file (`{0} = ...`, after KANE() too) or in a gyro-sim scene's [specified] table; tables of values in time are not supported")]
-    UnsupportedSymbol(String),
-    /// An expression operation failed.
-    #[error(transparent)]
-    Expr(#[from] crate::expr::ExprError),
-    /// A mechanics operation failed.
-    #[error(transparent)]
-    Mechanics(#[from] crate::mechanics::MechanicsError),
-}
 
 /// What to generate beyond `rhs`, `jacobian` and the outputs: only what the runs ask for.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -125,7 +87,7 @@ impl Emitted {
 }
 
 /// Generates the items of the model module of `spec`.
-pub fn generate(spec: &mut ModelSpec, options: &CodeOptions) -> Result<Emitted, CodegenError> {
+pub fn generate(spec: &mut ModelSpec, options: &CodeOptions) -> Result<Emitted, LowerError> {
     let lowered = lower(spec)?;
     let n_states = lowered.states.len();
     let taylor = options.taylor || !options.taylor_orders.is_empty();

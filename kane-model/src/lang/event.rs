@@ -1,7 +1,7 @@
 //! Event expressions read: in comes the text of a scalar expression of named values (states,
 //! output columns, parameters, `t`) with optional time derivatives (`X'`, `(e)'`, `DT(e)`); out
 //! goes its expression in an arena, derivatives taken symbolically (the chain rule: each name's
-//! rate is a symbol of its own), which [`crate::codegen::event::lower`] turns into an
+//! rate is a symbol of its own), which [`crate::program::event::lower`] turns into an
 //! [`EventCode`].
 
 use std::ops::Range;
@@ -9,8 +9,8 @@ use std::ops::Range;
 use rustc_hash::FxHashMap;
 use thiserror::Error;
 
-use crate::codegen::event::{self, EventCode, EventSlot};
 use crate::expr::{Arena, ExprId, Func, SymbolId, SymbolKind};
+use crate::program::event::{self, EventCode, EventSlot};
 
 use super::{parse_expression, BinOp, Expr, ExprKind};
 
@@ -228,7 +228,7 @@ impl Builder<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::codegen::ir::Input;
+    use crate::program::ir::Input;
 
     fn names() -> Vec<EventName> {
         let n = |name: &str, varies| EventName { name: name.into(), varies };

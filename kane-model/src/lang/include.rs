@@ -9,6 +9,7 @@
 //! A file named by RUN is looked for beside the model file, then in each folder above it (as
 //! Autolev, started in a project's folder, reads names relative to it); a macro file likewise.
 
+use super::file_search::find;
 use std::path::{Path, PathBuf};
 
 use super::ast::{Expr, ExprKind, Stmt, StmtKind};
@@ -166,24 +167,6 @@ fn macro_text(path: &Path, args: &[Expr], source: &str, s: &Stmt) -> Result<Incl
     }
     let call = source.get(s.span.clone()).unwrap_or("").trim();
     Ok(Included { label: format!("{} (from `{call}`)", path.display()), path: path.to_path_buf(), text })
-}
-
-/// `name` relative to `dir`, then to each folder above it; an absolute `name` as it is.
-pub(super) fn find(name: &str, dir: Option<&Path>) -> Option<PathBuf> {
-    let name = name.replace('\\', "/");
-    let relative = Path::new(&name);
-    if relative.is_absolute() {
-        return relative.is_file().then(|| relative.to_path_buf());
-    }
-    let mut at = Some(dir.unwrap_or(Path::new("")));
-    while let Some(d) = at {
-        let candidate = d.join(relative);
-        if candidate.is_file() {
-            return Some(candidate);
-        }
-        at = d.parent();
-    }
-    None
 }
 
 fn too_deep(s: &Stmt) -> Diagnostic {

@@ -19,6 +19,7 @@ mod compare;
 mod diagnostic;
 mod eoms;
 pub mod event;
+mod file_search;
 mod include;
 mod interp;
 mod parser;

@@ -78,7 +78,8 @@ fn collect_calls<'e>(e: &'e Expr, out: &mut Vec<(&'e Expr, &'e str)>) {
 /// The file `name.r` defining a user function, if there is one.
 fn function_file(name: &str, dir: Option<&Path>) -> Option<PathBuf> {
     [name.to_string(), name.to_ascii_lowercase(), name.to_ascii_uppercase()].iter().find_map(|n| {
-        super::include::find(&format!("{n}.r"), dir).or_else(|| super::include::find(&format!("{n}.R"), dir))
+        super::file_search::find(&format!("{n}.r"), dir)
+            .or_else(|| super::file_search::find(&format!("{n}.R"), dir))
     })
 }
 

@@ -6,6 +6,13 @@ use crate::mechanics::{FrameId, PointId, Result, Vector};
 
 use super::ModelSpec;
 
+impl OutputKind {
+    /// Whether the output is a quaternion computed from direction cosines.
+    pub fn is_quaternion(&self) -> bool {
+        matches!(self, OutputKind::Orientation { form: OrientationForm::Quaternion, .. })
+    }
+}
+
 /// How an orientation is written.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum OrientationForm {

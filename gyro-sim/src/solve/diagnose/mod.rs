@@ -11,8 +11,8 @@ mod probe;
 
 pub(crate) use probe::probe;
 
-use kane_model::codegen::ProgramModel;
 use kane_model::mechanics::{reciprocal_condition, CONSTRAINT_RCOND_LIMIT};
+use kane_model::program::ProgramModel;
 use kane_model::runtime::{ModelInfo, OutputKind};
 
 use super::bound::{kinetic_energy_output, output_of_kind, BoundModel};

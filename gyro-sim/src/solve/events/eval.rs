@@ -4,7 +4,7 @@
 
 use std::cell::RefCell;
 
-use kane_model::codegen::ir::Input;
+use kane_model::program::ir::Input;
 
 use crate::problem::{EventSpec, Source};
 use crate::solve::bound::BoundModel;

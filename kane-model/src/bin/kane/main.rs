@@ -314,7 +314,7 @@ fn linearize(file: PathBuf, set: Vec<String>, inputs: Vec<String>, json: bool) -
     let name = file.file_stem().and_then(|s| s.to_str()).unwrap_or("model").to_string();
     let fail = |e: &dyn std::fmt::Display| format!("{}: {e}", file.display());
     let mut spec = loaded.into_spec(&name).map_err(|e| fail(&e))?;
-    let model = kane_model::codegen::ProgramModel::new(&mut spec).map_err(|e| fail(&e))?;
+    let model = kane_model::program::ProgramModel::new(&mut spec).map_err(|e| fail(&e))?;
     let info = model.info();
     let upper = |s: &&str| s.to_ascii_uppercase();
     // The model's open inputs (SPECIFIED quantities without a formula) are zero unless set.
@@ -352,7 +352,7 @@ fn linearize(file: PathBuf, set: Vec<String>, inputs: Vec<String>, json: bool) -
     };
     let assembly =
         model.assemble(&params, &mut y).transpose().map_err(|e| format!("{}: {e}", file.display()))?;
-    let l = kane_model::codegen::linearize::linearize(model.program(), &params, 0.0, &y, &positions);
+    let l = kane_model::program::linearize::linearize(model.program(), &params, 0.0, &y, &positions);
     if l.a.iter().chain(&l.b).flatten().any(|x| !x.is_finite()) {
         return Err(format!("{}: the linearisation is not finite at this point (a singular mass matrix or constraints losing rank)", file.display()));
     }

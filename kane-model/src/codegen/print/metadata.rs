@@ -4,7 +4,7 @@
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
-use super::super::meta::Meta;
+use crate::program::Meta;
 
 /// The `ModelInfo` expression of a model.
 pub fn info(meta: &Meta) -> TokenStream {

@@ -8,5 +8,5 @@ mod section;
 mod taylor;
 mod unrolled;
 
-pub use module::{is_quaternion, module, Extras};
+pub use module::{module, Extras};
 pub use section::{print as print_section, Scalar, SectionStyle};

@@ -6,21 +6,21 @@
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
 
-use crate::spec::{ModelSpec, OrientationForm, OutputKind};
+use crate::spec::ModelSpec;
 
-use super::super::ir::{Input, Program};
-use super::super::lower::Lowered;
 use super::super::names::{const_ident, rust_ident};
-use super::super::taylor::TaylorProgram;
 use super::metadata;
 use super::section::{self, Scalar, SectionStyle};
+use crate::program::ir::{Input, Program};
+use crate::program::taylor::TaylorProgram;
+use crate::program::Lowered;
 
 /// What the module holds beyond `rhs` and the outputs.
 pub struct Extras<'a> {
     /// Taylor coefficients (`taylor_with_constants` and its loop).
     pub taylor: bool,
     /// Orders with straight-line Taylor code (see
-    /// [`super::super::taylor::TaylorProgram::straight_line_orders`]).
+    /// [`crate::program::taylor::TaylorProgram::straight_line_orders`]).
     pub taylor_orders: &'a [usize],
     /// `rhs_lanes` and the `LaneModel` implementation.
     pub lanes: bool,
@@ -38,7 +38,7 @@ pub fn module(spec: &ModelSpec, lowered: &Lowered, extras: &Extras) -> TokenStre
     let n_columns: usize = spec.outputs.iter().map(|o| o.components.len()).sum();
     let n_constants = program.param_constants.results.len();
     let params_items = params_items(spec, lowered, &param_idents);
-    let quaternion: Vec<bool> = spec.outputs.iter().map(|o| is_quaternion(&o.kind)).collect();
+    let quaternion: Vec<bool> = spec.outputs.iter().map(|o| o.kind.is_quaternion()).collect();
     let compute = functions(program, &param_idents, &quaternion);
     let lanes = extras.lanes.then(|| rhs_lanes_fn(program));
     // A right-hand side whose every operation has a recurrence (all do) gets Taylor coefficients.
@@ -46,7 +46,7 @@ pub fn module(spec: &ModelSpec, lowered: &Lowered, extras: &Extras) -> TokenStre
     let orders = if taylor.is_some() { extras.taylor_orders } else { &[] };
     let taylor_fn =
         taylor.as_ref().map(|t| super::taylor::taylor_fn(t, &input_tokens(&param_idents, true), orders));
-    let mut meta = super::super::meta::Meta::of(spec, lowered);
+    let mut meta = crate::program::Meta::of(spec, lowered);
     meta.taylor_straight_line = orders.to_vec();
     let info = metadata::info(&meta);
     let model_impl = model_impl(spec, lowered, &param_idents, taylor.is_some());
@@ -227,7 +227,7 @@ fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident], taylor: boo
     let width = spec
         .outputs
         .iter()
-        .map(|o| if is_quaternion(&o.kind) { 4 } else { o.components.len() })
+        .map(|o| if o.kind.is_quaternion() { 4 } else { o.components.len() })
         .max()
         .unwrap_or(0);
     quote! {
@@ -284,11 +284,6 @@ fn model_impl(spec: &ModelSpec, lowered: &Lowered, idents: &[Ident], taylor: boo
             #taylor_method
         }
     }
-}
-
-/// Whether an output is a quaternion computed from direction cosines.
-pub fn is_quaternion(kind: &OutputKind) -> bool {
-    matches!(kind, OutputKind::Orientation { form: OrientationForm::Quaternion, .. })
 }
 
 /// `f64::NAN` as tokens for a missing value, else the literal.

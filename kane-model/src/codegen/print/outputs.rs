@@ -4,8 +4,8 @@
 use proc_macro2::TokenStream;
 use quote::quote;
 
-use super::super::ir::Program;
 use super::section::{self, SectionStyle};
+use crate::program::ir::Program;
 
 /// `output` and `outputs`; `quaternion[k]` says output `k`'s nine direction cosines are written
 /// as a quaternion.

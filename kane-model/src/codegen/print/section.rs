@@ -8,7 +8,7 @@ use rustc_hash::FxHashMap;
 
 use crate::expr::Func;
 
-use super::super::ir::{Input, Op, Section};
+use crate::program::ir::{Input, Op, Section};
 
 /// How a section is spelled.
 pub struct SectionStyle<'a> {

@@ -8,10 +8,10 @@
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote, ToTokens};
 
-use super::super::ir::Input;
-use super::super::taylor::{TKind, TaylorProgram};
 use super::section::{constant, Scalar};
 use super::unrolled::{order_fn, order_fn_name};
+use crate::program::ir::Input;
+use crate::program::taylor::{TKind, TaylorProgram};
 
 /// `taylor_with_constants` (the dispatch by order), the straight-line functions it calls and
 /// `taylor_with_constants_loop`: the normalised Taylor coefficients of the solution through `(t, y)`;

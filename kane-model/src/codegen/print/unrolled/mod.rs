@@ -11,9 +11,9 @@ mod recur;
 use proc_macro2::{Literal, TokenStream};
 use quote::{format_ident, quote, ToTokens};
 
-use super::super::ir::Input;
-use super::super::taylor::{TKind, TaylorProgram};
 use super::section::{constant, Scalar};
+use crate::program::ir::Input;
+use crate::program::taylor::{TKind, TaylorProgram};
 use expr::X;
 
 /// The name of the straight-line function of order `order`.

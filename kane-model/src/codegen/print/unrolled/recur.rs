@@ -6,9 +6,9 @@
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote, ToTokens};
 
-use super::super::super::taylor::TKind;
 use super::super::section::{constant, Scalar};
 use super::expr::X;
+use crate::program::taylor::TKind;
 
 /// Names the coefficients: `coef(v, k)` is coefficient `k` of value `v`.
 pub type Coef<'a> = &'a dyn Fn(u32, usize) -> X;

@@ -8,7 +8,7 @@ use rustc_hash::FxHashMap;
 use crate::expr::{Arena, Compiler, ExprId, SymbolId};
 
 use super::super::ir::Section;
-use super::super::CodegenError;
+use super::super::LowerError;
 use super::hoist::Hoisted;
 
 /// What the explicit form reads and returns.
@@ -28,7 +28,7 @@ pub fn lower(
     ar: &mut Arena,
     form: &Explicit<'_>,
     params: &[SymbolId],
-) -> Result<(Section, Section), CodegenError> {
+) -> Result<(Section, Section), LowerError> {
     let is_param = |s: SymbolId| params.contains(&s);
     let mut hoisted = Hoisted::default();
     let mut roots = Vec::with_capacity(form.kinematics.len() + form.rates.len());

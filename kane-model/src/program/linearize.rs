@@ -73,7 +73,7 @@ fn column(program: &Program, params: &[f64], t: f64, y: &[f64], seed: Seed) -> C
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::codegen::ir::{Op, SectionBuilder};
+    use crate::program::ir::{Op, SectionBuilder};
 
     /// `q' = u`, `u' = -k sin q + p`: A = [[0, 1], [-k cos q, 0]], B (input p) = [[0], [1]].
     #[test]

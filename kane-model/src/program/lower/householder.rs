@@ -104,7 +104,7 @@ pub fn sum(b: &mut SectionBuilder, terms: &[u32], zero: u32) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::codegen::ir::Input;
+    use crate::program::ir::Input;
 
     /// Solves `a x = r` through the lowered code.
     fn solve(a: &[[f64; 3]; 3], r: [f64; 3]) -> Vec<f64> {

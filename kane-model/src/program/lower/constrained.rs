@@ -11,7 +11,7 @@ use crate::expr::{Arena, Compiler, ExprId, SymbolId};
 use crate::mechanics::{KaneEquations, SolvedLoads, SpeedConstraints};
 
 use super::super::ir::{Input, Op, Section, SectionBuilder};
-use super::super::CodegenError;
+use super::super::LowerError;
 use super::hoist::Hoisted;
 use super::householder::{self, sum, Factored};
 use super::inverse::{self, LoadValues};
@@ -23,7 +23,7 @@ pub fn lower(
     eqs: &KaneEquations,
     c: &SpeedConstraints,
     params: &[SymbolId],
-) -> Result<(Section, Section), CodegenError> {
+) -> Result<(Section, Section), LowerError> {
     let n = eqs.speeds.len() + c.dependent.len();
     let mut roots: Vec<ExprId> = block_roots(c);
     let first = roots.len();

@@ -7,12 +7,12 @@ use crate::expr::{Compiler, ExprId, SymbolId, TIME};
 use crate::spec::ModelSpec;
 
 use super::super::ir::{Input, OutputCode};
-use super::super::CodegenError;
+use super::super::LowerError;
 use super::constrained;
 use super::inverse;
 
 /// One [`OutputCode`] per output of `spec`; `params` are the constants the code reads.
-pub fn lower(spec: &mut ModelSpec, params: &[SymbolId]) -> Result<Vec<OutputCode>, CodegenError> {
+pub fn lower(spec: &mut ModelSpec, params: &[SymbolId]) -> Result<Vec<OutputCode>, LowerError> {
     let states = spec.states();
     let rates = spec.equations.speed_derivatives.clone();
     let mut symbols: FxHashMap<SymbolId, Input> = FxHashMap::default();
@@ -90,11 +90,7 @@ pub fn lower(spec: &mut ModelSpec, params: &[SymbolId]) -> Result<Vec<OutputCode
 /// cancel (|a_P| does not depend on the gimbal's q1) are gone; the code evaluates the original
 /// form, which is better conditioned (the expanded one cancels large terms when the gimbals
 /// spin fast).
-fn reads(
-    spec: &mut ModelSpec,
-    components: &[ExprId],
-    states: &[SymbolId],
-) -> Result<Vec<usize>, CodegenError> {
+fn reads(spec: &mut ModelSpec, components: &[ExprId], states: &[SymbolId]) -> Result<Vec<usize>, LowerError> {
     let mut read = vec![false; states.len()];
     for &e in components {
         let c = spec.model.collected_form_within_budget(e)?;

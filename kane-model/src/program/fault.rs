@@ -231,7 +231,7 @@ pub(crate) fn text(section: &Section, v: u32, name: &dyn Fn(Input) -> String, de
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::codegen::ir::SectionBuilder;
+    use crate::program::ir::SectionBuilder;
 
     fn named(input: Input) -> String {
         match input {

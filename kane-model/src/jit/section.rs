@@ -13,8 +13,8 @@ use cranelift_module::{default_libcall_names, Linkage, Module};
 
 use super::math::{self, Callee};
 use super::JitError;
-use crate::codegen::ir::{Input, Op, Section};
 use crate::expr::Func;
+use crate::program::ir::{Input, Op, Section};
 
 /// What a compiled section reads: time and five arrays.
 #[derive(Clone, Copy, Debug)]

@@ -6,11 +6,11 @@
 use crate::mechanics::{ldlt_operations, ORDER_N_FIRST_ABOVE};
 use crate::spec::ModelSpec;
 
-use super::super::CodegenError;
+use super::super::LowerError;
 use super::{mass_matrix, order_n, Lowered};
 
 /// The cheaper of the two forms of `spec`.
-pub fn lower(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
+pub fn lower(spec: &mut ModelSpec) -> Result<Lowered, LowerError> {
     if !spec.model.order_n_candidate(&spec.equations) {
         return mass_matrix(spec);
     }
@@ -28,7 +28,7 @@ pub fn lower(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
 }
 
 /// The order-n form when it has fewer `rhs` operations or the mass-matrix form failed.
-fn pick(mm: Result<Lowered, CodegenError>, on: Option<Lowered>) -> Result<Lowered, CodegenError> {
+fn pick(mm: Result<Lowered, LowerError>, on: Option<Lowered>) -> Result<Lowered, LowerError> {
     match (mm, on) {
         (Ok(m), Some(o)) if o.program.rhs.op_count() < m.program.rhs.op_count() => Ok(o),
         (Ok(m), _) => Ok(m),

@@ -17,7 +17,7 @@ use crate::expr::{ExprId, SymbolId, SymbolKind};
 use crate::spec::ModelSpec;
 
 use super::ir::Program;
-use super::CodegenError;
+use super::LowerError;
 
 /// A lowered program and the symbols it reads.
 #[derive(Clone, Debug)]
@@ -35,12 +35,12 @@ pub struct Lowered {
 /// Lowers `spec`: the mass-matrix form (the equations simplified, collected by state monomial,
 /// parameter-only parts hoisted into `param_constants`, the solve of `M u' = f` and every output
 /// lowered) or, for a tree of simple rotations where it takes fewer operations, the order-n form.
-pub fn lower(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
+pub fn lower(spec: &mut ModelSpec) -> Result<Lowered, LowerError> {
     choose::lower(spec)
 }
 
 /// The mass-matrix form of `spec` lowered.
-fn mass_matrix(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
+fn mass_matrix(spec: &mut ModelSpec) -> Result<Lowered, LowerError> {
     spec.model.form_equations(&mut spec.equations)?;
     let mut eqs = spec.equations.clone();
     // Generated code runs many times: the collected form is worth its derivation cost.
@@ -76,7 +76,7 @@ fn mass_matrix(spec: &mut ModelSpec) -> Result<Lowered, CodegenError> {
 }
 
 /// The order-n form of `spec` lowered, when the model is a tree it fits.
-fn order_n(spec: &mut ModelSpec) -> Result<Option<Lowered>, CodegenError> {
+fn order_n(spec: &mut ModelSpec) -> Result<Option<Lowered>, LowerError> {
     let Some(rates) = spec.model.order_n_rates(&spec.equations)? else { return Ok(None) };
     let eqs = &spec.equations;
     let (kinematics, speeds, rate_symbols) =
@@ -107,7 +107,7 @@ fn parameters(
     roots: &[ExprId],
     states: &[SymbolId],
     rates: &[SymbolId],
-) -> Result<Vec<SymbolId>, CodegenError> {
+) -> Result<Vec<SymbolId>, LowerError> {
     let ar = &spec.model.ar;
     let mut params = Vec::new();
     for s in ar.free_symbols(roots) {
@@ -116,7 +116,7 @@ fn parameters(
             SymbolKind::Time => {}
             _ if states.contains(&s) || rates.contains(&s) => {}
             _ if spec.inputs.contains(&s) => params.push(s),
-            _ => return Err(CodegenError::UnsupportedSymbol(ar.symbol_info(s).name.clone())),
+            _ => return Err(LowerError::UnsupportedSymbol(ar.symbol_info(s).name.clone())),
         }
     }
     Ok(params)

@@ -10,7 +10,7 @@ use crate::expr::{Arena, Compiler, ExprId, SymbolId};
 use crate::mechanics::{KaneEquations, SolvedLoads};
 
 use super::super::ir::{Input, Op, Section, SectionBuilder};
-use super::super::CodegenError;
+use super::super::LowerError;
 use super::hoist::Hoisted;
 use super::householder::{self, sum};
 use super::solve::{symmetric, upper_triangle};
@@ -21,7 +21,7 @@ pub fn lower(
     eqs: &KaneEquations,
     l: &SolvedLoads,
     params: &[SymbolId],
-) -> Result<(Section, Section), CodegenError> {
+) -> Result<(Section, Section), LowerError> {
     let n = eqs.speeds.len();
     let mut roots = upper_triangle(&eqs.mass_matrix);
     roots.extend(&eqs.forcing);

@@ -13,7 +13,7 @@ use thiserror::Error;
 
 pub use section::{CompiledSection, Reads};
 
-use super::ProgramModel;
+use crate::program::ProgramModel;
 use crate::runtime::{quaternion_from_dcm, ModelInfo};
 
 /// Why a section could not be compiled.

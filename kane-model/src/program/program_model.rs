@@ -10,9 +10,8 @@ use crate::spec::ModelSpec;
 use super::fault::{first_fault, near_division_by_zero, text, Fault};
 use super::ir::{Input, Program, Section};
 use super::meta::Meta;
-use super::print::is_quaternion;
 use super::taylor::{TaylorError, TaylorProgram};
-use super::{lower, CodegenError};
+use super::{lower, LowerError};
 
 /// A model evaluated from its lowered program. Each evaluation takes a scratch buffer `regs`
 /// (one per thread; reused, it saves allocating).
@@ -28,7 +27,7 @@ pub struct ProgramModel {
 
 impl ProgramModel {
     /// Lowers `spec` (its metadata leaked for the process's lifetime: see [`Meta::leak`]).
-    pub fn new(spec: &mut ModelSpec) -> Result<ProgramModel, CodegenError> {
+    pub fn new(spec: &mut ModelSpec) -> Result<ProgramModel, LowerError> {
         let lowered = lower(spec)?;
         let meta = Meta::of(spec, &lowered);
         let default = |name: &String| spec.default_of(name).filter(|v| v.is_finite()).unwrap_or(f64::NAN);
@@ -36,7 +35,7 @@ impl ProgramModel {
             info: meta.leak(),
             defaults: meta.params.iter().map(default).collect(),
             initial: meta.states.iter().map(default).collect(),
-            quaternion: spec.outputs.iter().map(|o| is_quaternion(&o.kind)).collect(),
+            quaternion: spec.outputs.iter().map(|o| o.kind.is_quaternion()).collect(),
             taylor: TaylorProgram::new(&lowered.program.rhs, lowered.states.len()),
             program: lowered.program,
         })

@@ -10,7 +10,7 @@ use crate::expr::{Arena, Compiler, ExprId, SymbolId};
 use crate::mechanics::KaneEquations;
 
 use super::super::ir::Section;
-use super::super::CodegenError;
+use super::super::LowerError;
 use super::hoist::Hoisted;
 use super::solve;
 
@@ -28,7 +28,7 @@ pub fn lower(
     ar: &mut Arena,
     eqs: &KaneEquations,
     params: &[SymbolId],
-) -> Result<(Section, Section), CodegenError> {
+) -> Result<(Section, Section), LowerError> {
     let r = hoisted_roots(ar, eqs, params)?;
     let n = eqs.speeds.len();
     let states: Vec<SymbolId> = eqs.coordinates.iter().chain(&eqs.speeds).copied().collect();
@@ -70,7 +70,7 @@ pub fn lower(
 /// products, reciprocals of constant pivots) replaced by constants computed once per parameter
 /// set; the determinant of each 2x2 block of `M`, collected by state monomial, appended so that
 /// its parameter parts are constants too (the gimbal's is `A + B cos^2 q2`).
-fn hoisted_roots(ar: &mut Arena, eqs: &KaneEquations, params: &[SymbolId]) -> Result<Roots, CodegenError> {
+fn hoisted_roots(ar: &mut Arena, eqs: &KaneEquations, params: &[SymbolId]) -> Result<Roots, LowerError> {
     let n = eqs.speeds.len();
     let mm = &eqs.mass_matrix;
     let mut rhs_roots: Vec<ExprId> = Vec::new();
