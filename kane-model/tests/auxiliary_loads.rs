@@ -68,7 +68,7 @@ fn contact_forces_brought_into_evidence_leave_the_rolling_disc_s_motion_as_it_wa
 #[test]
 fn check_accepts_the_auxiliary_speed_and_eoms_prints_its_equation() {
     let (ok, out, err) = kane(&["check", PRESCRIBED]);
-    assert!(ok && out.contains("1 speeds (U1)"), "{out}{err}");
+    assert!(ok && out.contains("1 speed (U1)"), "{out}{err}");
     let (ok, out, err) = kane(&["eoms", PRESCRIBED]);
     assert!(ok, "{err}");
     assert!(

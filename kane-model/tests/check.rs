@@ -155,7 +155,7 @@ fn the_kane_command_fails_on_a_contradiction_and_prints_warnings() {
     std::fs::write(&warn, PENDULUM.replace("INPUT M = 1,", "INPUT M = -2,")).unwrap();
     let (ok, out, err) = kane(&["check", warn.to_str().unwrap()]);
     assert!(ok, "{err}");
-    assert!(out.contains(": ok: 1 coordinates"), "{out}");
+    assert!(out.contains(": ok: 1 coordinate ("), "{out}");
     assert!(err.contains("implausible value of M"), "{err}");
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -208,13 +208,13 @@ fn check(file: PathBuf) -> Result<(), String> {
                 None => String::new(),
             };
             outln!(
-                "{}: ok: {} coordinates ({}), {} speeds ({}){dependent}, {} bodies; {}",
+                "{}: ok: {} ({}), {} ({}){dependent}, {}; {}",
                 file.display(),
-                e.coordinates.len(),
+                counted(e.coordinates.len(), "coordinate", "coordinates"),
                 names(&m, &e.coordinates).join(", "),
-                e.speeds.len(),
+                counted(e.speeds.len(), "speed", "speeds"),
                 names(&m, &e.speeds).join(", "),
-                m.model.bodies().len(),
+                counted(m.model.bodies().len(), "body", "bodies"),
                 equation_sizes(e, &m.model.ar),
             );
         }
@@ -531,4 +531,9 @@ fn show(file: PathBuf, name: String, frame: Option<String>) -> Result<(), String
         lang::show(&file.display().to_string(), &src, &name, frame.as_deref()).map_err(|r| r.render())?;
     outln!("{text}");
     Ok(())
+}
+
+/// `n` with the singular or plural noun (`1 body`, `2 bodies`).
+fn counted(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
 }
