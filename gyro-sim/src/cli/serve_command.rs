@@ -8,7 +8,7 @@ use super::CliError;
 use crate::models::Registry;
 use crate::scene::Scene;
 
-/// Loads the scene (a model file it names runs on the instant engine), runs it once and serves it.
+/// Loads the scene (a model file it names runs on the JIT engine), runs it once and serves it.
 pub fn serve_command(scene: &Path, port: u16, registry: Registry) -> Result<ExitCode, CliError> {
     let scene = Scene::load(scene)?;
     let (registry, warnings) = crate::model_run::with_file_model(&scene, registry)?;

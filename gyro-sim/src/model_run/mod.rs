@@ -4,7 +4,6 @@
 //! knowing its origin), the file's model on its engine in a registry, and the problem resolved
 //! once. Errors keep their origins as data ([`ModelRunError`]).
 
-mod edited;
 mod error;
 mod open_inputs;
 mod origins;
@@ -76,9 +75,7 @@ pub fn prepare(
     let file = ModelFile::from_source(request.file, source, drawn)?;
     let run = file.run.clone();
     let (model, to_compile, warnings) = match compiled.filter(|c| c.key == key) {
-        Some(c) => {
-            (edited::with_values_of(c.model, crate::models::instant_file_model(&file)), None, String::new())
-        }
+        Some(c) => (file.dress_compiled(c.model), None, String::new()),
         None => {
             let model = crate::models::in_process_model(&file, request.engine == Engine::Jit)?;
             let warnings = file.warnings.clone();

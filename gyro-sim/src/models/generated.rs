@@ -1,7 +1,9 @@
 //! The compiled engine's model: in comes a generated model type (`kane_derive::model!`, built
 //! into gyro-sim, a user's crate or a model file's cached binary); out goes a [`SimModel`] that
-//! integrates it with the solver instantiated for it. Its lowered program and mechanics, when
-//! known, come from one reading of its model file, made the first time either is asked.
+//! integrates it with the solver instantiated for it. Its mechanics (every run's plausibility
+//! check) and its lowered program (only to name the operation behind a failure), when known,
+//! are each made once, the first time they are asked: a run that does not fail never checks
+//! and lowers the file.
 
 use std::marker::PhantomData;
 use std::path::Path;
@@ -28,7 +30,7 @@ enum Origin {
 /// The generated model `M` on the compiled engine.
 struct Generated<M> {
     origin: Origin,
-    file: OnceLock<Option<ModelFile>>,
+    program: OnceLock<Option<Arc<ProgramModel>>>,
     mechanics: OnceLock<Option<Arc<Model>>>,
     model: PhantomData<fn() -> M>,
 }
@@ -54,17 +56,12 @@ pub fn generated_with_mechanics<M: GeneratedModel + 'static>(
 }
 
 fn with_origin<M: GeneratedModel + 'static>(origin: Origin) -> SharedModel {
-    Arc::new(Generated::<M> { origin, file: OnceLock::new(), mechanics: OnceLock::new(), model: PhantomData })
-}
-
-impl<M> Generated<M> {
-    /// The model file read, checked and lowered once, when it is known and still checks.
-    fn file(&self) -> Option<&ModelFile> {
-        let Origin::File(path, source) = self.origin else { return None };
-        self.file
-            .get_or_init(|| ModelFile::from_source(Path::new(path), source.to_string(), false).ok())
-            .as_ref()
-    }
+    Arc::new(Generated::<M> {
+        origin,
+        program: OnceLock::new(),
+        mechanics: OnceLock::new(),
+        model: PhantomData,
+    })
 }
 
 impl<M: GeneratedModel + 'static> SimModel for Generated<M> {
@@ -85,13 +82,17 @@ impl<M: GeneratedModel + 'static> SimModel for Generated<M> {
         solve_model::<M>(problem, rows_to)
     }
     fn program(&self) -> Option<Arc<ProgramModel>> {
-        self.file().map(|f| f.program.clone())
+        let Origin::File(path, source) = self.origin else { return None };
+        let lowered = || ModelFile::from_source(Path::new(path), source.to_string(), false).ok();
+        self.program.get_or_init(|| lowered().map(|f| f.program)).clone()
     }
     fn mechanics(&self) -> Option<Arc<Model>> {
-        match self.origin {
+        let loaded = |path: &str, source: &str| kane_model::lang::load_for_generation(path, source).ok();
+        let made = || match self.origin {
             Origin::Unknown => None,
-            Origin::File(..) => self.file().map(|f| f.model.clone()),
-            Origin::Mechanics(make) => self.mechanics.get_or_init(|| make().map(Arc::new)).clone(),
-        }
+            Origin::File(path, source) => loaded(path, source).map(|l| l.model),
+            Origin::Mechanics(make) => make(),
+        };
+        self.mechanics.get_or_init(|| made().map(Arc::new)).clone()
     }
 }

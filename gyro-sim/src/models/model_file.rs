@@ -121,7 +121,23 @@ impl ModelFile {
 
     /// `runs` (an engine's model of this file's program) with the file's mechanics and drawing.
     pub fn dress(&self, runs: SharedModel) -> SharedModel {
-        Arc::new(Dressed { runs, mechanics: self.model.clone(), drawing: self.drawing.clone() })
+        Arc::new(self.dressed(runs, None))
+    }
+
+    /// `runs` (a model compiled from this file's equations, perhaps before its INPUT values were
+    /// edited) with the file's program, mechanics, drawing and values as they are now, by name.
+    pub fn dress_compiled(&self, runs: SharedModel) -> SharedModel {
+        let (info, now) = (runs.info(), self.program.info());
+        let (params, initial) = (self.program.default_params(), self.program.initial_state());
+        let params = info.param_names.iter().map(|n| now.param(n).map_or(f64::NAN, |i| params[i])).collect();
+        let initial =
+            info.state_names.iter().map(|n| now.state(n).map_or(f64::NAN, |i| initial[i])).collect();
+        Arc::new(self.dressed(runs, Some((params, initial))))
+    }
+
+    fn dressed(&self, runs: SharedModel, values: Option<(Vec<f64>, Vec<f64>)>) -> Dressed {
+        let (program, mechanics, drawing) = (self.program.clone(), self.model.clone(), self.drawing.clone());
+        Dressed { runs, program, mechanics, drawing, values }
     }
 
     /// The file checked and lowered, with its drawing's outputs when `drawn`.
@@ -153,11 +169,15 @@ impl ModelFile {
     }
 }
 
-/// A model file's model on an engine, with the file's mechanics and drawing.
+/// A model file's model on an engine, with the file's program, mechanics and drawing, and the
+/// file's values when the engine's are not the file's as it is now.
 struct Dressed {
     runs: SharedModel,
+    program: Arc<ProgramModel>,
     mechanics: Arc<Model>,
     drawing: Option<Arc<Drawing>>,
+    /// Parameter defaults and initial state, in `runs`'s order.
+    values: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 impl SimModel for Dressed {
@@ -168,16 +188,16 @@ impl SimModel for Dressed {
         self.runs.engine()
     }
     fn initial_state(&self) -> Vec<f64> {
-        self.runs.initial_state()
+        self.values.as_ref().map_or_else(|| self.runs.initial_state(), |(_, y)| y.clone())
     }
     fn default_params(&self) -> Vec<f64> {
-        self.runs.default_params()
+        self.values.as_ref().map_or_else(|| self.runs.default_params(), |(p, _)| p.clone())
     }
     fn solve(&self, problem: &Problem, rows_to: Option<&RowStream>) -> Result<Trajectory, SolveError> {
         self.runs.solve(problem, rows_to)
     }
     fn program(&self) -> Option<Arc<ProgramModel>> {
-        self.runs.program()
+        Some(self.program.clone())
     }
     fn mechanics(&self) -> Option<Arc<Model>> {
         Some(self.mechanics.clone())
