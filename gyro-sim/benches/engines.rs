@@ -146,14 +146,21 @@ fn trial3_engines(c: &mut Criterion) {
         .collect();
     let jit_system = JitSystem::new(&jit, params);
     let mut g = c.benchmark_group("trial3_engines");
-    for (tab, tol) in [(&tableau::DOP853, 1e-6), (&tableau::DOP853, 1e-9), (&tableau::VERN9, 1e-12)] {
-        let m = Method::Adaptive(tab, Tolerances { rtol: tol, atol: tol });
+    let tolerances = |tol: f64| Tolerances { rtol: tol, atol: tol };
+    let methods = [
+        ("dop853", 1e-6, Method::Adaptive(&tableau::DOP853, tolerances(1e-6))),
+        ("dop853", 1e-9, Method::Adaptive(&tableau::DOP853, tolerances(1e-9))),
+        ("vern9", 1e-12, Method::Adaptive(&tableau::VERN9, tolerances(1e-12))),
+        ("taylor", 1e-9, Method::Taylor(tolerances(1e-9))),
+        ("taylor", 1e-12, Method::Taylor(tolerances(1e-12))),
+    ];
+    for (name, tol, m) in methods {
         let (e_builtin, e_jit) = (trial3(&builtin, m, &reference), trial3(&jit_system, m, &reference));
-        println!("{} tol {tol:e}: error built-in {e_builtin:.3e}, JIT {e_jit:.3e}", tab.name);
-        g.bench_function(format!("{}_{tol:e}/built_in", tab.name), |b| {
+        println!("{name} tol {tol:e}: error built-in {e_builtin:.3e}, JIT {e_jit:.3e}");
+        g.bench_function(format!("{name}_{tol:e}/built_in"), |b| {
             b.iter(|| black_box(trial3(&builtin, m, &reference)))
         });
-        g.bench_function(format!("{}_{tol:e}/jit", tab.name), |b| {
+        g.bench_function(format!("{name}_{tol:e}/jit"), |b| {
             b.iter(|| black_box(trial3(&jit_system, m, &reference)))
         });
     }

@@ -1,5 +1,5 @@
 //! The JIT engine computes what the evaluator (the instant engine) computes: `rhs`, every output
-//! and the parameter constants, at random states of the gimbal, the heavy top, the bicycle, the
+//! the Taylor coefficients and the parameter constants, at random states of the gimbal, the heavy top, the bicycle, the
 //! four-bar loop, the rolling disc and the 40-link chain.
 
 use std::path::Path;
@@ -51,7 +51,7 @@ fn params_of(model: &ProgramModel, scale: &[f64]) -> Vec<f64> {
         .collect()
 }
 
-fn check_model(which: usize, t: f64, raw: &[f64], scale: &[f64]) -> Result<(), TestCaseError> {
+fn check_model(which: usize, t: f64, raw: &[f64], scale: &[f64], order: usize) -> Result<(), TestCaseError> {
     let (evaluator, jit) = &models()[which];
     let info = evaluator.info();
     let n = info.state_names.len();
@@ -78,6 +78,41 @@ fn check_model(which: usize, t: f64, raw: &[f64], scale: &[f64]) -> Result<(), T
             output.name
         );
     }
+    check_taylor(which, t, &y, &params, order)
+}
+
+/// The Taylor coefficients through `(t, y)` up to `order`, on both engines, of a model that has
+/// them.
+fn check_taylor(which: usize, t: f64, y: &[f64], params: &[f64], order: usize) -> Result<(), TestCaseError> {
+    let (evaluator, jit) = &models()[which];
+    if evaluator.taylor_program().is_err() {
+        return Ok(());
+    }
+    let constants = evaluator.param_constants(params);
+    // Orders the JIT writes out and orders it loops over are both drawn.
+    let (mut want, mut got) = (vec![0.0; y.len() * (order + 1)], vec![0.0; y.len() * (order + 1)]);
+    let done = evaluator.taylor(t, y, params, &constants, order, &mut want, &mut Vec::new());
+    prop_assert_eq!(done, Ok(true));
+    prop_assert!(jit.taylor(t, y, params, &constants, order, &mut got, &mut Vec::new()));
+    prop_assert!(jit.prepare_taylor() == Some(Ok(())), "{}: Taylor coefficients not compiled", MODELS[which]);
+    // Near a singular configuration the coefficients grow without bound and their sums cancel:
+    // any order of summation gives different digits there, so such states are not compared.
+    let largest = want.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    prop_assume!(largest < 1e12);
+    // Each coefficient to 1e-13 of the largest of its order (at least 1) where the JIT loops as
+    // the evaluator does; orders written out sum as the generated Rust does (fused, in chains),
+    // so there to 1e-11, the bound the generated Rust's own orders are held to (`taylor.rs`):
+    // the four-bar loop's coefficients are small sums of large terms.
+    let tolerance = if jit.taylor_straight_line().contains(&order) { 1e-11 } else { 1e-13 };
+    let n1 = order + 1;
+    for (j, (a, b)) in want.iter().zip(&got).enumerate() {
+        let scale = want.iter().skip(j % n1).step_by(n1).fold(1.0f64, |m, c| m.max(c.abs()));
+        prop_assert!(
+            (a - b).abs() <= tolerance * scale,
+            "{}: Taylor coefficient {j} of order {order}: {a:e} against {b:e}",
+            MODELS[which]
+        );
+    }
     Ok(())
 }
 
@@ -90,8 +125,9 @@ proptest! {
         t in -3.0..3.0f64,
         raw in prop::collection::vec(-2.0..2.0f64, 1..12),
         scale in prop::collection::vec(0.5..2.0f64, 1..6),
+        order in 1..=24usize,
     ) {
-        check_model(which, t, &raw, &scale)?;
+        check_model(which, t, &raw, &scale, order)?;
     }
 }
 
@@ -103,5 +139,12 @@ fn every_model_compiles_and_names_its_outputs() {
         for k in 0..evaluator.info().outputs.len() {
             jit.prepare_output(k).unwrap();
         }
+        let has_taylor = evaluator.taylor_program().is_ok();
+        assert_eq!(jit.prepare_taylor().is_some(), has_taylor, "{name}");
+        if has_taylor {
+            jit.prepare_taylor().unwrap().unwrap();
+        }
     }
+    let (_, gimbal) = &models()[0];
+    assert!(gimbal.taylor_straight_line().contains(&16), "the gimbal's order 16 is written out");
 }

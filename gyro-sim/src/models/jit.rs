@@ -9,7 +9,7 @@ use kane_model::program::ProgramModel;
 use kane_model::runtime::ModelInfo;
 
 use super::model_file::ModelFile;
-use crate::ode::{System, TaylorWork};
+use crate::ode::{Method, System, TaylorWork};
 use crate::problem::{Engine, Pick, Problem, RowStream, SharedModel, SimModel, SolveError, Trajectory};
 use crate::solve::{solve_bound, BoundModel};
 
@@ -37,8 +37,10 @@ impl System for JitSystem<'_> {
         self.model.rhs(t, y, &self.params, &self.constants, dy)
     }
     fn taylor(&self, t: f64, y: &[f64], order: usize, out: &mut [f64], work: &mut TaylorWork) -> bool {
-        let evaluator = self.model.evaluator();
-        evaluator.taylor(t, y, &self.params, &self.constants, order, out, work) == Ok(true)
+        self.model.taylor(t, y, &self.params, &self.constants, order, out, work)
+    }
+    fn taylor_straight_line(&self) -> &[usize] {
+        self.model.taylor_straight_line()
     }
 }
 
@@ -79,6 +81,10 @@ impl SimModel for JitEngineModel {
                 // An output the JIT refuses is evaluated instead.
                 let _ = self.jit.prepare_output(k);
             }
+        }
+        if matches!(problem.method, Method::Taylor(_)) {
+            // Coefficients the JIT refuses are evaluated instead.
+            let _ = self.jit.prepare_taylor();
         }
         solve_bound(problem, &JitSystem::new(&self.jit, problem.params.clone()), rows_to)
     }

@@ -1,20 +1,24 @@
 //! The JIT engine: in comes a [`ProgramModel`] (a model's lowered program); out goes a
 //! [`JitModel`] whose sections run as machine code compiled in process by Cranelift, no Rust
-//! toolchain needed. `param_constants` and `rhs` are compiled at once, each output the first
-//! time it is asked for (a run pays only for what it writes); everything else (Taylor
-//! coefficients, output rates, faults) is the evaluator's.
+//! toolchain needed. `param_constants` and `rhs` are compiled at once, each output and the
+//! Taylor coefficients the first time they are asked for (a run pays only for what it uses);
+//! everything else (output rates, faults) is the evaluator's.
 
 mod math;
+mod native;
 mod section;
+mod taylor;
 
 use std::sync::{Arc, OnceLock};
 
 use thiserror::Error;
 
 pub use section::{CompiledSection, Reads};
+pub use taylor::CompiledTaylor;
 
 use crate::program::ProgramModel;
-use crate::runtime::{quaternion_from_dcm, ModelInfo};
+use crate::runtime::taylor::Row;
+use crate::runtime::{quaternion_from_dcm, ModelInfo, TaylorWork, TAYLOR_UNROLLED_ORDERS};
 
 /// Why a section could not be compiled.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -35,6 +39,10 @@ pub struct JitModel {
     param_constants: CompiledSection,
     rhs: CompiledSection,
     outputs: Vec<OnceLock<Result<CompiledSection, JitError>>>,
+    taylor: OnceLock<Option<Result<CompiledTaylor, JitError>>>,
+    /// The orders whose Taylor passes are written out, and their code once compiled.
+    straight_orders: Vec<usize>,
+    straight: Vec<OnceLock<Result<CompiledTaylor, JitError>>>,
     quaternion: Vec<bool>,
 }
 
@@ -46,7 +54,22 @@ impl JitModel {
         let rhs = CompiledSection::new(&program.rhs)?;
         let outputs = program.outputs.iter().map(|_| OnceLock::new()).collect();
         let quaternion = (0..program.outputs.len()).map(|k| evaluator.is_quaternion(k)).collect();
-        Ok(JitModel { evaluator, param_constants, rhs, outputs, quaternion })
+        let straight_orders = match evaluator.taylor_program() {
+            Ok(taylor) => taylor.straight_line_orders(TAYLOR_UNROLLED_ORDERS),
+            Err(_) => Vec::new(),
+        };
+        let straight = straight_orders.iter().map(|_| OnceLock::new()).collect();
+        let taylor = OnceLock::new();
+        Ok(JitModel {
+            evaluator,
+            param_constants,
+            rhs,
+            outputs,
+            taylor,
+            straight_orders,
+            straight,
+            quaternion,
+        })
     }
 
     /// The model's metadata.
@@ -54,7 +77,7 @@ impl JitModel {
         self.evaluator.info()
     }
 
-    /// The evaluator of the same program (Taylor coefficients, output rates, faults).
+    /// The evaluator of the same program (output rates, faults).
     pub fn evaluator(&self) -> &Arc<ProgramModel> {
         &self.evaluator
     }
@@ -92,6 +115,59 @@ impl JitModel {
         } else {
             section.run(&reads, out);
         }
+    }
+
+    /// Compiles the Taylor coefficients of any order now if they are not yet; None for a model
+    /// without them.
+    pub fn prepare_taylor(&self) -> Option<Result<(), JitError>> {
+        self.taylor_code().map(|r| r.as_ref().map(|_| ()).map_err(Clone::clone))
+    }
+
+    /// The orders whose Taylor coefficients are written out (faster than the others), each
+    /// compiled the first time it is asked for.
+    pub fn taylor_straight_line(&self) -> &[usize] {
+        &self.straight_orders
+    }
+
+    /// The normalised Taylor coefficients through `(t, y)` up to `order` (see
+    /// [`ProgramModel::taylor`]); false for a model without them or an order past the
+    /// largest. Coefficients the code generator refuses are evaluated instead.
+    #[allow(clippy::too_many_arguments)]
+    pub fn taylor(
+        &self,
+        t: f64,
+        y: &[f64],
+        params: &[f64],
+        constants: &[f64],
+        order: usize,
+        out: &mut [f64],
+        work: &mut TaylorWork,
+    ) -> bool {
+        let code = match self.straight_code(order) {
+            Some(Ok(code)) => Some(code),
+            _ => self.taylor_code().and_then(|r| r.as_ref().ok()),
+        };
+        match code {
+            Some(code) => {
+                let passes = |w: &mut [Row<f64>], order| code.passes(w, order);
+                self.evaluator.taylor_by(t, y, params, constants, order, out, work, passes)
+            }
+            None => self.evaluator.taylor(t, y, params, constants, order, out, work) == Ok(true),
+        }
+    }
+
+    fn taylor_code(&self) -> Option<&Result<CompiledTaylor, JitError>> {
+        let code = self.taylor.get_or_init(|| {
+            let program = self.evaluator.taylor_program().ok()?;
+            Some(CompiledTaylor::new(program))
+        });
+        code.as_ref()
+    }
+
+    fn straight_code(&self, order: usize) -> Option<&Result<CompiledTaylor, JitError>> {
+        let i = self.straight_orders.iter().position(|&o| o == order)?;
+        let program = self.evaluator.taylor_program().ok()?;
+        Some(self.straight[i].get_or_init(|| CompiledTaylor::straight_line(program, order)))
     }
 
     fn output_section(&self, k: usize) -> Result<&CompiledSection, JitError> {

@@ -5,13 +5,13 @@
 
 use std::collections::{HashMap, HashSet};
 
-use cranelift_codegen::ir::{self, types, AbiParam, InstBuilder, MemFlagsData, UserFuncName, Value};
-use cranelift_codegen::settings::{self, Configurable};
-use cranelift_frontend::{FunctionBuilder, FunctionBuilderContext};
-use cranelift_jit::{JITBuilder, JITModule};
-use cranelift_module::{default_libcall_names, Linkage, Module};
+use cranelift_codegen::ir::{self, types, AbiParam, InstBuilder, MemFlagsData, Value};
+use cranelift_frontend::FunctionBuilder;
+use cranelift_jit::JITModule;
+use cranelift_module::{Linkage, Module};
 
 use super::math::{self, Callee};
+use super::native::{NativeCode, Param};
 use super::JitError;
 use crate::expr::Func;
 use crate::program::ir::{Input, Op, Section};
@@ -41,27 +41,10 @@ type NativeFn =
 
 /// A section compiled to machine code, callable from any thread.
 pub struct CompiledSection {
-    module: Option<JITModule>,
-    function: NativeFn,
+    code: NativeCode,
     /// The least length of each array the code reads (one past the largest index).
     lengths: [usize; ARRAYS],
     results: usize,
-}
-
-// SAFETY: after `finalize_definitions` the module is never touched again but to free its
-// memory on drop; the code it holds is immutable and reads only its arguments.
-unsafe impl Send for CompiledSection {}
-// SAFETY: as above; calling the code mutates nothing but the caller's `out`.
-unsafe impl Sync for CompiledSection {}
-
-impl Drop for CompiledSection {
-    fn drop(&mut self) {
-        if let Some(module) = self.module.take() {
-            // SAFETY: `function` points into this module's memory and is dropped with it; no
-            // call can be running, since a call borrows `self`.
-            unsafe { module.free_memory() }
-        }
-    }
 }
 
 impl std::fmt::Debug for CompiledSection {
@@ -73,32 +56,10 @@ impl std::fmt::Debug for CompiledSection {
 impl CompiledSection {
     /// Compiles `section` for this machine.
     pub fn new(section: &Section) -> Result<CompiledSection, JitError> {
-        let mut module = new_module()?;
-        let pointer = module.target_config().pointer_type();
-        let mut ctx = module.make_context();
-        ctx.func.signature.params.push(AbiParam::new(types::F64));
-        for _ in 0..=ARRAYS {
-            ctx.func.signature.params.push(AbiParam::new(pointer));
-        }
-        let id = module
-            .declare_function("section", Linkage::Local, &ctx.func.signature)
-            .map_err(|e| JitError::Compile(e.to_string()))?;
-        ctx.func.name = UserFuncName::user(0, id.as_u32());
-        let mut fctx = FunctionBuilderContext::new();
-        let lengths = {
-            let mut b = FunctionBuilder::new(&mut ctx.func, &mut fctx);
-            let mut body = Body::new(&mut module, &mut b);
-            let lengths = body.emit(section)?;
-            b.finalize(module.target_config());
-            lengths
-        };
-        module.define_function(id, &mut ctx).map_err(|e| JitError::Compile(format!("{e:?}")))?;
-        module.clear_context(&mut ctx);
-        module.finalize_definitions().map_err(|e| JitError::Compile(e.to_string()))?;
-        let code = module.get_finalized_function(id);
-        // SAFETY: `code` was compiled from a signature of exactly these parameters.
-        let function = unsafe { std::mem::transmute::<*const u8, NativeFn>(code) };
-        Ok(CompiledSection { module: Some(module), function, lengths, results: section.results.len() })
+        let mut params = vec![Param::F64];
+        params.extend([Param::Pointer; ARRAYS + 1]);
+        let (code, lengths) = NativeCode::compile(&params, |module, b| Body::new(module, b).emit(section))?;
+        Ok(CompiledSection { code, lengths, results: section.results.len() })
     }
 
     /// Number of results.
@@ -121,30 +82,12 @@ impl CompiledSection {
         }
         assert!(out.len() >= self.results, "a compiled section writes {} results", self.results);
         let [y, params, constants, rates, slots] = arrays.map(<[f64]>::as_ptr);
+        // SAFETY: the code was compiled from a signature of exactly these parameters.
+        let function = unsafe { std::mem::transmute::<*const u8, NativeFn>(self.code.address()) };
         // SAFETY: every index the code reads is below the lengths checked above, and it writes
         // `out[..results]` only.
-        unsafe { (self.function)(reads.t, y, params, constants, rates, slots, out.as_mut_ptr()) }
+        unsafe { function(reads.t, y, params, constants, rates, slots, out.as_mut_ptr()) }
     }
-}
-
-/// A module for this machine, the math callees in its symbol table.
-fn new_module() -> Result<JITModule, JitError> {
-    let mut flags = settings::builder();
-    let set = |flags: &mut settings::Builder, name: &str, value: &str| {
-        flags.set(name, value).map_err(|e| JitError::Compile(e.to_string()))
-    };
-    set(&mut flags, "use_colocated_libcalls", "false")?;
-    set(&mut flags, "is_pic", "false")?;
-    set(&mut flags, "opt_level", "speed")?;
-    let isa = cranelift_native::builder()
-        .map_err(|e| JitError::UnsupportedHost(e.to_string()))?
-        .finish(settings::Flags::new(flags))
-        .map_err(|e| JitError::UnsupportedHost(e.to_string()))?;
-    let mut builder = JITBuilder::with_isa(isa, default_libcall_names());
-    for callee in math::all() {
-        builder.symbol(callee.name, callee.address);
-    }
-    Ok(JITModule::new(builder))
 }
 
 /// The function body being emitted: its block's parameters and the callees declared so far.
@@ -173,19 +116,19 @@ impl<'m, 'b, 'f> Body<'m, 'b, 'f> {
         let (t, arrays, out) = (params[0], &params[1..=ARRAYS], params[ARRAYS + 1]);
         self.paired = paired_operands(section);
         let mut lengths = [0; ARRAYS];
+        let mut load_input = |body: &mut Self, k: u32| -> Result<Value, JitError> {
+            match array_of(section.inputs[k as usize]) {
+                None => Ok(t),
+                Some((array, index)) => {
+                    lengths[array] = lengths[array].max(index + 1);
+                    body.load(arrays[array], index)
+                }
+            }
+        };
         let mut values: Vec<Value> = Vec::with_capacity(section.ops.len());
         for op in &section.ops {
             let value = match *op {
-                Op::Input(k) => {
-                    let input = section.inputs[k as usize];
-                    match array_of(input) {
-                        None => t,
-                        Some((array, index)) => {
-                            lengths[array] = lengths[array].max(index + 1);
-                            self.load(arrays[array], index)?
-                        }
-                    }
-                }
+                Op::Input(k) => load_input(self, k)?,
                 ref op => self.operation(op, &section.ops, &values)?,
             };
             values.push(value);

@@ -4,6 +4,7 @@
 
 use crate::assembly::{Assembly, AssemblyError};
 use crate::runtime::dual::Dual;
+use crate::runtime::taylor::Row;
 use crate::runtime::{quaternion_from_dcm, ModelInfo, TaylorWork};
 use crate::spec::ModelSpec;
 
@@ -121,8 +122,27 @@ impl ProgramModel {
         work: &mut TaylorWork,
     ) -> Result<bool, TaylorError> {
         let program = self.taylor.as_ref().map_err(Clone::clone)?;
+        let passes = |w: &mut [Row<f64>], order| (1..order).for_each(|k| program.pass(w, k));
+        Ok(self.taylor_by(t, y, params, constants, order, out, work, passes))
+    }
+
+    /// [`Self::taylor`] with the passes `1..order` run by `passes` (see
+    /// [`TaylorProgram::coefficients_by`]); false without a Taylor program.
+    #[allow(clippy::too_many_arguments)]
+    pub fn taylor_by(
+        &self,
+        t: f64,
+        y: &[f64],
+        params: &[f64],
+        constants: &[f64],
+        order: usize,
+        out: &mut [f64],
+        work: &mut TaylorWork,
+        passes: impl FnOnce(&mut [Row<f64>], usize),
+    ) -> bool {
+        let Ok(program) = self.taylor.as_ref() else { return false };
         let at = At { t, y, rates: &[], params, constants };
-        Ok(program.coefficients(t, y, |input| at.read(input), order, out, work))
+        program.coefficients_by(t, y, |input| at.read(input), order, out, work, passes)
     }
 
     /// Output `k` at `(t, y)` into `out` (its columns); `rates` are `u'` when it needs them.

@@ -8,6 +8,7 @@
 //! builds a new one.
 
 mod direct;
+mod lock;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -167,6 +168,9 @@ pub fn ensure_binary(file: &ModelFile, taylor: bool, drawn: bool) -> Result<(Pat
     let dir = cache_dir().join("models").join(format!("gyro-models-{}", tool_id()));
     write_model(&dir, &crate_name, file, &sources, Generated { taylor, drawn })?;
     eprintln!("compiling the model {} (once per version of the file):", file.path.display());
+    if let Some(note) = lock::wait_note(&target, profile_folder(&profile)) {
+        eprintln!("{note}");
+    }
     let cargo = std::env::var_os("CARGO").map_or_else(|| PathBuf::from("cargo"), PathBuf::from);
     if let Some(libs) = direct::libraries(&cargo, &sources, &target, &profile) {
         let main = dir.join("src").join("bin").join(format!("{crate_name}.rs"));

@@ -182,6 +182,25 @@ impl TaylorProgram {
         out: &mut [T],
         work: &mut Vec<recur::Row<T>>,
     ) -> bool {
+        self.coefficients_by(t, y, read, order, out, work, |w, order| {
+            (1..order).for_each(|k| self.pass(w, k))
+        })
+    }
+
+    /// [`Self::coefficients`] with the passes `1..order` run by `passes(w, order)` (which must
+    /// compute what [`Self::pass`] does for each): order 0 and the states' last coefficient are
+    /// computed here.
+    #[allow(clippy::too_many_arguments)]
+    pub fn coefficients_by<T: Float>(
+        &self,
+        t: T,
+        y: &[T],
+        read: impl Fn(Input) -> T,
+        order: usize,
+        out: &mut [T],
+        work: &mut Vec<recur::Row<T>>,
+        passes: impl FnOnce(&mut [recur::Row<T>], usize),
+    ) -> bool {
         let nv = self.ops.len();
         if !recur::start(work, nv, order, &self.constants, self.time.map(|v| (v, t))) {
             return false;
@@ -196,16 +215,20 @@ impl TaylorProgram {
                 kind => apply(kind, w, 0, v),
             }
         }
-        for k in 1..order {
-            recur::states(w, k, &self.states);
-            for (v, op) in self.ops.iter().enumerate() {
-                if op.series && !matches!(op.kind, TKind::Time | TKind::State(_)) {
-                    apply(op.kind, w, k, v);
-                }
-            }
-        }
+        passes(w, order);
         recur::finish(w, order, y, &self.results, out);
         true
+    }
+
+    /// Pass `k >= 1` on rows whose coefficients below `k` are known: the states' coefficient
+    /// `k`, then every varying value's.
+    pub fn pass<T: Float>(&self, w: &mut [recur::Row<T>], k: usize) {
+        recur::states(w, k, &self.states);
+        for (v, op) in self.ops.iter().enumerate() {
+            if op.series && !matches!(op.kind, TKind::Time | TKind::State(_)) {
+                apply(op.kind, w, k, v);
+            }
+        }
     }
 
     /// Terms the straight-line code of `order` writes out: a varying product-like operation
