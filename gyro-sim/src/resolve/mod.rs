@@ -11,6 +11,7 @@ mod presets;
 pub use initial::{sleeping_threshold, steady_precession};
 
 use kane_model::lang::units::normalised;
+use kane_model::lang::units::size::unit_size;
 use kane_model::runtime::{ModelInfo, OutputKind};
 
 use crate::models::Registry;
@@ -425,23 +426,57 @@ fn in_model_units(
         ("RAD/S", Some("DEG/S")) => v.number * deg,
         (_, None) => v.number,
         (m, Some(u)) if m == u => v.number,
-        (_, Some(u)) => {
-            let shown = if mu.is_empty() { "no unit" } else { model_unit };
-            return Err(scene.error_at(
-                span.clone(),
-                format!("`{name}` is in {shown}, not {u}"),
-                &format!(
-                    "write a plain number (in {}) or give a compatible unit",
-                    if mu.is_empty() { "the model's units" } else { model_unit }
-                ),
-            ));
-        }
+        (m, Some(u)) => match convertible(m, u) {
+            Some(factor) => v.number * factor,
+            None => {
+                let shown = if mu.is_empty() { "no unit" } else { model_unit };
+                return Err(scene.error_at(
+                    span.clone(),
+                    format!("`{name}` is in {shown}, not {u}"),
+                    &format!(
+                        "write a plain number (in {}) or give a compatible unit",
+                        if mu.is_empty() { "the model's units" } else { model_unit }
+                    ),
+                ));
+            }
+        },
     })
+}
+
+/// The factor a value in `given` is multiplied by to be in the model's unit `declared` (both
+/// normalised), read as INPUT lines read units: into SI where nothing is declared, radians for
+/// angles, else into the declared unit; None when the two do not measure the same thing.
+fn convertible(declared: &str, given: &str) -> Option<f64> {
+    let given = unit_size(given).ok()?;
+    if declared.is_empty() {
+        return Some(given.si);
+    }
+    let declared = unit_size(declared).ok()?;
+    if declared.dim != given.dim {
+        return None;
+    }
+    // Angles are radians inside the model, whatever unit the CSV shows.
+    let angle = declared.dim[3] != 0;
+    Some(if angle { given.si } else { given.si / declared.si })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn scene_and_set_values_read_units_as_input_lines_do() {
+        let close = |a: Option<f64>, b: f64| a.is_some_and(|a| (a - b).abs() <= 1e-12 * b.abs());
+        let rev = 2.0 * std::f64::consts::PI;
+        assert!(close(convertible("RAD/S", "RPM"), rev / 60.0), "600 rpm on a speed in rad/s");
+        assert!(close(convertible("M", "CM"), 0.01));
+        assert!(close(convertible("M", "MM"), 0.001));
+        assert!(close(convertible("", "DEG"), std::f64::consts::PI / 180.0), "an angle with no UNITS");
+        assert!(close(convertible("", "CM"), 0.01));
+        assert!(close(convertible("DEG/S", "RPM"), rev / 60.0), "angles are radians inside");
+        assert_eq!(convertible("M", "KG"), None);
+        assert_eq!(convertible("M", "FURLONG"), None);
+    }
 
     const HEAD: &str = "model = \"heavy_top\"\nt_final = 1.0\noutput_step = 0.1\n";
     const NAMES: &str = "quaternion = [\"E4\", \"E1\", \"E2\", \"E3\"]\n";

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A sharded sweep on a real Slurm: one node on this machine (Debian's slurm-wlm with munge,
 # installed when missing, daemons started here and stopped at the end), a stepped job array of 4
-# tasks (--array=0-6:2: ids 0, 2, 4, 6, each shard (ID-MIN)/STEP+1 of 4) running the README's job
+# tasks (--array=0-6:2: ids 0, 2, 4, 6, each shard (ID-MIN)/STEP+1 of 4) running the guide's job
 # script, `sweep-merge` (which checks every member is there once), and a byte-for-byte comparison
 # with the same sweep run unsharded; then the same array with one task failing (as a lost node
 # would), whose merge must be refused naming the missing members. Skips (exit 0, saying why) where Slurm cannot be installed or started:
@@ -69,7 +69,7 @@ done
 sweep=(gyro-sim/scenes/paper/trial3.toml --vary "U3=50:150 rad/s" --vary "Z=0:20" --samples 200 --seed 7)
 cd "$repo"
 target/release/gyro-sim sweep "${sweep[@]}" --out "$work/whole" >/dev/null
-# The README's job script, with 4 array tasks on stepped ids, as array NAME whose task LOST fails.
+# The guide's job script (docs/sweeps.md), with 4 array tasks on stepped ids, as array NAME whose task LOST fails.
 job() {
   cat >"$work/$1.sh" <<JOB
 #!/bin/bash

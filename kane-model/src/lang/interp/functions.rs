@@ -192,9 +192,11 @@ fn unknown_function(name: &str, upper: &str, span: &Span) -> Diagnostic {
     let d = Diagnostic::error(span.clone(), format!("unknown function `{name}`"));
     match nearest_command(upper) {
         Some(k) => d.with_help(format!(
-            "did you mean `{k}`? See the README for the supported functions and commands"
+            "did you mean `{k}`? See docs/language-reference.md for the supported functions and commands"
         )),
-        None => d.with_help("see the README for the supported Autolev functions and commands"),
+        None => {
+            d.with_help("see docs/language-reference.md for the supported Autolev functions and commands")
+        }
     }
 }
 
