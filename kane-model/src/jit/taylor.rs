@@ -420,7 +420,7 @@ impl Pass<'_, '_> {
 
     /// `sum_j c_j x_{x0+j} y_{k+y0-j}` over `n` terms: a loop in the runtime's order, or for a
     /// fixed `k` written out without the terms known to be zero, summed as the generated Rust
-    /// sums ([`Self::latency_sum`]).
+    /// sums ([`Self::early_sum`]).
     fn sum(
         &mut self,
         x: usize,
