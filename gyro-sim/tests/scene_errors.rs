@@ -220,6 +220,14 @@ fn a_parameter_without_a_value_names_the_model_file() {
         "{text}"
     );
     assert!(text.contains("help: set it under [parameters] (M1 = ...)"), "{text}");
+    // A run of the file alone names the flag that gives the value.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_gyro-sim"))
+        .args(["run", "--model", "no_m1.al", "--engine", "instant", "--out", "out_model"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stderr).to_string();
+    assert!(!out.status.success() && text.contains("`--set M1=VALUE`"), "{text}");
 }
 
 #[test]

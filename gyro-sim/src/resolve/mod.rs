@@ -236,7 +236,9 @@ fn without_value(scene: &Scene, what: &str, name: &str, value: f64, table: &str)
     scene.error_at(
         scene.model_span.clone(),
         format!("{what} `{name}` {problem}: {origin}, and the scene sets none"),
-        &format!("set it under {table} ({name} = ...), or give it on the model file's INPUT line"),
+        &format!(
+            "set it under {table} ({name} = ...) or with `--set {name}=VALUE`, or give it on the model file's INPUT line"
+        ),
     )
 }
 
