@@ -115,3 +115,17 @@ fn a_closed_pipe_ends_the_command_quietly() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success() && !err.contains("panicked"), "{:?} {err}", out.status);
 }
+
+#[test]
+fn linearize_says_where_it_linearised() {
+    let pendulum = concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/examples/pendulum.al");
+    let (ok, out, err) = kane(&["linearize", pendulum, "--set", "Q=0.25"]);
+    assert!(ok, "{err}");
+    assert!(out.contains("at t = 0: Q = 0.25, U = 0"), "{out}");
+    assert!(out.contains("inputs: none"), "{out}");
+    let (ok, out, err) = kane(&["linearize", pendulum, "--json"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["t"], 0.0);
+    assert!((v["point"]["Q"].as_f64().unwrap() - 30f64.to_radians()).abs() < 1e-15, "{out}");
+}

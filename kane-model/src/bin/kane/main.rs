@@ -361,15 +361,20 @@ fn linearize(file: PathBuf, set: Vec<String>, inputs: Vec<String>, json: bool) -
     if json {
         let assembled: serde_json::Map<String, serde_json::Value> =
             moved.iter().map(|(n, _, to)| (n.to_string(), serde_json::json!(to))).collect();
-        outln!(
-            "{}",
-            serde_json::json!({ "states": states, "inputs": inputs, "assembled": assembled, "A": l.a, "B": l.b })
-        );
+        let point: serde_json::Map<String, serde_json::Value> =
+            states.iter().zip(&y).map(|(n, v)| (n.to_string(), serde_json::json!(v))).collect();
+        let value = serde_json::json!({
+            "states": states, "inputs": inputs, "t": 0.0, "point": point, "assembled": assembled, "A": l.a, "B": l.b
+        });
+        outln!("{value}");
     } else {
         for (n, from, to) in moved {
             outln!("assembled: {n} = {to} (from {from}) so the configuration constraints hold");
         }
-        outln!("states: {}\ninputs: {}", states.join(", "), inputs.join(", "));
+        let point: Vec<String> = states.iter().zip(&y).map(|(n, v)| format!("{n} = {v}")).collect();
+        outln!("at t = 0: {} (states in the model's units, radians for angles)", point.join(", "));
+        let inputs = if inputs.is_empty() { "none".to_string() } else { inputs.join(", ") };
+        outln!("states: {}\ninputs: {inputs}", states.join(", "));
         for (n, row) in states.iter().zip(l.a.iter().zip(&l.b)) {
             let cells: Vec<String> = row.0.iter().chain(row.1).map(|x| format!("{x:.12e}")).collect();
             outln!("{n}' : {}", cells.join(" "));
