@@ -69,11 +69,6 @@ impl CompiledTaylor {
         Ok(CompiledTaylor { code, rows: program.ops.len(), order })
     }
 
-    /// The order whose passes it runs at once; None when it runs one pass of any `k`.
-    pub fn order(&self) -> Option<usize> {
-        self.order
-    }
-
     /// Passes `1..order` on the rows `w`, whose coefficients of order 0 are known.
     ///
     /// # Panics
