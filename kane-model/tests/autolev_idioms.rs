@@ -527,3 +527,54 @@ fn a_matrix_of_vectors_dots_into_a_matrix() {
     let text = fails("NEWTONIAN N\nX = DOT(N1>, [N1>, N2>; N3>])\n");
     assert!(text.contains("matrix rows have different lengths"), "{text}");
 }
+
+#[test]
+fn exclude_of_u_independent_rates_drops_the_independent_speeds_rates_after_constrain() {
+    let src = "NEWTONIAN N\nPARTICLES P\nVARIABLES Q{2}', U{2}'\nCONSTANTS M, G, F\nMASS P = M\n\
+               Q1' = U1\nQ2' = U2\nDEPENDENT[1] = U2 - U1\nCONSTRAIN(DEPENDENT[U2])\n\
+               P_NO_P> = Q1*N1> + Q2*N2>\nV_P_N> = U1*N1> + U2*N2>\n\
+               GRAVITY(-G*N2>)\nFORCE_P> += F*N1>\nZERO = FR() + FRSTAR()\n\
+               B = EXCLUDE(ZERO[1], [U_INDEPENDENT'; G])\nC = EXCLUDE(ZERO[1], [U1'; G])\n\
+               MU = COEF(ZERO[1], U1')\n";
+    let (m, _) = checks(src);
+    let values = [("M", 2.0), ("G", 9.81), ("F", 3.0), ("U1'", 5.0), ("U2'", 7.0)];
+    assert_eq!(number(&m, "B", &values), 3.0);
+    assert_eq!(number(&m, "C", &values), 3.0);
+    // After CONSTRAIN, as in Autolev, the dependent rate U2' is U1': COEF gives the whole mass.
+    assert_eq!(number(&m, "MU", &values), -4.0);
+    // A file that declares the name keeps its own meaning.
+    let (m, _) = checks(&src.replace("CONSTANTS M, G, F", "CONSTANTS M, G, F\nVARIABLES U_INDEPENDENT'"));
+    assert_eq!(number(&m, "B", &values), 3.0 - 4.0 * 5.0);
+}
+
+#[test]
+fn input_of_a_name_assigned_an_expression_is_its_value_at_the_inputs() {
+    let src = "NEWTONIAN N\nVARIABLES Q', U, W\nCONSTANTS R, A\nA = PI/2\nU = R*Q'\nW = R*COS(Q)\n\
+               INPUT R = 2, Q' = 3\nX = INPUT(U)*INPUT(A)\n";
+    let (m, _) = checks(src);
+    assert!((number(&m, "X", &[]) - 6.0 * std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+    // An expression in a name without an INPUT value names that name.
+    let text = fails(&src.replace("INPUT(U)*", "INPUT(W)*"));
+    assert!(text.contains("`W` has no INPUT value yet (its expression holds `Q`, which has none)"), "{text}");
+}
+
+#[test]
+fn nicheck_adds_the_work_of_the_active_forces_to_the_kinetic_energy() {
+    let src = "NEWTONIAN N\nPARTICLES P\nVARIABLES Q{2}', U{2}'\nCONSTANTS M, G, F\nMASS P = M\n\
+               Q1' = U1\nQ2' = U2\nDEPENDENT[1] = U2 - U1\nCONSTRAIN(DEPENDENT[U2])\n\
+               P_NO_P> = Q1*N1> + Q2*N2>\nV_P_N> = U1*N1> + U2*N2>\nGRAVITY(-G*N2>)\n\
+               FORCE_P> += F*N1>\nZERO = FR() + FRSTAR()\nKANE()\nCHECK = NICHECK()\n";
+    let (m, _) = checks(src);
+    let values = [("M", 2.0), ("G", 9.81), ("F", 3.0), ("U1", 1.0), ("U2", 1.0), ("WCHECK1", 0.5)];
+    // KE = M (U1^2 + U2^2) / 2 = 2.
+    assert!((number(&m, "CHECK", &values) - 2.5).abs() < 1e-12);
+    // Its rate is minus the power of gravity and F along the constrained motion: -(F - M G) U1.
+    let w = m.model.ar.lookup("WCHECK1").unwrap();
+    let rate = m.model.kinematics(w).expect("WCHECK1 has a rate");
+    let v = m.model.ar.eval(&[rate], at(&m, &values)).unwrap()[0];
+    assert!((v - (2.0 * 9.81 - 3.0)).abs() < 1e-12, "{v}");
+    // Its initial value is 0.
+    assert!(m.inputs.iter().any(|i| i.name == "WCHECK1" && i.value == 0.0));
+    let text = fails(&src.replace("NICHECK()", "NICHECK(M)"));
+    assert!(text.contains("NICHECK takes no arguments"), "{text}");
+}

@@ -32,7 +32,7 @@ fn point_with_no_path() {
 }
 
 #[test]
-fn unsupported_command() {
+fn energy_check_without_speeds() {
     insta::assert_snapshot!(rendered("VARIABLES X\nE = NICHECK()\n"));
 }
 

@@ -7,6 +7,8 @@
 #   CACHE  where repositories are fetched (default: ~/.cache/kane-survey)
 #   KIND   research (default), course, grammar or all
 #   KANE and GYRO_SIM in the environment: the binaries to survey (default: built here, release)
+#   SURVEY_SOURCE in the environment: where OWNER/NAME repositories are fetched from (default:
+#   https://github.com; a folder of local clones laid out OWNER/NAME works too)
 # Writes CACHE/results.tsv (path, check, gen, run, first error) and prints the counts.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -25,7 +27,7 @@ checkout() {
   local repo=$1 commit=$2 dir="$cache/repos/${1//\//+}@${2:0:10}"
   if [ ! -d "$dir/.git" ]; then
     git init -q "$dir"
-    git -C "$dir" fetch -q --depth 1 "https://github.com/$repo" "$commit"
+    git -C "$dir" fetch -q --depth 1 "${SURVEY_SOURCE:-https://github.com}/$repo" "$commit"
     git -C "$dir" checkout -q FETCH_HEAD
   fi
   echo "$dir"

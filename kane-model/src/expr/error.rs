@@ -20,15 +20,15 @@ pub enum ExprError {
     /// Evaluation produced NaN or infinity.
     #[error("evaluation is not finite ({value}) for `{expr}`")]
     NotFinite {
-        /// The expression, printed.
+        /// The expression, printed in backquotes (or described, when large).
         expr: String,
         /// The value produced.
         value: f64,
     },
     /// An expression asked to be linear in some symbols is not.
-    #[error("`{expr}` is not linear in `{symbol}`")]
+    #[error("{expr} is not linear in `{symbol}`")]
     NotLinear {
-        /// The expression, printed.
+        /// The expression, printed in backquotes (or described, when large).
         expr: String,
         /// The symbol it is not linear in.
         symbol: String,

@@ -20,10 +20,12 @@ impl Arena {
             let c = self.diff(e, s)?;
             let free = self.free_symbols(&[c]);
             if let Some(&bad) = syms.iter().find(|x| free.contains(x)) {
-                return Err(ExprError::NotLinear {
-                    expr: self.to_text(e),
-                    symbol: self.symbol_info(bad).name.clone(),
-                });
+                // A large expression's text would take longer to print than to read.
+                let expr = match self.graph_size(e) {
+                    n if n <= 200 => format!("`{}`", self.to_text(e)),
+                    n => format!("an expression of {n} nodes"),
+                };
+                return Err(ExprError::NotLinear { expr, symbol: self.symbol_info(bad).name.clone() });
             }
             coeffs.push(c);
         }

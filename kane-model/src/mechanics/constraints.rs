@@ -106,6 +106,37 @@ impl Model {
         }
     }
 
+    /// The dependent speeds and their rates as expressions in the independent speeds and rates
+    /// (what Autolev prints after CONSTRAIN: `U2 = ...`, `U2' = ...`), keyed by the dependent
+    /// speeds' and rates' symbols; empty without motion constraints. By Cramer's rule.
+    pub fn dependent_speed_solution(&mut self) -> Result<rustc_hash::FxHashMap<ExprId, ExprId>> {
+        let mut map = rustc_hash::FxHashMap::default();
+        let Some(c) = self.constraints.clone() else { return Ok(map) };
+        let independent = self.independent_speeds();
+        let mut rhs = Vec::with_capacity(c.b.len());
+        for (row, &b) in c.a_independent.iter().zip(&c.b) {
+            let mut terms = vec![b];
+            for (&a, &u) in row.iter().zip(&independent) {
+                let u = self.ar.symbol_expr(u);
+                terms.push(self.ar.mul(&[a, u])?);
+            }
+            let sum = self.ar.add(&terms)?;
+            rhs.push(self.ar.neg(sum)?);
+        }
+        let solved = self.ar.solve_cramer(&c.a_dependent, &rhs)?;
+        for (&u, &x) in c.dependent.iter().zip(&solved) {
+            map.insert(self.ar.symbol_expr(u), x);
+        }
+        for (&u, &x) in c.dependent.iter().zip(&solved) {
+            let rate = self.dt(x)?;
+            // The kinematic equations may bring dependent speeds back in.
+            let rate = self.ar.subs(rate, &map)?;
+            let key = self.ar.derivative_symbol(u)?;
+            map.insert(self.ar.symbol_expr(key), rate);
+        }
+        Ok(map)
+    }
+
     /// The dependent speeds, in the order CONSTRAIN named them.
     pub fn dependent_speeds(&self) -> Vec<SymbolId> {
         self.constraints.as_ref().map(|c| c.dependent.clone()).unwrap_or_default()

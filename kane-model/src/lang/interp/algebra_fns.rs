@@ -21,7 +21,7 @@ impl Interpreter {
     /// INV, EIG or TAYLOR.
     pub(super) fn algebra_function(&mut self, upper: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
         match upper {
-            "INV" => self.inverse(args, e),
+            "INV" | "INVERSE" => self.inverse(args, e),
             "EIG" => self.eigen(args, e),
             _ => self.taylor(args, e),
         }

@@ -17,9 +17,6 @@ use super::scalar_fns::elementary;
 use super::value::Value;
 use super::{At, IResult, Interpreter};
 
-/// Functions known to Autolev that this implementation rejects, with the reason.
-const UNSUPPORTED: &[(&str, &str)] = &[("NICHECK", "Newtonian-inertia check")];
-
 impl Interpreter {
     /// Evaluates `NAME(args)`.
     pub(crate) fn call(&mut self, name: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
@@ -32,7 +29,7 @@ impl Interpreter {
                 self.vector_function(&upper, args, e)
             }
             "ATAN2" => self.atan2_function(args, e),
-            "INV" | "EIG" | "TAYLOR" => self.algebra_function(&upper, args, e),
+            "INV" | "INVERSE" | "EIG" | "TAYLOR" => self.algebra_function(&upper, args, e),
             "POLYNOMIAL" | "ROOTS" => self.polynomial_function(&upper, args, e),
             "SPLINE" => self.spline(args, e),
             "INT" | "FLOOR" | "CEIL" | "ROUND" | "FACTORIAL" => self.whole_number_function(&upper, args, e),
@@ -48,6 +45,7 @@ impl Interpreter {
                 self.eval(x)
             }
             "INPUT" => self.input_value(args, e),
+            "NICHECK" => self.energy_check(args, e),
             "FR" | "FRSTAR" | "KE" | "MOMENTUM" | "MASS" | "CM" | "INERTIA" => {
                 self.mass_function(&upper, args, e)
             }
@@ -96,23 +94,54 @@ impl Interpreter {
         Ok(Value::Scalar(self.number_expr(v).at(&e.span)?))
     }
 
-    /// `INPUT(X)`: the value INPUT gave X so far; for a name assigned a number instead
-    /// (`A = PI/2`), that number (the value X has in Autolev's code).
+    /// `INPUT(X)`: the value INPUT gave X so far; for a name assigned an expression instead
+    /// (`A = PI/2`, `U1 = DOT(W_A_N>, A1>)`), its value at the INPUT values given so far (the
+    /// value X has in Autolev's code).
     fn input_value(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
         super::arity("INPUT", args, 1, &e.span)?;
         let ExprKind::Name { name, primes, suffix: 0 } = &args[0].kind else {
             return Err(Diagnostic::error(args[0].span.clone(), "INPUT takes a name"));
         };
         let key = format!("{name}{}", "'".repeat(*primes as usize));
-        let given = self.inputs.iter().rev().find(|i| i.name.eq_ignore_ascii_case(&key)).map(|i| i.value);
-        let v = match given {
+        let v = match self.given_input(&key) {
             Some(v) => v,
-            None => self.number(&args[0]).map_err(|_| {
-                Diagnostic::error(args[0].span.clone(), format!("`{key}` has no INPUT value yet"))
-                    .with_help("give it one in an INPUT line before this statement")
-            })?,
+            None => self.value_at_inputs(&args[0], &key)?,
         };
         Ok(Value::Scalar(self.number_expr(v).at(&e.span)?))
+    }
+
+    /// The last INPUT value of `name` (with its primes), if any.
+    fn given_input(&self, name: &str) -> Option<f64> {
+        self.inputs.iter().rev().find(|i| i.name.eq_ignore_ascii_case(name)).map(|i| i.value)
+    }
+
+    /// The value of the scalar `x` (named `key`) with the INPUT values given so far put in.
+    fn value_at_inputs(&mut self, x: &Expr, key: &str) -> IResult<f64> {
+        let no_value = |what: &str| {
+            Diagnostic::error(x.span.clone(), format!("`{key}` has no INPUT value yet{what}"))
+                .with_help("give it one in an INPUT line before this statement")
+        };
+        let s = self.scalar(x)?;
+        if self.model.ar.as_symbol(s).is_some() {
+            return Err(no_value(""));
+        }
+        let free = self.model.ar.free_symbols(&[s]);
+        let mut missing = None;
+        let mut values = rustc_hash::FxHashMap::default();
+        for sym in free {
+            let name = self.model.ar.symbol_info(sym).name.clone();
+            match self.given_input(&name) {
+                Some(v) => drop(values.insert(sym, v)),
+                None => missing = missing.or(Some(name)),
+            }
+        }
+        if let Some(name) = missing {
+            return Err(no_value(&format!(" (its expression holds `{name}`, which has none)")));
+        }
+        let v = self.model.ar.eval(&[s], |sym| values.get(&sym).copied()).map_err(|err| {
+            Diagnostic::error(x.span.clone(), format!("`{key}` at the INPUT values: {err}"))
+        })?;
+        Ok(v[0])
     }
 
     /// Applies `f` to every scalar inside a value.
@@ -183,12 +212,8 @@ impl Interpreter {
     }
 }
 
-/// The error for a function this implementation does not evaluate: unsupported, or unknown.
+/// The error for a function this implementation does not know.
 fn unknown_function(name: &str, upper: &str, span: &Span) -> Diagnostic {
-    if let Some((_, what)) = UNSUPPORTED.iter().find(|(n, _)| *n == upper) {
-        return Diagnostic::error(span.clone(), format!("{upper}() ({what}) is not supported"))
-            .with_help("remove it or compute it outside the model file");
-    }
     let d = Diagnostic::error(span.clone(), format!("unknown function `{name}`"));
     match nearest_command(upper) {
         Some(k) => d.with_help(format!(
@@ -237,6 +262,7 @@ pub(crate) const KNOWN_CALLS: &[&str] = &[
     "FRSTAR",
     "GRAVITY",
     "INV",
+    "INVERSE",
     "INERTIA",
     "KANE",
     "KE",
@@ -246,6 +272,7 @@ pub(crate) const KNOWN_CALLS: &[&str] = &[
     "MASS",
     "MATRIX",
     "MOMENTUM",
+    "NICHECK",
     "PARTIALS",
     "POLYNOMIAL",
     "REPLACE",

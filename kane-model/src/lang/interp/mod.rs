@@ -15,6 +15,7 @@ mod code_request;
 mod commands;
 mod deferral;
 mod eigen;
+mod energy_check;
 mod eval;
 mod functions;
 pub(crate) use functions::KNOWN_CALLS;

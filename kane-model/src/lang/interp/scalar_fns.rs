@@ -15,6 +15,9 @@ use super::super::token::Span;
 use super::value::Value;
 use super::{At, Binding, IResult, Interpreter};
 
+/// Autolev's name, in EXCLUDE's and INCLUDE's lists, for the independent speeds.
+const INDEPENDENT_SPEEDS: &str = "U_INDEPENDENT";
+
 /// An elementary function of one scalar.
 pub(super) enum Elementary {
     Func(Func),
@@ -121,9 +124,13 @@ impl Interpreter {
         for a in named {
             let keys = match &a.kind {
                 ExprKind::Matrix(rows) => {
-                    rows.iter().flatten().map(|x| self.substitution_key(x)).collect::<IResult<Vec<_>>>()?
+                    let mut keys = Vec::new();
+                    for x in rows.iter().flatten() {
+                        keys.extend(self.term_selector_keys(x)?);
+                    }
+                    keys
                 }
-                _ => vec![self.substitution_key(a)?],
+                _ => self.term_selector_keys(a)?,
             };
             for k in keys {
                 syms.push(self.model.ar.as_symbol(k).ok_or_else(|| {
@@ -132,6 +139,7 @@ impl Interpreter {
             }
         }
         let v = self.eval(y)?;
+        let v = self.in_independent_speeds(&v, &e.span)?;
         let keep_with = upper == "INCLUDE";
         self.map_scalars(&v, &e.span, |m, x| {
             if m.ar.expansion_bounds(&[x])[0] > TERMS_TO_SELECT_FROM {
@@ -183,6 +191,60 @@ impl Interpreter {
         self.scalar(x)
     }
 
+    /// `v` with the dependent speeds and their rates written in the independent ones, as
+    /// Autolev holds every expression after CONSTRAIN (so COEF of ZERO by the independent rates
+    /// is the whole mass matrix), where `v` holds rates of dependent and independent speeds (as
+    /// FR() + FRSTAR() does); `v` itself otherwise.
+    pub(super) fn in_independent_speeds(&mut self, v: &Value, span: &Span) -> IResult<Value> {
+        let dependent = self.model.dependent_speeds();
+        if dependent.is_empty() {
+            return Ok(v.clone());
+        }
+        let rates: Vec<_> = dependent
+            .iter()
+            .filter_map(|u| self.model.ar.lookup(&format!("{}'", self.model.ar.symbol_info(*u).name)))
+            .collect();
+        let independent_rates: Vec<_> = self
+            .model
+            .independent_speeds()
+            .iter()
+            .filter_map(|u| self.model.ar.lookup(&format!("{}'", self.model.ar.symbol_info(*u).name)))
+            .collect();
+        let (held, independent_held) = (std::cell::Cell::new(false), std::cell::Cell::new(false));
+        self.map_scalars(v, span, |m, x| {
+            held.set(held.get() || rates.iter().any(|s| m.ar.depends_on(x, *s)));
+            independent_held
+                .set(independent_held.get() || independent_rates.iter().any(|s| m.ar.depends_on(x, *s)));
+            Ok(x)
+        })?;
+        if !held.get() || !independent_held.get() {
+            return Ok(v.clone());
+        }
+        let map = self.model.dependent_speed_solution().at(span)?;
+        self.map_scalars(v, span, |m, x| Ok(m.ar.subs(x, &map)?))
+    }
+
+    /// The quantities one entry of EXCLUDE's or INCLUDE's list names: the entry itself, or for
+    /// Autolev's undeclared `U_INDEPENDENT'` the rates (to its primes) of the independent speeds.
+    fn term_selector_keys(&mut self, x: &Expr) -> IResult<Vec<ExprId>> {
+        if let ExprKind::Name { name, primes, suffix: 0 } = &x.kind {
+            if name.eq_ignore_ascii_case(INDEPENDENT_SPEEDS)
+                && !self.bindings.contains_key(INDEPENDENT_SPEEDS)
+            {
+                let mut keys = Vec::new();
+                for u in self.model.independent_speeds() {
+                    let mut s = u;
+                    for _ in 0..*primes {
+                        s = self.model.ar.derivative_symbol(s).at(&x.span)?;
+                    }
+                    keys.push(self.model.ar.symbol_expr(s));
+                }
+                return Ok(keys);
+            }
+        }
+        Ok(vec![self.substitution_key(x)?])
+    }
+
     /// The scalars COEF's second argument evaluates to.
     fn coefficient_values(&mut self, y: &Expr) -> IResult<Vec<ExprId>> {
         match self.eval(y)? {
@@ -198,6 +260,7 @@ impl Interpreter {
     fn coefficients(&mut self, args: &[Expr], e: &Expr) -> IResult<Value> {
         super::arity("COEF", args, 2, &e.span)?;
         let v = self.eval(&args[0])?;
+        let v = self.in_independent_speeds(&v, &e.span)?;
         // Rates SOLVE gave (`W'`, `[U7', U8']`) named here are the rates themselves.
         let named = |s: &Self, x: &Expr| match &x.kind {
             ExprKind::Name { name, primes, suffix: 0 } => {
