@@ -578,3 +578,18 @@ fn nicheck_adds_the_work_of_the_active_forces_to_the_kinetic_energy() {
     let text = fails(&src.replace("NICHECK()", "NICHECK(M)"));
     assert!(text.contains("NICHECK takes no arguments"), "{text}");
 }
+
+#[test]
+fn a_specifieds_formula_reaches_the_rate_nicheck_adds() {
+    let src = "NEWTONIAN N\nBODIES B\nVARIABLES Q', U'\nSPECIFIED TQ\nSIMPROT(N, B, 3, Q)\nQ' = U\n\
+               W_B_N> = U*N3>\nV_BO_N> = 0>\nMASS B = 1\nINERTIA B, 1, 1, 2\nTORQUE(B, TQ*N3>)\n\
+               ZERO = FR() + FRSTAR()\nKANE()\nCHECK = NICHECK()\nTQ = 4*Q\nOUTPUT CHECK\n";
+    let (m, _) = checks(src);
+    let spec = m.into_spec("idiom").unwrap();
+    assert!(spec.inputs.is_empty(), "TQ has a formula");
+    // WCHECK1' = -TQ*U = -4*Q*U, its formula put in.
+    let k = spec.equations.coordinates.iter().position(|q| spec.model.ar.symbol_info(*q).name == "WCHECK1");
+    let rate = spec.equations.kinematics[k.expect("WCHECK1 is integrated")];
+    let v = spec.model.ar.eval_named(rate, &[("Q", 0.5), ("U", 3.0)]).unwrap();
+    assert!((v + 6.0).abs() < 1e-12, "{v}");
+}

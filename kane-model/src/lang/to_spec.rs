@@ -65,7 +65,7 @@ impl LoadedModel {
             }
         };
         if !algebraic {
-            self.extra_coordinates(&mut eqs)?;
+            self.extra_coordinates(&mut eqs, &formulas)?;
         }
         // Auxiliary speeds are zero in every motion the outputs are computed along.
         let auxiliary = self.model.auxiliary_zero_map()?;
@@ -163,8 +163,13 @@ fn finish_outputs(
 impl LoadedModel {
     /// Variables whose rates the file gives after its equations of motion were formed
     /// (`POSA1' = DOT(V_DISKAO_N>, N1>)` after KANE()), added to `eqs`' coordinates: Autolev's
-    /// code integrates every variable whose rate is assigned.
-    fn extra_coordinates(&mut self, eqs: &mut crate::mechanics::KaneEquations) -> Result<(), SpecError> {
+    /// code integrates every variable whose rate is assigned. The SPECIFIED quantities'
+    /// `formulas` are put into their rates as into the equations.
+    fn extra_coordinates(
+        &mut self,
+        eqs: &mut crate::mechanics::KaneEquations,
+        formulas: &rustc_hash::FxHashMap<crate::expr::ExprId, crate::expr::ExprId>,
+    ) -> Result<(), SpecError> {
         let states: Vec<crate::expr::SymbolId> = eqs.coordinates.iter().chain(&eqs.speeds).copied().collect();
         let dependent: Vec<crate::expr::SymbolId> =
             eqs.constraints.iter().flat_map(|c| c.dependent.clone()).collect();
@@ -181,7 +186,8 @@ impl LoadedModel {
         let map = self.model.kinematics_map();
         for q in extra {
             let rhs = self.model.kinematics(q).expect("listed with its equation");
-            eqs.kinematics.push(self.model.ar.subs(rhs, &map)?);
+            let rhs = self.model.ar.subs(rhs, &map)?;
+            eqs.kinematics.push(self.model.ar.subs(rhs, formulas)?);
             eqs.coordinates.push(q);
         }
         Ok(())
