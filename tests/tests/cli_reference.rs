@@ -73,7 +73,7 @@ fn the_cli_reference_is_the_commands_own_help() {
 }
 
 #[test]
-fn every_subcommand_has_a_section() {
+fn the_subcommands_are_read_from_the_top_level_help() {
     let top = help(&bins::kane(), &[]);
     let subs = subcommands(&top);
     assert!(subs.contains(&"check".to_string()) && subs.contains(&"linearize".to_string()), "{subs:?}");

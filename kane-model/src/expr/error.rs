@@ -20,7 +20,7 @@ pub enum ExprError {
     /// Evaluation produced NaN or infinity.
     #[error("evaluation is not finite ({value}) for `{expr}`")]
     NotFinite {
-        /// The expression, printed in backquotes (or described, when large).
+        /// The expression, printed.
         expr: String,
         /// The value produced.
         value: f64,

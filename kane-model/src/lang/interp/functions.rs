@@ -131,7 +131,9 @@ impl Interpreter {
         for sym in free {
             let name = self.model.ar.symbol_info(sym).name.clone();
             match self.given_input(&name) {
-                Some(v) => drop(values.insert(sym, v)),
+                Some(v) => {
+                    values.insert(sym, v);
+                }
                 None => missing = missing.or(Some(name)),
             }
         }

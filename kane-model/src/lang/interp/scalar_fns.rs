@@ -200,16 +200,12 @@ impl Interpreter {
         if dependent.is_empty() {
             return Ok(v.clone());
         }
-        let rates: Vec<_> = dependent
-            .iter()
-            .filter_map(|u| self.model.ar.lookup(&format!("{}'", self.model.ar.symbol_info(*u).name)))
-            .collect();
-        let independent_rates: Vec<_> = self
-            .model
-            .independent_speeds()
-            .iter()
-            .filter_map(|u| self.model.ar.lookup(&format!("{}'", self.model.ar.symbol_info(*u).name)))
-            .collect();
+        // Rates never named are in no expression.
+        let existing_rates = |ar: &crate::expr::Arena, speeds: &[crate::expr::SymbolId]| -> Vec<_> {
+            speeds.iter().filter_map(|u| ar.lookup(&format!("{}'", ar.symbol_info(*u).name))).collect()
+        };
+        let rates = existing_rates(&self.model.ar, &dependent);
+        let independent_rates = existing_rates(&self.model.ar, &self.model.independent_speeds());
         let (held, independent_held) = (std::cell::Cell::new(false), std::cell::Cell::new(false));
         self.map_scalars(v, span, |m, x| {
             held.set(held.get() || rates.iter().any(|s| m.ar.depends_on(x, *s)));
