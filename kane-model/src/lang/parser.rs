@@ -128,20 +128,34 @@ pub const SESSION_COMMANDS: &[&str] = &[
     "SAVE",
 ];
 
+/// The declaration words and what each declares.
+pub(crate) const DECLARATIONS: &[(&str, DeclKind)] = &[
+    ("NEWTONIAN", DeclKind::Newtonian),
+    ("FRAME", DeclKind::Frames),
+    ("FRAMES", DeclKind::Frames),
+    ("BODY", DeclKind::Bodies),
+    ("BODIES", DeclKind::Bodies),
+    ("PARTICLE", DeclKind::Particles),
+    ("PARTICLES", DeclKind::Particles),
+    ("POINT", DeclKind::Points),
+    ("POINTS", DeclKind::Points),
+    ("CONSTANT", DeclKind::Constants),
+    ("CONSTANTS", DeclKind::Constants),
+    ("VARIABLE", DeclKind::Variables),
+    ("VARIABLES", DeclKind::Variables),
+    ("MOTIONVARIABLE", DeclKind::MotionVariables),
+    ("MOTIONVARIABLES", DeclKind::MotionVariables),
+    ("SPECIFIED", DeclKind::Specified),
+    ("IMAGINARY", DeclKind::Imaginary),
+];
+
+/// The statements that begin with a word of their own (besides declarations, session commands
+/// and settings).
+pub(crate) const STATEMENT_WORDS: &[&str] =
+    &["CODE", "ENCODE", "INERTIA", "INPUT", "MASS", "OUTPUT", "RUN", "UNITS", "UNITSYSTEM"];
+
 fn decl_kind(word: &str) -> Option<DeclKind> {
-    Some(match word {
-        "NEWTONIAN" => DeclKind::Newtonian,
-        "FRAME" | "FRAMES" => DeclKind::Frames,
-        "BODY" | "BODIES" => DeclKind::Bodies,
-        "PARTICLE" | "PARTICLES" => DeclKind::Particles,
-        "POINT" | "POINTS" => DeclKind::Points,
-        "CONSTANT" | "CONSTANTS" => DeclKind::Constants,
-        "VARIABLE" | "VARIABLES" => DeclKind::Variables,
-        "MOTIONVARIABLE" | "MOTIONVARIABLES" => DeclKind::MotionVariables,
-        "SPECIFIED" => DeclKind::Specified,
-        "IMAGINARY" => DeclKind::Imaginary,
-        _ => return None,
-    })
+    DECLARATIONS.iter().find(|(w, _)| *w == word).map(|(_, k)| *k)
 }
 
 impl<'a> Parser<'a> {
@@ -812,6 +826,32 @@ impl<'a> Parser<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn each_statement_word_and_declaration_begins_its_own_statement() {
+        let samples = [
+            ("CODE", "CODE DYNAMICS() X.M"),
+            ("ENCODE", "ENCODE X"),
+            ("INERTIA", "INERTIA B, 1, 2, 3"),
+            ("INPUT", "INPUT X = 1"),
+            ("MASS", "MASS B = 1"),
+            ("OUTPUT", "OUTPUT X"),
+            ("RUN", "RUN X.AL"),
+            ("UNITS", "UNITS X = M"),
+            ("UNITSYSTEM", "UNITSYSTEM KG, M, S"),
+        ];
+        assert_eq!(samples.map(|(w, _)| w), STATEMENT_WORDS);
+        for (word, line) in samples {
+            let (stmts, errors) = parse(line);
+            assert!(errors.is_empty(), "{word}: {errors:?}");
+            assert!(!matches!(stmts[0].kind, StmtKind::Assign { .. } | StmtKind::Expr(_)), "{word}");
+        }
+        for (word, kind) in DECLARATIONS {
+            let (stmts, errors) = parse(&format!("{word} X"));
+            assert!(errors.is_empty(), "{word}: {errors:?}");
+            assert!(matches!(&stmts[0].kind, StmtKind::Declare { kind: k, .. } if k == kind), "{word}");
+        }
+    }
 
     #[test]
     fn parses_the_gimbal_statements() {

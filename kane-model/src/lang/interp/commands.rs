@@ -29,6 +29,11 @@ impl Interpreter {
             };
         };
         let upper = name.to_ascii_uppercase();
+        if !super::functions::KNOWN_CALLS.contains(&upper.as_str()) {
+            let mut d = super::functions::unknown_function(name, &upper, &e.span);
+            d.message = d.message.replacen("unknown function", "unknown command", 1);
+            return Err(d);
+        }
         match upper.as_str() {
             "SIMPROT" => self.simprot(args, e),
             "V2PTS" | "A2PTS" | "V1PT" | "A1PT" => self.point_theorem(&upper, args, e),

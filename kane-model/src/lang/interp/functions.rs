@@ -21,6 +21,9 @@ impl Interpreter {
     /// Evaluates `NAME(args)`.
     pub(crate) fn call(&mut self, name: &str, args: &[Expr], e: &Expr) -> IResult<Value> {
         let upper = name.to_ascii_uppercase();
+        if !KNOWN_CALLS.contains(&upper.as_str()) {
+            return Err(unknown_function(name, &upper, &e.span));
+        }
         if let Some(f) = elementary(&upper) {
             return self.elementary_function(f, &upper, args, e);
         }
@@ -215,7 +218,7 @@ impl Interpreter {
 }
 
 /// The error for a function this implementation does not know.
-fn unknown_function(name: &str, upper: &str, span: &Span) -> Diagnostic {
+pub(crate) fn unknown_function(name: &str, upper: &str, span: &Span) -> Diagnostic {
     let d = Diagnostic::error(span.clone(), format!("unknown function `{name}`"));
     match nearest_command(upper) {
         Some(k) => d.with_help(format!(
@@ -227,17 +230,20 @@ fn unknown_function(name: &str, upper: &str, span: &Span) -> Diagnostic {
     }
 }
 
-/// The commands and functions a file may call (elementary functions included).
+/// The commands and functions a file may call, elementary functions included: a call of any
+/// other name is unknown.
 pub(crate) const KNOWN_CALLS: &[&str] = &[
     "A1PT",
     "A2PTS",
     "ABS",
     "ACOS",
     "ANGVEL",
+    "ANIMATE",
     "ARRANGE",
     "ASIN",
     "ATAN",
     "ATAN2",
+    "CEIL",
     "CM",
     "COEF",
     "COLS",
@@ -253,23 +259,32 @@ pub(crate) const KNOWN_CALLS: &[&str] = &[
     "DT",
     "EIG",
     "ELEMENT",
+    "ENCODE",
     "EVALUATE",
+    "EXCLUDE",
     "EXP",
     "EXPAND",
     "EXPLICIT",
     "EXPRESS",
     "FACTOR",
+    "FACTORIAL",
+    "FLOOR",
     "FORCE",
     "FR",
     "FRSTAR",
     "GRAVITY",
+    "INCLUDE",
+    "INERTIA",
+    "INPUT",
+    "INT",
     "INV",
     "INVERSE",
-    "INERTIA",
     "KANE",
     "KE",
     "KINDIFFS",
+    "LN",
     "LOG",
+    "LOG10",
     "MAG",
     "MASS",
     "MATRIX",
@@ -280,11 +295,15 @@ pub(crate) const KNOWN_CALLS: &[&str] = &[
     "REPLACE",
     "RHS",
     "ROOTS",
+    "ROUND",
     "ROWS",
+    "SIGN",
     "SIMPROT",
     "SIN",
     "SINH",
     "SOLVE",
+    "SPLINE",
+    "SQR",
     "SQRT",
     "TAN",
     "TANH",
@@ -292,6 +311,7 @@ pub(crate) const KNOWN_CALLS: &[&str] = &[
     "TORQUE",
     "TRACE",
     "TRANSPOSE",
+    "UNITSYSTEM",
     "UNITVEC",
     "V1PT",
     "V2PTS",
@@ -312,4 +332,33 @@ pub(crate) fn nearest_command(upper: &str) -> Option<&'static str> {
         .filter(|(d, k)| *d <= if upper.len().min(k.len()) <= 4 { 1 } else { 2 } && *d < k.len())
         .min()
         .map(|(_, k)| k)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::KNOWN_CALLS;
+
+    /// The report of `src` as `kane check` gives it ("" when it checks).
+    fn report(src: &str) -> String {
+        crate::lang::check("calls.al", src).err().map_or_else(String::new, |r| r.to_string())
+    }
+
+    #[test]
+    fn every_known_call_is_dispatched_and_no_other_is() {
+        for name in KNOWN_CALLS {
+            let r = report(&format!("NEWTONIAN N\n{name}()\n"));
+            assert!(!r.contains("unknown"), "{name}: {r}");
+        }
+        for name in ["SIMPORT", "FOO", "KANEE"] {
+            assert!(report(&format!("NEWTONIAN N\n{name}()\n")).contains("unknown command"), "{name}");
+            assert!(report(&format!("NEWTONIAN N\nX = {name}(1)\n")).contains("unknown function"), "{name}");
+        }
+    }
+
+    #[test]
+    fn every_elementary_function_is_a_known_call() {
+        for f in crate::expr::Func::ALL {
+            assert!(KNOWN_CALLS.contains(&f.name().to_ascii_uppercase().as_str()), "{}", f.name());
+        }
+    }
 }

@@ -20,6 +20,16 @@ use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
 use super::{entity_key, At, Binding, IResult, Interpreter};
 
+/// The shapes `INERTIA B, SHAPE(dimensions)` knows, with how many dimensions each takes.
+pub(crate) const SHAPES: &[(&str, usize)] = &[
+    ("CUBOID", 3),
+    ("SOLID_CYLINDER", 2),
+    ("SOLID_ELLIPSOID", 3),
+    ("SOLID_SPHERE", 1),
+    ("THIN_DISK", 1),
+    ("THIN_ROD", 1),
+];
+
 impl Interpreter {
     /// `INERTIA B[_P][(A)], I11, I22, I33 [, I12, I23, I31]`: B's central inertia.
     pub(crate) fn inertia(
@@ -174,14 +184,9 @@ impl Interpreter {
         span: &Span,
     ) -> IResult<()> {
         let upper = name.to_ascii_uppercase();
-        let want = match upper.as_str() {
-            "SOLID_ELLIPSOID" | "CUBOID" => 3,
-            "SOLID_CYLINDER" => 2,
-            "SOLID_SPHERE" | "THIN_ROD" | "THIN_DISK" => 1,
-            _ => {
-                return Err(Diagnostic::error(span.clone(), format!("unknown shape `{name}`"))
-                    .with_help("shapes: SOLID_ELLIPSOID(a,b,c), SOLID_SPHERE(r), SOLID_CYLINDER(r,l), THIN_ROD(l), CUBOID(a,b,c), THIN_DISK(r)"))
-            }
+        let Some(&(_, want)) = SHAPES.iter().find(|(s, _)| *s == upper) else {
+            return Err(Diagnostic::error(span.clone(), format!("unknown shape `{name}`"))
+                .with_help("shapes: SOLID_ELLIPSOID(a,b,c), SOLID_SPHERE(r), SOLID_CYLINDER(r,l), THIN_ROD(l), CUBOID(a,b,c), THIN_DISK(r)"));
         };
         if dims.len() != want {
             return Err(Diagnostic::error(

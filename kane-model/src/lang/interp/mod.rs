@@ -37,6 +37,18 @@ mod statements;
 pub mod value;
 mod vector_fns;
 
+/// Every word the model language gives a meaning, sorted: declarations, statements, commands,
+/// functions, session commands, settings and inertia shapes.
+pub fn language_words() -> Vec<&'static str> {
+    use super::parser::{DECLARATIONS, SESSION_COMMANDS, STATEMENT_WORDS};
+    let mut words: Vec<&'static str> = DECLARATIONS.iter().map(|(w, _)| *w).collect();
+    words.extend(STATEMENT_WORDS.iter().chain(SESSION_COMMANDS).chain(statements::SETTINGS));
+    words.extend(functions::KNOWN_CALLS.iter().chain(inertia::SHAPES.iter().map(|(s, _)| s)));
+    words.sort_unstable();
+    words.dedup();
+    words
+}
+
 use rustc_hash::FxHashMap;
 
 use crate::expr::{ExprId, SymbolId};

@@ -13,6 +13,9 @@ use super::{
     entity_key, is_degrees, At, Binding, Bookkeeping, CodeRequest, IResult, InputValue, Interpreter,
 };
 
+/// The `NAME ON` / `NAME OFF` settings a file may give.
+pub(crate) const SETTINGS: &[&str] = &["COMPLEX", "DEGREES", "ZEE_NOT"];
+
 impl Interpreter {
     /// Runs one statement.
     pub(super) fn statement(&mut self, s: &Stmt) -> IResult<()> {
@@ -156,14 +159,17 @@ impl Interpreter {
     /// names Z variables (the session's printing settings are session commands).
     fn setting(&mut self, name: &str, on: bool, span: &Span) -> IResult<()> {
         match name {
+            _ if !SETTINGS.contains(&name) => {
+                Err(Diagnostic::error(span.clone(), format!("unknown setting `{name}`")).with_help(
+                    "known settings: DEGREES, COMPLEX, ZEE_NOT, and the session's AUTOZ, AUTORHS, ...",
+                ))
+            }
             "DEGREES" => {
                 self.degrees = on;
                 Ok(())
             }
-            "COMPLEX" | "ZEE_NOT" => Ok(()),
-            _ => Err(Diagnostic::error(span.clone(), format!("unknown setting `{name}`")).with_help(
-                "known settings: DEGREES, COMPLEX, ZEE_NOT, and the session's AUTOZ, AUTORHS, ...",
-            )),
+            // COMPLEX and ZEE_NOT change how Autolev computes in complex numbers and names Z variables.
+            _ => Ok(()),
         }
     }
 
