@@ -130,6 +130,65 @@ fn without_a_view_the_drawing_is_neither_asked_for_nor_written() {
 }
 
 #[test]
+fn the_printed_scene_holds_every_value_and_runs_as_the_model_file_does() {
+    let dir = folder("printed_scene");
+    let printed = gyro_sim(&["--model", DOUBLE, "--print-scene", "--set", "Q2=10 deg"], &dir);
+    let scene = text(&printed);
+    for line in ["L = 1.0", "G = 9.81", "M = 1.0", "Q1 = -1.2", "Q2 = \"10 deg\"", "U1 = 0.0", "U2 = 0.0"] {
+        assert!(scene.contains(&format!("\n{line}\n")), "`{line}` missing:\n{scene}");
+    }
+    let saved = dir.join("saved.toml");
+    std::fs::write(&saved, &scene).unwrap();
+    let (from_file, from_scene) = (dir.join("file"), dir.join("scene"));
+    let run = gyro_sim(
+        &[
+            "--model",
+            DOUBLE,
+            "--set",
+            "Q2=10 deg",
+            "--engine",
+            "instant",
+            "--out",
+            from_file.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert!(run.status.success(), "{}", text(&run));
+    let run = gyro_sim(
+        &[saved.to_str().unwrap(), "--engine", "instant", "--out", from_scene.to_str().unwrap()],
+        &dir,
+    );
+    assert!(run.status.success(), "{}", text(&run));
+    assert_eq!(rows(&from_file), rows(&from_scene));
+}
+
+#[test]
+fn figures_from_the_rows_alone_are_noted_and_plot_points_draws_them_dense() {
+    let dir = folder("plot_points");
+    let sparse = dir.join("sparse.al");
+    let source = std::fs::read_to_string(DOUBLE).unwrap();
+    std::fs::write(&sparse, source.replace("INTEGSTP = 0.01", "INTEGSTP = 0.5")).unwrap();
+    let sparse = sparse.to_str().unwrap();
+    let out = dir.join("out");
+    let out = out.to_str().unwrap();
+    let rows_only =
+        text(&gyro_sim(&["--model", sparse, "--engine", "instant", "--no-view", "--out", out], &dir));
+    assert!(
+        rows_only.contains("integrator steps per output row: the figures, drawn from the rows alone"),
+        "{rows_only}"
+    );
+    let dense = gyro_sim(
+        &["--model", sparse, "--engine", "instant", "--no-view", "--plot-points", "10", "--out", out],
+        &dir,
+    );
+    assert!(dense.status.success() && !text(&dense).contains("note:"), "{}", text(&dense));
+    let printed = text(&gyro_sim(&["--model", sparse, "--plot-points", "10", "--print-scene"], &dir));
+    assert!(printed.contains("\nplot_points = 10\n"), "{printed}");
+    let refused = gyro_sim(&["--model", sparse, "--plot-points", "0", "--print-scene"], &dir);
+    assert!(!refused.status.success() && text(&refused).contains("--plot-points"), "{}", text(&refused));
+}
+
+#[test]
 fn a_variable_without_an_equation_is_an_open_input_and_its_point_is_drawn() {
     // H is a variable with no equation: an input of the model, zero in this run, said so.
     let dir = folder("undrawable");
@@ -528,7 +587,7 @@ fn a_variant_runs_in_one_command_with_its_file_settings_and_sets() {
     // Gravity on the offset rotor turns the outer gimbal: U1 leaves zero.
     assert!(r[20][4].abs() > 1e-3, "U1 at 1 s: {}", r[20][4]);
     let printed = gyro_sim(&["--model", VARIANT, "--set", "OFF=0.1", "--print-scene"], &dir);
-    assert!(text(&printed).contains("\"OFF\" = 0.1"), "{}", text(&printed));
+    assert!(text(&printed).contains("\nOFF = 0.1\n"), "{}", text(&printed));
 }
 
 #[test]

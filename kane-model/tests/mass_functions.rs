@@ -1,4 +1,4 @@
-//! The model language's mass and derivative functions (MASS, CM, MOMENTUM, D, DT) give what the
+//! The model language's mass and derivative functions (MASS, CM, MOMENTUM, KE, D, DT) give what the
 //! mechanics layer computes, checked numerically at one point.
 
 use kane_model::lang::{self, LoadedModel, Value};
@@ -6,7 +6,7 @@ use kane_model::lang::{self, LoadedModel, Value};
 const MODEL: &str = "NEWTONIAN N\nBODIES B\nPARTICLES P\nPOINTS O\nVARIABLES Q', U'\n\
 CONSTANTS MB, MP, L\nSIMPROT(N, B, 3, Q)\nQ' = U\nV_O_N> = 0>\nP_O_BO> = L*B1>\nP_O_P> = 2*L*N2>\n\
 MASS B = MB, P = MP\nTOTAL = MASS()\nJUSTB = MASS(B)\nC> = CM(O)\nLIN> = MOMENTUM(LINEAR)\n\
-DQ> = D(P_O_BO>, Q, N)\nDTB> = DT(P_O_BO>, N)\n";
+DQ> = D(P_O_BO>, Q, N)\nDTB> = DT(P_O_BO>, N)\nKALL = KE()\nKB = KE(B)\nKP = KE(P)\nKBP = KE(B, P)\n";
 
 const AT: [(&str, f64); 5] = [("MB", 3.0), ("MP", 1.0), ("L", 0.5), ("Q", 0.3), ("U", 2.0)];
 
@@ -40,6 +40,10 @@ fn mass_centre_momentum_and_derivatives() {
     // d/dQ of L B1 in N is L B2; its time derivative is L U B2 (= W x r).
     assert!(close(vector(&mut m, "DQ>"), [-0.5 * s, 0.5 * c, 0.0]));
     assert!(close(vector(&mut m, "DTB>"), [-0.5 * 2.0 * s, 0.5 * 2.0 * c, 0.0]));
+    // KE of the masses named: B's is MB (L U)^2 / 2 (no inertia given); P is at rest.
+    assert!((scalar(&m, "KB") - 3.0 * (0.5f64 * 2.0).powi(2) / 2.0).abs() < 1e-12);
+    assert_eq!(scalar(&m, "KP"), 0.0);
+    assert_eq!(scalar(&m, "KBP"), scalar(&m, "KALL"));
 }
 
 #[test]

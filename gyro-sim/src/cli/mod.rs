@@ -164,6 +164,11 @@ struct RunArgs {
     /// points, computing their placement at the output times).
     #[arg(long, requires = "model")]
     no_view: bool,
+    /// Points per output interval the figures are drawn from (1 to 1000: from the
+    /// integrator's dense output; the CSV rows are unchanged), in place of the scene's
+    /// plot_points.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1000))]
+    plot_points: Option<u32>,
     /// Integrate this many times more and print the median and the least wall time (a
     /// quick timing; files are written once).
     #[arg(long, default_value_t = 0)]
@@ -186,6 +191,7 @@ impl RunArgs {
             t_final: self.t_final,
             integrator: self.integrator(),
             view: !self.no_view,
+            plot_points: self.plot_points,
         }
     }
 }
@@ -252,7 +258,13 @@ fn run_command(
     compiled: Option<CompiledModel>,
 ) -> Result<ExitCode, CliError> {
     let scene = match &args.scene {
-        Some(path) => Some(Scene::load_with(path, &args.integrator())?),
+        Some(path) => {
+            let mut scene = Scene::load_with(path, &args.integrator())?;
+            if let Some(n) = args.plot_points {
+                scene.plot_points = n as usize;
+            }
+            Some(scene)
+        }
         None => None,
     };
     let file = args.model.clone().or_else(|| scene.as_ref().and_then(model_file_of));

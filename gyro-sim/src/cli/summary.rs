@@ -21,6 +21,9 @@ pub fn print_summary(title: &str, summary: &run::RunSummary) {
         t.stats.rhs_evals,
         t.wall.as_secs_f64() * 1e3,
     );
+    if let Some(note) = summary.written.as_ref().and_then(|w| aliasing_note(t, w.rows)) {
+        println!("{note}");
+    }
     for line in conserved_drifts(t) {
         println!("{line}");
     }
@@ -42,6 +45,24 @@ pub fn print_summary(title: &str, summary: &run::RunSummary) {
             a.goal, a.runs, a.rtol, a.atol, a.estimate
         );
     }
+}
+
+/// Steps per output interval from which a note says figures drawn from the rows alone may miss
+/// a faster motion.
+const STEPS_PER_ROW_NOTED: f64 = 4.0;
+
+/// A note when the figures are drawn from the `rows` alone while the integrator stepped several
+/// times per row (the motion may be faster than the rows show).
+fn aliasing_note(t: &crate::problem::Trajectory, rows: usize) -> Option<String> {
+    if !t.plot_rows.is_empty() || rows < 2 {
+        return None;
+    }
+    let per_row = t.stats.steps as f64 / (rows - 1) as f64;
+    (per_row >= STEPS_PER_ROW_NOTED).then(|| {
+        format!(
+            "note: {per_row:.0} integrator steps per output row: the figures, drawn from the rows alone, may miss a motion faster than the rows; --plot-points 10 (plot_points = 10 in a scene) draws them from the dense output"
+        )
+    })
 }
 
 /// One line per event declared: how many times it happened and the first times; and the

@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 
 pub use error::ModelRunError;
 pub use origins::{GeneratedScene, GENERATED};
-pub use scene_text::{scene_text, ModelRunArgs};
+pub use scene_text::{scene_text, ModelRunArgs, ModelValues};
 
 use crate::models::{FileRun, ModelFile, Registry};
 use crate::problem::{Engine, Problem, SharedModel};
@@ -131,7 +131,9 @@ fn generated_scene(
     args: ModelRunArgs,
 ) -> Result<(Scene, Option<GeneratedScene>), ModelRunError> {
     let args = ModelRunArgs { view: model.drawing().is_some(), ..args };
-    let generated = scene_text(&file.display().to_string(), run, model.info(), &args)?;
+    let (params, initial) = (model.default_params(), model.initial_state());
+    let values = ModelValues { params: &params, initial: &initial };
+    let generated = scene_text(&file.display().to_string(), run, model.info(), values, &args)?;
     let mut scene =
         Scene::parse(GENERATED, &generated.text()).map_err(|e| locate(e, Some(&generated), file))?;
     // The model is found under the path as given (not relative to a scene file).

@@ -23,6 +23,8 @@ pub enum Origin {
     Input(&'static str),
     /// The model file's OUTPUT command.
     Output,
+    /// The model's value of a parameter or state (the file's INPUT line, or the model's default).
+    Value(String),
     /// The model file as a whole (a default, the title, the model's name).
     File,
 }
@@ -36,6 +38,7 @@ impl Origin {
             Origin::Option(option) => option.to_string(),
             Origin::Input(name) => format!("{file}: INPUT {name}"),
             Origin::Output => format!("{file}: OUTPUT"),
+            Origin::Value(name) => format!("{file}: the value of {name}"),
             Origin::File => file.to_string(),
         }
     }

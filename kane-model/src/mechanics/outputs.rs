@@ -13,9 +13,15 @@ use super::vector::Vector;
 impl Model {
     /// Kinetic energy in the Newtonian frame, `sum(m v.v / 2 + w.I.w / 2)`.
     pub fn kinetic_energy(&mut self) -> Result<ExprId> {
+        let masses: Vec<_> = self.masses().collect();
+        self.kinetic_energy_of(&masses)
+    }
+
+    /// Kinetic energy in the Newtonian frame of the masses `masses`.
+    pub fn kinetic_energy_of(&mut self, masses: &[super::MassView]) -> Result<ExprId> {
         let n = self.newtonian;
         let mut terms = Vec::new();
-        for view in self.masses().collect::<Vec<_>>() {
+        for view in masses {
             let m = view.mass()?;
             let v = self.velocity(view.point, n)?;
             let vv = self.dot(&v, &v)?;

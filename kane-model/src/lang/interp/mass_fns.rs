@@ -31,7 +31,13 @@ impl Interpreter {
             }
             "KE" => {
                 self.prepare(&e.span)?;
-                Ok(Value::Scalar(self.model.kinetic_energy().at(fail)?))
+                let ke = if args.is_empty() {
+                    self.model.kinetic_energy()
+                } else {
+                    let masses = self.mass_list(args, &e.span)?;
+                    self.model.kinetic_energy_of(&masses)
+                };
+                Ok(Value::Scalar(ke.at(fail)?))
             }
             "MOMENTUM" => self.momentum(args, e),
             "MASS" => {
