@@ -54,6 +54,23 @@ fn unknown_parameter_and_output() {
 }
 
 #[test]
+fn every_unknown_name_is_reported_at_once_with_the_name_meant() {
+    let e = error(
+        "model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[parameters]\nM11 = 2\n[initial]\nQ11 = 0.1\nU4 = 2\n",
+    );
+    let lines: Vec<&str> = e.lines().collect();
+    assert_eq!(lines.len(), 6, "{e}");
+    assert!(lines[0].starts_with("bad.toml:5:7: error: `M11` is not a parameter of gimbal_gyroscope"), "{e}");
+    assert!(lines[1].contains("help: did you mean `M1`? parameters: M1, M2, M3"), "{e}");
+    assert!(
+        lines[2].starts_with("bad.toml:7:7: error: `Q11` is not a state")
+            && lines[3].contains("did you mean `Q1`?"),
+        "{e}"
+    );
+    assert!(lines[4].starts_with("bad.toml:8:6: error: `U4` is not a state"), "{e}");
+}
+
+#[test]
 fn accuracy_must_be_positive_and_needs_an_adaptive_method() {
     let base = "model = \"gimbal_gyroscope\"\nt_final = 1.0\noutput_step = 0.1\n[integrator]\n";
     let e = error(&format!("{base}method = \"dop853\"\naccuracy = -1e-6\n"));

@@ -19,7 +19,7 @@ use crate::ode::{Method, Tolerances};
 use crate::problem::SimModel;
 use crate::problem::{Pick, Problem};
 use crate::scene::{
-    output_times, plot_times, too_many_rows, Axle, Scene, SceneError, Value, ViewError, ViewSpec,
+    keep, output_times, plot_times, too_many_rows, Axle, Scene, SceneError, Value, ViewError, ViewSpec,
 };
 use initial::{norm_error, TopStart, UNIT_NORM_TOLERANCE};
 
@@ -40,14 +40,20 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
     let times = output_times(scene.t_final, scene.output_step);
     let method = method(scene);
     let written = picks(scene, info)?;
-    let params = parameters(scene, &**entry)?;
+    // Both tables' mistakes at once.
+    let (params, initial) = match (parameters(scene, &**entry), initial_state(scene, &**entry)) {
+        (Ok(params), Ok(initial)) => (params, initial),
+        (params, initial) => {
+            return Err(SceneError::all(params.err().into_iter().chain(initial.err()).collect()))
+        }
+    };
     let view = scene_view(scene, &**entry)?;
     let problem = Problem {
         title: scene.title.clone(),
         model: entry.clone(),
         view: view_with(scene, info, view.as_ref(), &params)?,
         params,
-        initial: initial_state(scene, &**entry)?,
+        initial,
         times: times.clone(),
         plot_times: if has_dense_output(method) {
             plot_times(&times, scene.plot_points, MAX_PLOT_POINTS)
@@ -158,15 +164,18 @@ fn parameters(scene: &Scene, entry: &dyn SimModel) -> Result<Vec<f64>, SceneErro
     let info = entry.info();
     let mut values = entry.default_params();
     given_once(scene, &scene.parameters, |n| info.param(n))?;
+    let mut found = Vec::new();
     for (name, v, span) in &scene.parameters {
-        let Some(i) = info.param(name) else {
-            return Err(scene.error_at(
-                span.clone(),
-                format!("`{name}` is not a parameter of {}", info.name),
-                &format!("parameters: {}", info.param_names.join(", ")),
-            ));
-        };
-        values[i] = in_model_units(scene, name, v, info.param_units[i], span)?;
+        match info.param(name) {
+            Some(i) => {
+                values[i] =
+                    keep(&mut found, in_model_units(scene, name, v, info.param_units[i], span)).unwrap_or(0.0)
+            }
+            None => found.push(not_the_models(scene, info, name, span, "a parameter")),
+        }
+    }
+    if !found.is_empty() {
+        return Err(SceneError::all(found));
     }
     if let Some(i) = values.iter().position(|v| !v.is_finite()) {
         return Err(without_value(scene, "parameter", info.param_names[i], values[i], "[parameters]"));
@@ -199,20 +208,43 @@ fn given_once<T>(
     Ok(())
 }
 
+/// The error for `name`, which is not `what` (a parameter, a state) of the model: the nearest
+/// of `known` as a did-you-mean, and all of them.
+fn not_the_models(
+    scene: &Scene,
+    info: &ModelInfo,
+    name: &str,
+    span: &std::ops::Range<usize>,
+    what: &str,
+) -> SceneError {
+    let known = if what == "a state" { info.state_names } else { info.param_names };
+    let near = kane_model::lang::nearest_word(name, known.iter().copied());
+    let hint = near.map_or(String::new(), |k| format!("did you mean `{k}`? "));
+    let plural = if what == "a state" { "states" } else { "parameters" };
+    scene.error_at(
+        span.clone(),
+        format!("`{name}` is not {what} of {}", info.name),
+        &format!("{hint}{plural}: {}", known.join(", ")),
+    )
+}
+
 /// The model's initial state with the scene's values.
 fn initial_state(scene: &Scene, entry: &dyn SimModel) -> Result<Vec<f64>, SceneError> {
     let info = entry.info();
     let mut y = entry.initial_state();
     given_once(scene, &scene.initial, |n| info.state(n))?;
+    let mut found = Vec::new();
     for (name, v, span) in &scene.initial {
-        let Some(i) = info.state(name) else {
-            return Err(scene.error_at(
-                span.clone(),
-                format!("`{name}` is not a state of {}", info.name),
-                &format!("states: {}", info.state_names.join(", ")),
-            ));
-        };
-        y[i] = in_model_units(scene, name, v, info.state_units[i], span)?;
+        match info.state(name) {
+            Some(i) => {
+                y[i] =
+                    keep(&mut found, in_model_units(scene, name, v, info.state_units[i], span)).unwrap_or(0.0)
+            }
+            None => found.push(not_the_models(scene, info, name, span, "a state")),
+        }
+    }
+    if !found.is_empty() {
+        return Err(SceneError::all(found));
     }
     if let Some(axle) = &scene.axle {
         apply_axle(scene, axle, info, &mut y)?;

@@ -15,12 +15,14 @@ mod grid;
 mod parse;
 mod specified_table;
 mod text;
+mod typed;
 mod view_drawing;
 mod view_length;
 mod view_spec;
 
 pub use event_decls::{Direction, EventDecl, EventSource, Preset};
 pub use grid::{output_times, plot_times, too_many_rows};
+pub(crate) use text::keep;
 pub use text::SceneError;
 pub use view_spec::{
     ArrowView, BodyView, Length, Orientation, PointView, Shape, TraceView, ViewError, ViewSpec,

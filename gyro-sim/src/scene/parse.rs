@@ -13,7 +13,7 @@ use super::controls::ControlFile;
 use super::event_decls::{self, EventFile};
 use super::grid::too_many_rows;
 use super::specified_table::Table;
-use super::text::{is_simple_name, SceneError, Span, Text};
+use super::text::{is_simple_name, keep, SceneError, Span, Text};
 use super::{Axle, Integrator, IntegratorOverrides, Scene, Value, ViewSpec};
 
 #[derive(Deserialize)]
@@ -390,6 +390,7 @@ impl Scene {
             column: 1,
             message: format!("cannot read the scene: {e}"),
             help: "give the path of a scene .toml file, e.g. gyro-sim/scenes/paper/trial3.toml".into(),
+            more: Vec::new(),
         })?;
         Scene::parse_with(&file, &source, overrides)
     }
@@ -406,22 +407,54 @@ impl Scene {
         overrides: &IntegratorOverrides,
     ) -> Result<Scene, SceneError> {
         let text = Text { file, source };
-        let raw: SceneFile = toml::from_str(source).map_err(|e| {
-            text.err(
-                e.span().unwrap_or(0..0),
-                e.message().to_string(),
-                "keys are title, model, t_final, output_step, outputs, [integrator] (method, rtol, atol, step, accuracy, max_steps), [parameters], [initial], [specified], [axle] (tilt, spin, precession, nutation, quaternion, rates), [view], [[events]] (name, when, preset, direction, action, count, angle, margin, lock), [[controls]] (name, min, max, step, unit), plot_points",
-            )
-        })?;
-        let model = raw.model.ok_or_else(|| {
-            text.err(
-                0..0,
-                "missing `model`".into(),
-                "add model = \"gimbal_gyroscope\" (or another compiled model)",
-            )
-        })?;
-        let (t_final, output_step) = text.times(raw.t_final, raw.output_step)?;
-        let integrator = text.integrator(raw.integrator, overrides, (t_final, output_step))?;
+        let typed = super::typed::read_typed::<SceneFile>(&text)?;
+        let raw = typed.tables;
+        // Each check on its own, so one reading reports every mistake.
+        let mut found = typed.unknown;
+        let model = keep(
+            &mut found,
+            raw.model.ok_or_else(|| {
+                text.err(
+                    0..0,
+                    "missing `model`".into(),
+                    "add model = \"gimbal_gyroscope\" (or another compiled model)",
+                )
+            }),
+        );
+        let times = keep(&mut found, text.times(raw.t_final, raw.output_step));
+        let integrator = times.and_then(|t| keep(&mut found, text.integrator(raw.integrator, overrides, t)));
+        let parameters = keep(&mut found, text.values(raw.parameters));
+        let initial = keep(&mut found, text.values(raw.initial));
+        let specified =
+            times.and_then(|(t_final, _)| keep(&mut found, text.formulas(raw.specified, t_final)));
+        let axle = keep(&mut found, text.axle(raw.axle));
+        let plot_points = keep(&mut found, text.plot_points(raw.plot_points));
+        let events = keep(
+            &mut found,
+            event_decls::decls(raw.events.unwrap_or_default(), source, &|span, message, help| {
+                text.err(span, message, help)
+            }),
+        );
+        let (
+            Some(model),
+            Some((t_final, output_step)),
+            Some(integrator),
+            Some(parameters),
+            Some(initial),
+            Some(specified),
+            Some(axle),
+            Some(plot_points),
+            Some(events),
+        ) = (model, times, integrator, parameters, initial, specified, axle, plot_points, events)
+        else {
+            // `missing output_step` after `output_stp` (did you mean `output_step`?) says it again.
+            let said = |e: &SceneError| typed.suggested.iter().any(|k| e.message == format!("missing `{k}`"));
+            found.retain(|e| !said(e));
+            return Err(SceneError::all(found));
+        };
+        if !found.is_empty() {
+            return Err(SceneError::all(found));
+        }
         let outputs =
             raw.outputs.unwrap_or_default().into_iter().map(|o| (o.get_ref().clone(), o.span())).collect();
         let mut scene = Scene {
@@ -430,20 +463,18 @@ impl Scene {
             title: raw.title.unwrap_or_else(|| model.get_ref().clone()),
             model_span: model.span(),
             model: model.into_inner(),
-            parameters: text.values(raw.parameters)?,
-            initial: text.values(raw.initial)?,
-            specified: text.formulas(raw.specified, t_final)?,
-            axle: text.axle(raw.axle)?,
+            parameters,
+            initial,
+            specified,
+            axle,
             view_span: view_span(source),
             view: raw.view,
             t_final,
             output_step,
-            plot_points: text.plot_points(raw.plot_points)?,
+            plot_points,
             outputs,
             integrator,
-            events: event_decls::decls(raw.events.unwrap_or_default(), source, &|span, message, help| {
-                text.err(span, message, help)
-            })?,
+            events,
             controls: Vec::new(),
         };
         scene.controls = text.controls(raw.controls.unwrap_or_default(), &scene)?;
@@ -486,8 +517,30 @@ mod tests {
         assert!(e.starts_with("top.toml:5:14: error: `quaternion` names 3 states, not 4"), "{e}");
         let e = error("quaternion = [\"E4\", \"E1\", \"E2\", \"E3\"]\nrates = [\"W1\"]\n");
         assert!(e.starts_with("top.toml:6:9: error: `rates` names 1 states, not 3"), "{e}");
-        let e = error("tilts = \"60 deg\"\n");
-        assert!(e.starts_with("top.toml:5:1: error: unknown field `tilts`"), "{e}");
+        let e = error("quaternion = [\"E4\", \"E1\", \"E2\", \"E3\"]\ntilts = \"60 deg\"\n");
+        assert!(e.starts_with("top.toml:6:1: error: unknown field `tilts`"), "{e}");
+        assert!(e.contains("help: did you mean `tilt`?"), "{e}");
+    }
+
+    #[test]
+    fn every_mistake_is_reported_at_once_with_the_key_meant() {
+        let src = "model = \"heavy_top\"\nt_final = 1.0\noutput_stp = 0.1\nplot_points = 5000\n\
+                   [integrator]\nmethd = [\n  \"dop853\",\n]\n[view]\ncamra = 1\n";
+        let e = Scene::parse("s.toml", src).unwrap_err();
+        let each: Vec<String> = e.each().map(|m| format!("{}:{} {}", m.line, m.column, m.message)).collect();
+        assert_eq!(each.len(), 4, "{e}");
+        assert!(
+            each[0].starts_with("3:1 unknown field `output_stp`") && e.help == "did you mean `output_step`?",
+            "{e}"
+        );
+        assert!(each[1].starts_with("4:15 plot_points must be 1 to 1000"), "{e}");
+        assert!(
+            each[2].starts_with("6:1 unknown field `methd`") && e.more[1].help == "did you mean `method`?",
+            "{e}"
+        );
+        assert!(each[3].starts_with("10:1 unknown field `camra`"), "{e}");
+        // `missing output_step` would only say again what the did-you-mean says.
+        assert!(!e.to_string().contains("missing `output_step`"), "{e}");
     }
 
     #[test]

@@ -16,13 +16,49 @@ pub struct SceneError {
     pub message: String,
     /// What to do.
     pub help: String,
+    /// Further mistakes found in the same reading, in the file's order.
+    pub more: Vec<SceneError>,
+}
+
+impl SceneError {
+    /// One error holding every mistake of `errors` (at least one), the first in the file first.
+    pub fn all(errors: Vec<SceneError>) -> SceneError {
+        let mut errors: Vec<SceneError> = errors
+            .into_iter()
+            .flat_map(|mut e| {
+                let more = std::mem::take(&mut e.more);
+                std::iter::once(e).chain(more)
+            })
+            .collect();
+        errors.sort_by_key(|e| (e.line, e.column));
+        errors.dedup();
+        let mut first = errors.remove(0);
+        first.more.extend(errors);
+        first
+    }
+
+    /// This mistake and the further ones.
+    pub fn each(&self) -> impl Iterator<Item = &SceneError> {
+        std::iter::once(self).chain(&self.more)
+    }
 }
 
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        writeln!(f, "{}:{}:{}: error: {}", self.file, self.line, self.column, self.message)?;
-        write!(f, "  help: {}", self.help)
+        for (k, e) in self.each().enumerate() {
+            if k > 0 {
+                writeln!(f)?;
+            }
+            writeln!(f, "{}:{}:{}: error: {}", e.file, e.line, e.column, e.message)?;
+            write!(f, "  help: {}", e.help)?;
+        }
+        Ok(())
     }
+}
+
+/// The result of one check of a scene kept, its error added to `found`.
+pub(crate) fn keep<T>(found: &mut Vec<SceneError>, result: Result<T, SceneError>) -> Option<T> {
+    result.map_err(|e| found.push(e)).ok()
 }
 
 impl std::error::Error for SceneError {}
@@ -41,7 +77,7 @@ pub(super) fn line_col(src: &str, offset: usize) -> (usize, usize) {
 /// An error at a span of a scene's text.
 pub(super) fn error_at(file: &str, source: &str, span: Span, message: String, help: &str) -> SceneError {
     let (line, column) = line_col(source, span.start);
-    SceneError { file: file.to_string(), line, column, message, help: help.to_string() }
+    SceneError { file: file.to_string(), line, column, message, help: help.to_string(), more: Vec::new() }
 }
 
 /// A parsed scene's text, for errors at spans of it.

@@ -38,7 +38,7 @@ pub use compare::{compare, Comparison, Outcome, Relation};
 pub use diagnostic::{line_column, Diagnostic, Report, Severity, SourcePart};
 pub use eoms::{printed_eoms, EomsError, EomsText, PrintedEoms, Shown, COLLECT_BUDGET, COLLECT_TOTAL};
 pub use interp::value::Value;
-pub use interp::{language_words, Bookkeeping, CodeRequest, InputValue, LoadedModel};
+pub use interp::{language_words, nearest_word, Bookkeeping, CodeRequest, InputValue, LoadedModel};
 pub use parser::parse_expression;
 pub use present::Presenter;
 pub use show::show;

@@ -323,15 +323,8 @@ pub(crate) const KNOWN_CALLS: &[&str] = &[
 /// away, and fewer than its length), for a did-you-mean.
 pub(crate) fn nearest_command(upper: &str) -> Option<&'static str> {
     let session = super::super::parser::SESSION_COMMANDS.iter();
-    KNOWN_CALLS
-        .iter()
-        .chain(session)
-        .chain(&["UNITSYSTEM", "UNITS", "INPUT", "OUTPUT", "CODE"])
-        .map(|k| (super::names::edit_distance(upper, k), *k))
-        // Two edits turn short names into unrelated ones (EXIT -> EIG): one for four letters or fewer.
-        .filter(|(d, k)| *d <= if upper.len().min(k.len()) <= 4 { 1 } else { 2 } && *d < k.len())
-        .min()
-        .map(|(_, k)| k)
+    let known = KNOWN_CALLS.iter().chain(session).chain(&["UNITSYSTEM", "UNITS", "INPUT", "OUTPUT", "CODE"]);
+    super::names::nearest_word(upper, known.copied())
 }
 
 #[cfg(test)]

@@ -59,6 +59,7 @@ use super::diagnostic::Diagnostic;
 use super::token::Span;
 use super::units::size::UnitSystem;
 pub(crate) use names::edit_distance;
+pub use names::nearest_word;
 pub(crate) use sources::{KinematicSource, LoadSource, Sources};
 use value::Value;
 

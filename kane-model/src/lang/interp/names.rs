@@ -313,6 +313,19 @@ impl Interpreter {
     }
 }
 
+/// The word of `known` nearest to `word`, for a did-you-mean: at most two edits away (one when
+/// either is four letters or fewer) and fewer edits than its length; case is ignored.
+pub fn nearest_word<'a>(word: &str, known: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let upper = word.to_ascii_uppercase();
+    known
+        .into_iter()
+        .map(|k| (edit_distance(&upper, &k.to_ascii_uppercase()), k))
+        // Two edits turn short names into unrelated ones (EXIT -> EIG): one for four letters or fewer.
+        .filter(|(d, k)| *d <= if upper.len().min(k.len()) <= 4 { 1 } else { 2 } && *d < k.len())
+        .min()
+        .map(|(_, k)| k)
+}
+
 /// Levenshtein distance, for "did you mean" hints.
 pub(crate) fn edit_distance(a: &str, b: &str) -> usize {
     let b: Vec<char> = b.chars().collect();
