@@ -163,6 +163,33 @@ fn the_printed_scene_holds_every_value_and_runs_as_the_model_file_does() {
 }
 
 #[test]
+fn the_energy_line_is_the_total_where_gravity_is_the_only_load_and_kinetic_elsewhere() {
+    let dir = folder("energy_line");
+    let out = dir.join("out");
+    let out = out.to_str().unwrap();
+    let summary =
+        text(&gyro_sim(&["--model", DOUBLE, "--engine", "instant", "--no-view", "--out", out], &dir));
+    let total = summary.split("total energy (kinetic + gravity's potential) ").nth(1).expect(&summary);
+    let numbers: Vec<f64> = total.split([' ', ';', '(', ')']).filter_map(|w| w.parse().ok()).collect();
+    // -1.5625e1 -> -1.5625e1 (change ...): the pendulum keeps its total energy.
+    let (start, end) = (numbers[0], numbers[1]);
+    assert!(start < -1.0 && ((end - start) / start).abs() < 1e-8, "{summary}");
+    // A torque besides gravity: the potential is not the loads', so only the kinetic energy.
+    let driven = dir.join("driven.al");
+    let source = std::fs::read_to_string(DOUBLE).unwrap();
+    std::fs::write(
+        &driven,
+        source.replace("ZERO = FR() + FRSTAR()", "TORQUE_A> = 0.1*N3>\nZERO = FR() + FRSTAR()"),
+    )
+    .unwrap();
+    let summary = text(&gyro_sim(
+        &["--model", driven.to_str().unwrap(), "--engine", "instant", "--no-view", "--out", out],
+        &dir,
+    ));
+    assert!(summary.contains("; kinetic energy ") && !summary.contains("total energy"), "{summary}");
+}
+
+#[test]
 fn figures_from_the_rows_alone_are_noted_and_plot_points_draws_them_dense() {
     let dir = folder("plot_points");
     let sparse = dir.join("sparse.al");

@@ -6,9 +6,16 @@ use crate::run;
 /// The run's statistics, energy, files and accuracy.
 pub fn print_summary(title: &str, summary: &run::RunSummary) {
     let t = &summary.trajectory;
-    let energy = match t.kinetic_energy {
-        Some((a, b)) => format!("; kinetic energy {a:.6e} -> {b:.6e} (change {:+.6e})", b - a),
-        None => String::new(),
+    let energy = match (t.kinetic_energy, t.potential_energy) {
+        (Some((ka, kb)), Some((pa, pb))) => {
+            let (a, b) = (ka + pa, kb + pb);
+            format!(
+                "; total energy (kinetic + gravity's potential) {a:.6e} -> {b:.6e} (change {:+.6e}; kinetic {ka:.6e} -> {kb:.6e})",
+                b - a
+            )
+        }
+        (Some((a, b)), None) => format!("; kinetic energy {a:.6e} -> {b:.6e} (change {:+.6e})", b - a),
+        _ => String::new(),
     };
     let files = match &summary.written {
         Some(w) => format!("; wrote {} rows to {} and {}", w.rows, w.csv.display(), w.plot.display()),

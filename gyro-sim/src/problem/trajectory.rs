@@ -62,6 +62,9 @@ pub struct Trajectory {
     pub integrated: Vec<&'static str>,
     /// Kinetic energy at the start and at the end, when the model has it as an output.
     pub kinetic_energy: Option<(f64, f64)>,
+    /// Gravity's potential energy at the start and the end, where the model's only loads are
+    /// gravity's (then kinetic plus potential is the total energy).
+    pub potential_energy: Option<(f64, f64)>,
     /// How an asked accuracy was met.
     pub accuracy: Option<Accuracy>,
     /// How far the unit-norm states (Euler parameters) drifted, when the problem has any.

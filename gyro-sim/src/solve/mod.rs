@@ -19,9 +19,9 @@ mod residuals;
 use std::time::Instant;
 
 use kane_model::assembly::Assembly;
-use kane_model::runtime::GeneratedModel;
+use kane_model::runtime::{GeneratedModel, OutputKind};
 
-use bound::kinetic_energy_output;
+use bound::{kinetic_energy_output, output_of_kind};
 pub use bound::{BoundModel, ModelSystem, Reduced};
 use integration::{integrate, Integration};
 pub(crate) use refine::largest_difference;
@@ -84,14 +84,19 @@ pub fn solve_bound<B: BoundModel>(
         };
     let wall = start.elapsed();
     let t_end = *problem.times.last().unwrap_or(&0.0);
-    let kinetic_energy = kinetic_energy_output(info).map(|k| {
+    // An energy output at the start and the end: kinetic, and gravity's potential when known.
+    let start_and_end = |k: usize| {
         let at = |t: f64, y: &[f64]| {
             let mut out = [0.0];
             full_sys.output(k, t, y, &[], &mut out);
             out[0]
         };
         (at(0.0, &problem.initial), at(t_end, &y_end))
-    });
+    };
+    let kinetic_energy = kinetic_energy_output(info).map(start_and_end);
+    let potential = output_of_kind(info, OutputKind::PotentialEnergy)
+        .filter(|k| !info.outputs[*k].needs_rates && info.outputs[*k].columns.len() == 1);
+    let potential_energy = kinetic_energy.and(potential).map(start_and_end);
     Ok(Trajectory {
         title: problem.title.clone(),
         columns,
@@ -101,6 +106,7 @@ pub fn solve_bound<B: BoundModel>(
         wall,
         integrated: keep.iter().map(|k| info.state_names[*k]).collect(),
         kinetic_energy,
+        potential_energy,
         accuracy,
         norm_drift,
         events,

@@ -112,10 +112,43 @@ impl LoadedModel {
         if formed && !spec.outputs.iter().any(|o| o.name.eq_ignore_ascii_case("KE")) {
             let unit = spec.unit("KE").to_string();
             spec.add_kinetic_energy("KE", &unit)?;
+            if let Some(g) = self.gravity.as_ref().filter(|_| gravity_is_the_only_load(&spec.model)) {
+                add_gravity_potential(&mut spec, g);
+            }
         }
         let drawing = if drawn { Some(spec.add_drawing(self.gravity.as_ref())?) } else { None };
         finish_outputs(&mut spec, &formulas, formed, algebraic)?;
         Ok((spec, drawing))
+    }
+}
+
+/// Whether the model's loads are gravity on every mass and nothing else (then the potential of
+/// gravity is that of every load).
+fn gravity_is_the_only_load(model: &crate::mechanics::Model) -> bool {
+    let loads = model.loads();
+    loads.len() == model.masses().count()
+        && loads.iter().all(|l| matches!(l, crate::mechanics::Load::Force { .. }))
+}
+
+/// The potential energy of gravity `g` as the output `PE`, zero at the point every mass is
+/// located from when that point is at rest in N; nothing when there is no such point (the
+/// potential is then not known).
+fn add_gravity_potential(spec: &mut ModelSpec, g: &crate::mechanics::Vector) {
+    if spec.outputs.iter().any(|o| o.name.eq_ignore_ascii_case("PE")) {
+        return;
+    }
+    let Some(first) = spec.model.masses().next() else { return };
+    let Some(&root) = spec.model.point_chain(first.point).last() else { return };
+    let n = spec.model.newtonian();
+    let at_rest = spec
+        .model
+        .velocity(root, n)
+        .and_then(|v| spec.model.express(&v, n))
+        .is_ok_and(|v| v.iter().all(|c| spec.model.ar.is_zero(*c)));
+    if at_rest {
+        let unit = spec.unit("KE").to_string();
+        // A mass located from another root has no position from this one: no potential.
+        let _ = spec.add_potential_energy("PE", g, root, &unit);
     }
 }
 

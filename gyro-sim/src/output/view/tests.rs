@@ -125,6 +125,7 @@ fn trajectory() -> Trajectory {
         wall: Duration::ZERO,
         integrated: vec![],
         kinetic_energy: None,
+        potential_energy: None,
         accuracy: None,
         norm_drift: None,
         constraints: None,
