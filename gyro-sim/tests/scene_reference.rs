@@ -230,11 +230,14 @@ fn the_specified_entry_names_the_keys_of_a_table() {
     assert!(missing.is_empty(), "### specified does not name {missing:?} (the reader: {message})");
 }
 
-/// The ```toml block under `## Example`.
+/// The ```toml block under `## Example`, after as many empty lines as the page has before it
+/// (so the reader's errors are at the page's lines).
 fn example() -> String {
     let after = PAGE.split_once("\n## Example\n").expect("the page has `## Example`").1;
     let block = after.split_once("```toml\n").expect("`## Example` has a ```toml block").1;
-    block.split_once("\n```").expect("the example's block is closed").0.to_string()
+    let before = PAGE[..PAGE.len() - block.len()].lines().count();
+    let text = block.split_once("\n```").expect("the example's block is closed").0;
+    format!("{}{text}\n", "\n".repeat(before))
 }
 
 #[test]
