@@ -132,11 +132,17 @@ fn without_a_view_the_drawing_is_neither_asked_for_nor_written() {
 #[test]
 fn the_printed_scene_holds_every_value_and_runs_as_the_model_file_does() {
     let dir = folder("printed_scene");
-    let printed = gyro_sim(&["--model", DOUBLE, "--print-scene", "--set", "Q2=10 deg"], &dir);
+    // Named relative to the working folder (the package's, in tests), as a user types it.
+    let relative = "tests/data/double_pendulum.al";
+    assert!(Path::new(relative).is_file());
+    let printed = gyro_sim(&["--model", relative, "--print-scene", "--set", "Q2=10 deg"], &dir);
     let scene = text(&printed);
     for line in ["L = 1.0", "G = 9.81", "M = 1.0", "Q1 = -1.2", "Q2 = \"10 deg\"", "U1 = 0.0", "U2 = 0.0"] {
         assert!(scene.contains(&format!("\n{line}\n")), "`{line}` missing:\n{scene}");
     }
+    // Saved in another folder, the scene still finds the model file.
+    assert!(scene
+        .contains(&format!("model = {:?}", std::fs::canonicalize(DOUBLE).unwrap().display().to_string())));
     let saved = dir.join("saved.toml");
     std::fs::write(&saved, &scene).unwrap();
     let (from_file, from_scene) = (dir.join("file"), dir.join("scene"));

@@ -289,7 +289,7 @@ fn run_command(
 fn run_prepared(prepared: &PreparedRun, args: &RunArgs) -> Result<ExitCode, CliError> {
     let scene = &prepared.scene;
     if args.print_scene {
-        print!("{}", scene.source);
+        print!("{}", prepared.printable_scene());
         return Ok(ExitCode::SUCCESS);
     }
     if let Some(warning) = prepared.open_inputs_warning() {

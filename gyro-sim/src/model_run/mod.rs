@@ -113,6 +113,18 @@ impl PreparedRun {
         }
     }
 
+    /// The scene's text to save and run: a generated scene names the model file by its
+    /// absolute path (a saved scene's model path is read relative to the scene's folder).
+    pub fn printable_scene(&self) -> String {
+        let text = &self.scene.source;
+        let Some(absolute) = self.generated.as_ref().and_then(|_| std::fs::canonicalize(&self.file).ok())
+        else {
+            return text.clone();
+        };
+        let given = format!("model = {:?}", self.scene.model);
+        text.replacen(&given, &format!("model = {:?}", absolute.display().to_string()), 1)
+    }
+
     /// A warning naming the model's open inputs the scene gives no value, or None.
     pub fn open_inputs_warning(&self) -> Option<String> {
         open_inputs::open_inputs_warning(&self.scene, self.model.info())

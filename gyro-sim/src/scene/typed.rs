@@ -35,8 +35,11 @@ pub(super) fn read_typed<T: DeserializeOwned>(text: &Text<'_>) -> Result<Typed<T
             Err(e) => e,
         };
         let span = e.span().unwrap_or(0..0);
-        // A mistake where an entry was blanked follows from the blanking.
-        if blanked.iter().any(|b| b.start <= span.start && span.start <= b.end) {
+        // A mistake where an entry was blanked, or a field missing after one was (a line of an
+        // inline table blanked whole), follows from the blanking.
+        let follows = blanked.iter().any(|b| b.start <= span.start && span.start <= b.end)
+            || (!blanked.is_empty() && e.message().starts_with("missing field"));
+        if follows {
             break;
         }
         let Some((key, expected)) = unknown_key(e.message()) else {

@@ -110,10 +110,16 @@ pub enum RunDataError {
     View(#[from] crate::scene::ViewError),
     /// The scene does not fit its model.
     #[error(transparent)]
-    Scene(#[from] crate::scene::SceneError),
+    Scene(Box<crate::scene::SceneError>),
     /// The integration stopped.
     #[error(transparent)]
     Solve(#[from] crate::problem::SolveError),
+}
+
+impl From<crate::scene::SceneError> for RunDataError {
+    fn from(e: crate::scene::SceneError) -> Self {
+        RunDataError::Scene(Box::new(e))
+    }
 }
 
 /// Runs `scene` (resolve, then solve: the `gyro-sim run` pipeline without files) and gives the
