@@ -13,6 +13,9 @@
 //! unit-norm test of Euler parameters given directly, and two numbers the presets quote (the
 //! steady-precession rates and the sleeping top's spin threshold).
 
+use kane_model::lang::units::normalised;
+use kane_model::lang::units::size::unit_size;
+
 use crate::scene::{Axle, Scene, SceneError, Value};
 
 /// How far from 1 the norm of Euler parameters given directly may be.
@@ -99,15 +102,18 @@ pub struct WrongUnit {
     pub unit: String,
 }
 
-/// `v` in radians (an angle) or rad/s (a rate); the unit written when it does not fit `kind`.
+/// `v` in radians (an angle) or rad/s (a rate), its unit read as INPUT lines read units (a plain
+/// number is already in them); the unit written when it does not fit `kind`.
 pub fn in_radians(v: &Value, kind: Kind) -> Result<f64, WrongUnit> {
-    let deg = std::f64::consts::PI / 180.0;
-    let unit = v.unit.as_deref().map(|u| u.to_ascii_uppercase().replace(' ', "").replace("SEC", "S"));
-    match (kind, unit.as_deref()) {
-        (Kind::Angle, None | Some("RAD")) | (Kind::Rate, None | Some("RAD/S")) => Ok(v.number),
-        (Kind::Angle, Some("DEG")) | (Kind::Rate, Some("DEG/S")) => Ok(v.number * deg),
-        (Kind::Rate, Some("RPM")) => Ok(v.number * std::f64::consts::TAU / 60.0),
-        (_, Some(u)) => Err(WrongUnit { unit: u.to_string() }),
+    let Some(unit) = v.unit.as_deref().filter(|u| !u.trim().is_empty()) else { return Ok(v.number) };
+    let unit = normalised(unit);
+    let wanted = unit_size(match kind {
+        Kind::Angle => "RAD",
+        Kind::Rate => "RAD/S",
+    });
+    match (unit_size(&unit), wanted) {
+        (Ok(size), Ok(wanted)) if size.dim == wanted.dim => Ok(v.number * size.si),
+        _ => Err(WrongUnit { unit }),
     }
 }
 
@@ -186,6 +192,9 @@ mod tests {
         let near = |got: Result<f64, WrongUnit>, want: f64| (got.unwrap() - want).abs() <= 4e-16 * want;
         assert_eq!(in_radians(&value(60.0, "deg"), Kind::Angle), Ok(60.0 * deg));
         assert_eq!(in_radians(&value(1.5, "rad"), Kind::Angle), Ok(1.5));
+        // Every angle spelling the unit table lists, as INPUT lines and [parameters] read it.
+        assert!(near(in_radians(&value(30.0, "degrees"), Kind::Angle), 30.0 * deg));
+        assert!(near(in_radians(&value(2.0, "deg/sec"), Kind::Rate), 2.0 * deg));
         assert_eq!(in_radians(&value(1.5, ""), Kind::Angle), Ok(1.5));
         assert_eq!(in_radians(&value(10.0, "rad/s"), Kind::Rate), Ok(10.0));
         assert_eq!(in_radians(&value(10.0, "rad/sec"), Kind::Rate), Ok(10.0));

@@ -3,6 +3,8 @@
 //! key that is wrong (names, expressions and angles are checked against the model later, when
 //! the scene is resolved).
 
+use kane_model::lang::units::normalised;
+use kane_model::lang::units::size::unit_size;
 use serde::Deserialize;
 use toml::Spanned;
 
@@ -285,7 +287,7 @@ fn preset(
     }
 }
 
-/// An angle given as a number (degrees) or a string with `deg` or `rad`; radians.
+/// An angle given as a number (degrees) or a string with a unit of angle (`"5 deg"`, `"0.1 rad"`); radians.
 fn angle_value(
     v: &Spanned<toml::Value>,
     at: &str,
@@ -303,12 +305,18 @@ fn angle_value(
         toml::Value::Float(x) => x.to_radians(),
         toml::Value::Integer(i) => (*i as f64).to_radians(),
         toml::Value::String(s) => {
-            let mut parts = s.split_whitespace();
-            let n: f64 = parts.next().and_then(|n| n.parse().ok()).ok_or_else(bad)?;
-            match parts.next().map(str::to_ascii_lowercase).as_deref() {
-                None | Some("deg") => n.to_radians(),
-                Some("rad") => n,
-                Some(_) => return Err(bad()),
+            let (number, unit) = s.trim().split_once(char::is_whitespace).unwrap_or((s.trim(), ""));
+            let n: f64 = number.parse().map_err(|_| bad())?;
+            if unit.trim().is_empty() {
+                n.to_radians()
+            } else {
+                // Read as INPUT lines read units: any angle (deg, degrees, rad, rev, ...).
+                let size = unit_size(&normalised(unit)).map_err(|_| bad())?;
+                let radian = unit_size("RAD").map_err(|_| bad())?;
+                if size.dim != radian.dim {
+                    return Err(bad());
+                }
+                n * size.si
             }
         }
         _ => return Err(bad()),
@@ -317,5 +325,31 @@ fn angle_value(
         Ok(x)
     } else {
         Err(bad())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn angle(text: &str) -> Result<f64, SceneError> {
+        let table: toml::Table = toml::from_str(&format!("v = {text}")).unwrap();
+        let v = Spanned::new(0..0, table["v"].clone());
+        let err = |span: Span, message: String, help: &str| {
+            crate::scene::text::error_at("s.toml", "", span, message, help)
+        };
+        angle_value(&v, "[[events]] 1", "margin", &err)
+    }
+
+    #[test]
+    fn angles_read_units_as_input_lines_do_and_a_plain_number_is_degrees() {
+        let deg = std::f64::consts::PI / 180.0;
+        for (text, want) in
+            [("5", 5.0 * deg), ("\"5 deg\"", 5.0 * deg), ("\"5 degrees\"", 5.0 * deg), ("\"0.1 rad\"", 0.1)]
+        {
+            let got = angle(text).unwrap();
+            assert!((got - want).abs() <= 1e-15, "{text}: {got} against {want}");
+        }
+        assert!(angle("\"5 m\"").unwrap_err().message.contains("is not an angle"));
     }
 }
