@@ -163,20 +163,7 @@ fn method(scene: &Scene) -> Method {
 fn parameters(scene: &Scene, entry: &dyn SimModel) -> Result<Vec<f64>, SceneError> {
     let info = entry.info();
     let mut values = entry.default_params();
-    given_once(scene, &scene.parameters, |n| info.param(n))?;
-    let mut found = Vec::new();
-    for (name, v, span) in &scene.parameters {
-        match info.param(name) {
-            Some(i) => {
-                values[i] =
-                    keep(&mut found, in_model_units(scene, name, v, info.param_units[i], span)).unwrap_or(0.0)
-            }
-            None => found.push(not_the_models(scene, info, name, span, "a parameter")),
-        }
-    }
-    if !found.is_empty() {
-        return Err(SceneError::all(found));
-    }
+    put_table(scene, info, &scene.parameters, Quantity::Parameter, &mut values)?;
     if let Some(i) = values.iter().position(|v| !v.is_finite()) {
         return Err(without_value(scene, "parameter", info.param_names[i], values[i], "[parameters]"));
     }
@@ -208,44 +195,75 @@ fn given_once<T>(
     Ok(())
 }
 
-/// The error for `name`, which is not `what` (a parameter, a state) of the model: the nearest
-/// of `known` as a did-you-mean, and all of them.
-fn not_the_models(
+/// Which of the model's quantities a scene table sets.
+#[derive(Clone, Copy)]
+enum Quantity {
+    /// `[parameters]`.
+    Parameter,
+    /// `[initial]`.
+    State,
+}
+
+impl Quantity {
+    fn index(self, info: &ModelInfo, name: &str) -> Option<usize> {
+        match self {
+            Quantity::Parameter => info.param(name),
+            Quantity::State => info.state(name),
+        }
+    }
+
+    /// The model's names and units of this kind.
+    fn names_and_units(self, info: &ModelInfo) -> (&'static [&'static str], &'static [&'static str]) {
+        match self {
+            Quantity::Parameter => (info.param_names, info.param_units),
+            Quantity::State => (info.state_names, info.state_units),
+        }
+    }
+}
+
+/// `values` with the entries of a scene `table` of `quantity` put in, in the model's units;
+/// every unknown name (with the nearest known one) and every wrong unit in one error.
+fn put_table(
     scene: &Scene,
     info: &ModelInfo,
-    name: &str,
-    span: &std::ops::Range<usize>,
-    what: &str,
-) -> SceneError {
-    let known = if what == "a state" { info.state_names } else { info.param_names };
-    let near = kane_model::lang::nearest_word(name, known.iter().copied());
-    let hint = near.map_or(String::new(), |k| format!("did you mean `{k}`? "));
-    let plural = if what == "a state" { "states" } else { "parameters" };
-    scene.error_at(
-        span.clone(),
-        format!("`{name}` is not {what} of {}", info.name),
-        &format!("{hint}{plural}: {}", known.join(", ")),
-    )
+    table: &[(String, Value, std::ops::Range<usize>)],
+    quantity: Quantity,
+    values: &mut [f64],
+) -> Result<(), SceneError> {
+    given_once(scene, table, |n| quantity.index(info, n))?;
+    let (names, units) = quantity.names_and_units(info);
+    let mut found = Vec::new();
+    for (name, v, span) in table {
+        let Some(i) = quantity.index(info, name) else {
+            let (what, plural) = match quantity {
+                Quantity::Parameter => ("a parameter", "parameters"),
+                Quantity::State => ("a state", "states"),
+            };
+            let hint = kane_model::lang::nearest_word(name, names.iter().copied())
+                .map_or(String::new(), |k| format!("did you mean `{k}`? "));
+            found.push(scene.error_at(
+                span.clone(),
+                format!("`{name}` is not {what} of {}", info.name),
+                &format!("{hint}{plural}: {}", names.join(", ")),
+            ));
+            continue;
+        };
+        if let Some(x) = keep(&mut found, in_model_units(scene, name, v, units[i], span)) {
+            values[i] = x;
+        }
+    }
+    if found.is_empty() {
+        Ok(())
+    } else {
+        Err(SceneError::all(found))
+    }
 }
 
 /// The model's initial state with the scene's values.
 fn initial_state(scene: &Scene, entry: &dyn SimModel) -> Result<Vec<f64>, SceneError> {
     let info = entry.info();
     let mut y = entry.initial_state();
-    given_once(scene, &scene.initial, |n| info.state(n))?;
-    let mut found = Vec::new();
-    for (name, v, span) in &scene.initial {
-        match info.state(name) {
-            Some(i) => {
-                y[i] =
-                    keep(&mut found, in_model_units(scene, name, v, info.state_units[i], span)).unwrap_or(0.0)
-            }
-            None => found.push(not_the_models(scene, info, name, span, "a state")),
-        }
-    }
-    if !found.is_empty() {
-        return Err(SceneError::all(found));
-    }
+    put_table(scene, info, &scene.initial, Quantity::State, &mut y)?;
     if let Some(axle) = &scene.axle {
         apply_axle(scene, axle, info, &mut y)?;
     }
