@@ -180,3 +180,16 @@ fn eoms_latex_is_a_balanced_align_block() {
     assert!(out.contains("\\dot{Q}_{1} &= U_{1}"), "{out}");
     assert!(out.contains("0 &= -K_{1} \\cos\\left(Q_{2}\\right) \\dot{U}_{1} - K_{1} \\dot{U}_{3}"), "{out}");
 }
+
+#[test]
+fn angle_differences_and_double_angles_are_proven_and_reduced() {
+    let model = data("double_pendulum_absolute.al");
+    let (ok, out, err) = kane(&["compare", &model, &data("double_pendulum_hand_rates.al")]);
+    assert!(ok, "{out}{err}");
+    assert_eq!(out.matches("proven equal").count(), 2, "{out}");
+    let (ok, out, _) = kane(&["compare", &model, &data("double_pendulum_hand_sum_for_difference.al")]);
+    assert!(!ok, "{out}");
+    assert!(out.contains("ZERO[1]: proven equal\n"), "{out}");
+    // sin(Q1 + Q2) - sin(Q1 - Q2), reduced: the groups that are zero do not appear.
+    assert!(out.contains("ZERO[2]: DIFFERS: hand - derived = 2*L1*L2*M2*cos(Q1)*sin(Q2)*U1^2\n"), "{out}");
+}

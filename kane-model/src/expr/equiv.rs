@@ -89,7 +89,8 @@ impl Default for EquivalenceConfig {
 }
 
 impl Arena {
-    /// Whether `a` and `b` are equal: [`Equivalence::Proven`] if `a - b` simplifies to 0,
+    /// Whether `a` and `b` are equal: [`Equivalence::Proven`] if `a - b` simplifies to 0 (with
+    /// sums and multiples of angles expanded and over a common denominator when needed),
     /// otherwise compared at random points (see [`EquivalenceConfig::around`]).
     ///
     /// # Example
@@ -113,10 +114,13 @@ impl Arena {
         cfg: &EquivalenceConfig,
     ) -> Result<Equivalence, ExprError> {
         let d = self.sub(a, b)?;
-        if self.is_zero(d) || {
-            let s = self.simplify(d)?;
-            self.is_zero(s)
-        } {
+        if self.is_zero(d)
+            || {
+                let s = self.simplify(d)?;
+                self.is_zero(s)
+            }
+            || self.proves_zero_over_common_denominator(d)
+        {
             return Ok(Equivalence::Proven);
         }
         let syms: Vec<SymbolId> = self.free_symbols(&[a, b]);
@@ -177,17 +181,25 @@ mod tests {
 
     #[test]
     fn numerically_equal_when_not_provable() {
-        // sin(2x) = 2 sin(x) cos(x) is beyond the canonical form, so only sampling can confirm it.
+        // 2 sin(x/2)^2 = 1 - cos(x) needs a half angle, beyond the canonical form: only sampling
+        // confirms it. sin(2x) = 2 sin(x) cos(x) is proven.
         let mut ar = Arena::new();
         let x = ar.constant("x").unwrap();
-        let two = ar.integer(2);
+        let (one, two) = (ar.one(), ar.integer(2));
+        let half = ar.rational(1, 2).unwrap();
+        let hx = ar.mul(&[half, x]).unwrap();
+        let sh = ar.sin(hx).unwrap();
+        let sh2 = ar.powi(sh, 2).unwrap();
+        let lhs = ar.mul(&[two, sh2]).unwrap();
+        let c = ar.cos(x).unwrap();
+        let rhs = ar.sub(one, c).unwrap();
+        let r = ar.equivalent(lhs, rhs, &EquivalenceConfig::default()).unwrap();
+        assert!(matches!(r, Equivalence::NumericallyEqual { samples: 64, .. }), "{r:?}");
         let x2 = ar.mul(&[two, x]).unwrap();
         let lhs = ar.sin(x2).unwrap();
         let s = ar.sin(x).unwrap();
-        let c = ar.cos(x).unwrap();
         let rhs = ar.mul(&[two, s, c]).unwrap();
-        let r = ar.equivalent(lhs, rhs, &EquivalenceConfig::default()).unwrap();
-        assert!(matches!(r, Equivalence::NumericallyEqual { samples: 64, .. }), "{r:?}");
+        assert_eq!(ar.equivalent(lhs, rhs, &EquivalenceConfig::default()).unwrap(), Equivalence::Proven);
     }
 
     #[test]

@@ -7,6 +7,7 @@
 //! simplification) walk the DAG bottom-up and never recurse, so deep expressions are safe.
 
 mod abbrev;
+mod angles;
 mod arena;
 mod canonical;
 mod collect;

@@ -71,8 +71,17 @@ impl Judge<'_> {
             return Ok((Relation::Inconclusive, v));
         }
         let diff = self.ar.sub(hand, derived[at])?;
-        let difference = self.presenter.text(self.ar, diff)?;
+        let difference = self.shorter_difference(diff)?;
         Ok((Relation::Differs { difference }, v))
+    }
+
+    /// `diff` in the file's names, with angles reduced (so groups that are zero vanish) when that
+    /// reads shorter than the difference as written.
+    fn shorter_difference(&mut self, diff: ExprId) -> Result<String, ExprError> {
+        let written = self.presenter.text(self.ar, diff)?;
+        let Ok(reduced) = self.ar.reduce_angles(diff) else { return Ok(written) };
+        let reduced = self.presenter.text(self.ar, reduced)?;
+        Ok(if reduced.len() <= written.len() { reduced } else { written })
     }
 
     /// The verdict that `hand = -derived`, when it holds (and neither side is zero).
