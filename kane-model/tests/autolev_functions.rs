@@ -219,3 +219,18 @@ fn spline_through_a_cubic_is_the_cubic_with_its_derivatives() {
         lang::load("s.al", "VARIABLES X\nY = SPLINE(X, [0, 1, 1], [0, 1, 2])\n").err().unwrap().to_string();
     assert!(e.contains("SPLINE's points must increase: point 3 (1) follows 1"), "{e}");
 }
+
+#[test]
+fn coef_of_a_power_and_of_a_name_in_a_polynomial() {
+    let src =
+        "VARIABLES X, Y\nCONSTANTS A, B\nE = A*X^2 + B*X + X*Y + 3\nC1 = COEF(E, X)\nC2 = COEF(E, X^2)\n\
+               L = COEF(B*X + A*Y, [X, Y])\n";
+    let m = lang::load("c.al", src).unwrap_or_else(|r| panic!("{}", r.render()));
+    let text = |name: &str| m.model.ar.to_text(scalar(&m, name));
+    assert_eq!(text("C1"), "Y + B");
+    assert_eq!(text("C2"), "A");
+    let Some(Value::Matrix { data, .. }) = m.value("L") else { panic!("a row of coefficients") };
+    assert_eq!(data.iter().map(|x| m.model.ar.to_text(*x)).collect::<Vec<_>>(), ["B", "A"]);
+    let e = lang::load("c.al", "VARIABLES X\nE = SIN(X) + X\nC = COEF(E, X)\n").err().unwrap().to_string();
+    assert!(e.contains("not a polynomial in `X`"), "{e}");
+}

@@ -33,6 +33,16 @@ pub enum ExprError {
         /// The symbol it is not linear in.
         symbol: String,
     },
+    /// An expression asked for a coefficient of a power of a symbol is not a polynomial in it.
+    #[error(
+        "{expr} is not a polynomial in `{symbol}` (it appears inside a function or with a non-integer power)"
+    )]
+    NotPolynomial {
+        /// The expression, printed in backquotes (or described, when large).
+        expr: String,
+        /// The symbol.
+        symbol: String,
+    },
     /// A linear system has no unique solution (a zero pivot).
     #[error("the linear system has no unique solution (singular coefficient matrix)")]
     SingularSystem,

@@ -1,10 +1,10 @@
-//! Coefficients of expressions linear in a set of symbols.
+//! Coefficients of expressions linear in a set of symbols, and of a polynomial's powers.
 
 use rustc_hash::FxHashMap;
 
 use super::arena::Arena;
 use super::error::ExprError;
-use super::node::{ExprId, SymbolId};
+use super::node::{ExprId, Node, SymbolId};
 
 impl Arena {
     /// Splits `e = sum(c_i * s_i) + r` for `e` linear in `syms`; returns `(c, r)`.
@@ -40,6 +40,63 @@ impl Arena {
 }
 
 impl Arena {
+    /// The coefficient of `s^k` (`k >= 0`) in `e` multiplied out, other symbols taken as
+    /// constants: `coefficient(a x^2 + b x + x y, x, 1)` is `b + y`.
+    ///
+    /// # Example
+    /// ```
+    /// use kane_model::expr::Arena;
+    /// let mut ar = Arena::new();
+    /// let [a, b, x] = ["a", "b", "x"].map(|n| ar.constant(n).unwrap());
+    /// let x2 = ar.powi(x, 2).unwrap();
+    /// let ax2 = ar.mul(&[a, x2]).unwrap();
+    /// let bx = ar.mul(&[b, x]).unwrap();
+    /// let e = ar.add(&[ax2, bx]).unwrap();
+    /// let s = ar.as_symbol(x).unwrap();
+    /// let c = ar.coefficient(e, s, 2).unwrap();
+    /// assert_eq!(ar.to_text(c), "a");
+    /// ```
+    pub fn coefficient(&mut self, e: ExprId, s: SymbolId, k: i64) -> Result<ExprId, ExprError> {
+        let expanded = self.expand(e)?;
+        let terms: Vec<ExprId> = match self.node(expanded) {
+            Node::Sum(t) => t.to_vec(),
+            _ => vec![expanded],
+        };
+        let x = self.symbol_expr(s);
+        let mut kept = Vec::new();
+        for t in terms {
+            let factors: Vec<ExprId> = match self.node(t) {
+                Node::Product(f) => f.to_vec(),
+                _ => vec![t],
+            };
+            let mut power = 0;
+            let mut rest = Vec::with_capacity(factors.len());
+            for f in factors {
+                match *self.node(f) {
+                    _ if f == x => power += 1,
+                    Node::Pow([b, n]) if b == x => match self.as_rational(n).and_then(|r| r.as_i64()) {
+                        Some(n) => power += n,
+                        None => return Err(self.not_polynomial(e, s)),
+                    },
+                    _ if self.free_symbols(&[f]).contains(&s) => return Err(self.not_polynomial(e, s)),
+                    _ => rest.push(f),
+                }
+            }
+            if power == k {
+                kept.push(self.mul(&rest)?);
+            }
+        }
+        self.add(&kept)
+    }
+
+    fn not_polynomial(&self, e: ExprId, s: SymbolId) -> ExprError {
+        let expr = match self.graph_size(e) {
+            n if n <= 200 => format!("`{}`", self.to_text(e)),
+            n => format!("an expression of {n} nodes"),
+        };
+        ExprError::NotPolynomial { expr, symbol: self.symbol_info(s).name.clone() }
+    }
+
     /// Solves equations (each `= 0`, linear in `unknowns`) for the unknowns by Gauss-Jordan
     /// elimination with the first structurally non-zero pivot.
     pub fn solve_linear(

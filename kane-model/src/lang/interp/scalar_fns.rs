@@ -7,7 +7,7 @@
 
 use rustc_hash::FxHashMap;
 
-use crate::expr::{ExprId, Func};
+use crate::expr::{ExprError, ExprId, Func, Node, SymbolId};
 
 use super::super::ast::{Expr, ExprKind};
 use super::super::diagnostic::Diagnostic;
@@ -273,24 +273,23 @@ impl Interpreter {
             _ if named(self, &args[1]) => vec![self.substitution_key(&args[1])?],
             _ => self.coefficient_values(&args[1])?,
         };
-        let syms = wrt
+        let powers = wrt
             .iter()
             .map(|x| {
-                self.model
-                    .ar
-                    .as_symbol(*x)
-                    .ok_or_else(|| Diagnostic::error(args[1].span.clone(), "COEF takes symbols"))
+                self.symbol_power(*x).ok_or_else(|| {
+                    Diagnostic::error(args[1].span.clone(), "COEF takes symbols or their powers (X, X^2)")
+                })
             })
             .collect::<IResult<Vec<_>>>()?;
         let exprs = match v {
             Value::Scalar(x) => vec![x],
             Value::Matrix { data, .. } => data,
             // COEF(v>, X): the vector of each measure number's coefficient.
-            Value::Vector(vec) if syms.len() == 1 => {
+            Value::Vector(vec) if powers.len() == 1 => {
                 let mut out = vec.clone();
                 for (_, m) in out.terms.iter_mut() {
                     for x in m.iter_mut() {
-                        *x = self.model.ar.linear_coefficients(*x, &syms).at(&e.span)?.0[0];
+                        *x = self.coefficients_of(*x, &powers).at(&e.span)?[0];
                     }
                 }
                 return Ok(Value::Vector(out));
@@ -304,14 +303,40 @@ impl Interpreter {
         };
         let mut out: Vec<ExprId> = Vec::new();
         for x in &exprs {
-            let (c, _) = self.model.ar.linear_coefficients(*x, &syms).at(&e.span)?;
-            out.extend(c);
+            out.extend(self.coefficients_of(*x, &powers).at(&e.span)?);
         }
         Ok(if out.len() == 1 {
             Value::Scalar(out[0])
         } else {
-            Value::Matrix { rows: exprs.len(), cols: syms.len(), data: out }
+            Value::Matrix { rows: exprs.len(), cols: powers.len(), data: out }
         })
+    }
+
+    /// `(s, k)` for `x = s^k`, a symbol to a non-negative integer power (`k = 1` for the symbol).
+    fn symbol_power(&self, x: ExprId) -> Option<(SymbolId, i64)> {
+        let ar = &self.model.ar;
+        if let Some(s) = ar.as_symbol(x) {
+            return Some((s, 1));
+        }
+        let Node::Pow([b, n]) = *ar.node(x) else { return None };
+        let k = ar.as_rational(n).and_then(|r| r.as_i64()).filter(|k| *k >= 0)?;
+        Some((ar.as_symbol(b)?, k))
+    }
+
+    /// COEF's coefficients of `x`: of each symbol when `x` is linear in them all (the
+    /// mass-matrix reading), otherwise of each power in `x` multiplied out, other symbols
+    /// taken as constants.
+    fn coefficients_of(&mut self, x: ExprId, powers: &[(SymbolId, i64)]) -> Result<Vec<ExprId>, ExprError> {
+        let ar = &mut self.model.ar;
+        if powers.iter().all(|(_, k)| *k == 1) {
+            let syms: Vec<SymbolId> = powers.iter().map(|(s, _)| *s).collect();
+            match ar.linear_coefficients(x, &syms) {
+                Ok((c, _)) => return Ok(c),
+                Err(ExprError::NotLinear { .. }) => {}
+                Err(other) => return Err(other),
+            }
+        }
+        powers.iter().map(|(s, k)| ar.coefficient(x, *s, *k)).collect()
     }
 
     /// `RHS(X)`: the solution SOLVE found for the unknown `X`.
