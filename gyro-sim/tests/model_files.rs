@@ -782,3 +782,29 @@ fn an_edited_gimbal_runs_on_the_jit_engine_without_a_toolchain() {
     assert!(instant.status.success(), "{}", text(&instant));
     assert_eq!(jit_rows, rows(&out), "the JIT engine computes the evaluator's operations");
 }
+
+#[test]
+fn an_initial_angle_in_degrees_on_the_input_line_starts_the_run_there() {
+    // UNITS Q = DEG: the INPUT value is in degrees, and so are the CSV column and the scene
+    // `--print-scene` writes.
+    let dir = folder("input_degrees");
+    let file = dir.join("pendulum_deg.al");
+    let source =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/examples/pendulum.al"))
+            .unwrap()
+            .replace("Q = 30 deg", "Q = 30")
+            .replace("KANE()", "KANE()\nUNITS Q = DEG");
+    std::fs::write(&file, source).unwrap();
+    let out = dir.join("out");
+    let o = gyro_sim(
+        &["--model", file.to_str().unwrap(), "--t-final", "0.1", "--out", out.to_str().unwrap()],
+        &dir,
+    );
+    assert!(o.status.success(), "{}", text(&o));
+    assert!((rows(&out)[0][1] - 30.0).abs() < 1e-12, "starts at {} deg", rows(&out)[0][1]);
+    let o = gyro_sim(&["--model", file.to_str().unwrap(), "--print-scene"], &dir);
+    let printed = text(&o);
+    let line = printed.lines().find(|l| l.starts_with("Q = ")).unwrap_or_else(|| panic!("{printed}"));
+    let value: f64 = line["Q = ".len()..].split_whitespace().next().unwrap().parse().unwrap();
+    assert!((value - 30.0).abs() < 1e-12 && line.ends_with("# DEG"), "{line}");
+}

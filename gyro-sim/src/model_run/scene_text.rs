@@ -181,7 +181,8 @@ impl ModelColumn<'_> {
                         format!("# {name}: an input the model leaves open (0 unless given)")
                     }
                     Some(v) if v.is_finite() => {
-                        format!("{} = {}{}", toml_key(name), toml_number(*v), unit_comment(self.units[i]))
+                        let shown = crate::resolve::in_scene_units(*v, self.units[i]);
+                        format!("{} = {}{}", toml_key(name), toml_number(shown), unit_comment(self.units[i]))
                     }
                     _ => format!("# {name}: the model file gives no value (give one here)"),
                 };

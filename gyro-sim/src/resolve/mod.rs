@@ -458,6 +458,16 @@ fn with_view_picks(
     Ok(picks)
 }
 
+/// A model's internal value (radians for angles) as a scene writes it for its `model_unit`, the
+/// plain number [`in_model_units`] reads back as the same value.
+pub fn in_scene_units(internal: f64, model_unit: &str) -> f64 {
+    if normalised(model_unit) == "DEG" {
+        internal.to_degrees()
+    } else {
+        internal
+    }
+}
+
 /// A scene value in the model's internal units (radians for angles).
 fn in_model_units(
     scene: &Scene,
