@@ -57,8 +57,8 @@ pub(crate) fn script_json(value: &serde_json::Value) -> String {
     value.to_string().replace('<', "\\u003c")
 }
 
-/// `{"title", "fov", "t": [..], "columns": {name: [..]}, "view": ViewSpec}`, each column once:
-/// those the view reads, then those of `extra` the trajectory has.
+/// `{"title", "fov", "t": [..], "columns": {name: [..]}, "view": ViewSpec}` (each arrow with its
+/// `tag`), each column once: those the view reads, then those of `extra` the trajectory has.
 pub(crate) fn view_data(
     trajectory: &Trajectory,
     view: &ViewSpec,
@@ -87,9 +87,27 @@ pub(crate) fn view_data(
         }
     }
     let t: Vec<f64> = trajectory.rows.iter().map(|r| r[0]).collect();
-    Ok(
-        serde_json::json!({ "title": trajectory.title, "fov": FIELD_OF_VIEW_DEG, "t": t, "columns": columns, "view": view }),
-    )
+    let mut data = serde_json::json!({ "title": trajectory.title, "fov": FIELD_OF_VIEW_DEG, "t": t, "columns": columns, "view": view });
+    data["view"]["arrows"] = tagged_arrows(trajectory, view).into();
+    Ok(data)
+}
+
+/// The view's arrows, each with the `tag` drawn for it (its label unless that reads as the
+/// space axes, see [`arrow_tag::arrow_tag`]).
+fn tagged_arrows(trajectory: &Trajectory, view: &ViewSpec) -> Vec<serde_json::Value> {
+    let frame = view.frame.as_deref().unwrap_or("N");
+    let unit_of =
+        |name: &str| trajectory.columns.iter().find(|c| c.name == name).map_or("", |c| c.unit.as_str());
+    view.arrows
+        .iter()
+        .map(|a| {
+            let units = a.columns.each_ref().map(|c| unit_of(c));
+            let unit = if units.iter().all(|u| *u == units[0]) { units[0] } else { "" };
+            let mut arrow = serde_json::to_value(a).unwrap_or_default();
+            arrow["tag"] = arrow_tag::arrow_tag(&a.label, &a.columns, unit, frame).into();
+            arrow
+        })
+        .collect()
 }
 
 /// `template` with each `{{NAME}}` replaced by its value, in one pass (values are not searched).
@@ -121,6 +139,8 @@ fn fill(template: &str, values: &[(&str, &str)]) -> String {
 fn escape_html(text: &str) -> String {
     text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
+
+mod arrow_tag;
 
 #[cfg(test)]
 mod tests;

@@ -82,11 +82,17 @@ pub fn answer(app: &App, method: &str, path: &str, body: &[u8]) -> Reply {
     }
 }
 
-/// The scene run with `values`: the data the page draws, or the run's error (422).
+/// The scene run with `values`: the data the page draws (titled with the values), or the run's
+/// error (422).
 fn run(app: &App, values: &[(usize, f64)]) -> Reply {
     let _pass = app.runs.enter();
-    match run_data(&app.scene.with_controls(values), &app.registry) {
-        Ok(data) => Reply::json(200, &data),
+    let moved = app.scene.with_controls(values);
+    match run_data(&moved, &app.registry) {
+        Ok(mut data) => {
+            let title = data["title"].as_str().unwrap_or(&app.scene.title).to_string();
+            data["title"] = super::title::moved_title(&title, &app.scene.controls, &moved.controls).into();
+            Reply::json(200, &data)
+        }
         Err(e) => Reply::error(422, &e.to_string()),
     }
 }
@@ -123,7 +129,8 @@ impl From<crate::scene::SceneError> for RunDataError {
 }
 
 /// Runs `scene` (resolve, then solve: the `gyro-sim run` pipeline without files) and gives the
-/// page's data: the view's columns and the plotted ones, their units, the controls' values.
+/// page's data: the view's columns and the plotted ones (with the groups sharing a y axis), their
+/// units, the controls' values.
 pub fn run_data(scene: &Scene, registry: &Registry) -> Result<serde_json::Value, RunDataError> {
     let problem = crate::resolve::resolve(scene, registry)?;
     let view = problem.view.clone().unwrap_or_default();
@@ -134,6 +141,7 @@ pub fn run_data(scene: &Scene, registry: &Registry) -> Result<serde_json::Value,
         trajectory.columns.iter().map(|c| (c.name.clone(), c.unit.clone().into())).collect();
     let values: serde_json::Map<String, serde_json::Value> =
         scene.controls.iter().map(|c| (c.name.clone(), c.value.into())).collect();
+    data["plot_groups"] = super::plot_groups::plot_groups(&trajectory, &plot).into();
     data["plot"] = plot.into();
     data["units"] = units.into();
     data["values"] = values.into();

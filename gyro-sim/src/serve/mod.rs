@@ -6,7 +6,9 @@
 mod api;
 pub mod gate;
 mod page;
+mod plot_groups;
 pub mod request;
+mod title;
 
 use std::io::Read;
 use std::panic::{catch_unwind, AssertUnwindSafe};

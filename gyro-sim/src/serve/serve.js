@@ -1,8 +1,9 @@
 // gyro-sim serve's panels: in come the scene's controls (inline JSON) and the view page's
 // `window.gyroView`; out go sliders and number boxes whose changes re-run the scene on the
 // server (POST /api/run, the latest change only while one is running), the run redrawn, the
-// elevation plot (uPlot), a save button (POST /api/scene) and errors shown as the server gives
-// them. `window.gyroState` exposes the values, the run drawn and the latency of each redraw.
+// second window (uPlot: a y axis per group of series of like size and unit), a save button
+// (POST /api/scene) and errors shown as the server gives them. `window.gyroState` exposes the
+// values, the run drawn, the plot and the latency of each redraw.
 
 const serve = JSON.parse(document.getElementById('serve-data').textContent);
 const errorLine = document.getElementById('serve-error');
@@ -10,6 +11,7 @@ const statusLine = document.getElementById('serve-status');
 const values = Object.fromEntries(serve.controls.map((c) => [c.name, c.value]));
 const inputs = {};
 let plot = null;
+let drawnGroups = ''; // the groups of series it draws on y axes of their own, as JSON
 let running = false;
 let queued = null; // the change waiting for the run in progress: { values, since }
 
@@ -22,6 +24,7 @@ window.gyroState = {
   data: () => window.gyroView?.data(),
   valueAt: (name, t) => window.gyroView?.valueAt(name, t),
   set: (name, value) => change(name, value),
+  plot: () => plot, // the second window's uPlot
 };
 
 /** The degrees of an angle column (model radians), other columns as they are. */
@@ -30,30 +33,59 @@ function shown(name, v, units) {
   return u === 'DEG' || u === 'RAD' ? (v * 180) / Math.PI : v;
 }
 
-/** The plot's series: t, then each plotted column (angles in degrees). */
-function plotData(data) {
-  return [data.t, ...data.plot.map((n) => data.columns[n].map((v) => shown(n, v, data.units)))];
+/** The plotted columns in groups, each on a y axis of its own (the server parts series whose
+ * largest magnitudes differ more than tenfold, or whose units differ; one group without its
+ * word). */
+function plotGroups(data) {
+  return data.plot_groups ?? [data.plot];
 }
 
-/** Draws the second window for `data`, building it the first time. */
+/** The plot's series: t, then each plotted column, group by group (angles in degrees). */
+function plotData(data) {
+  const names = plotGroups(data).flat();
+  return [data.t, ...names.map((n) => data.columns[n].map((v) => shown(n, v, data.units)))];
+}
+
+/** A y axis's width in CSS pixels (its name aside): its ticks, gap and widest tick label, so
+ * that no tick label is cut. */
+function axisSize(u, values, index, cycle) {
+  const axis = u.axes[index];
+  if (cycle > 1) return axis._size; // settled: uPlot sizes axes again until they stop changing
+  u.ctx.font = axis.font[0];
+  const widest = Math.max(0, ...(values ?? []).map((v) => u.ctx.measureText(String(v)).width / devicePixelRatio));
+  return Math.ceil(axis.ticks.size + axis.gap + widest + 4);
+}
+
+/** The options of the second window for these groups: a y axis each (left, right, then
+ * outside those), named and coloured after its series when there are several. */
+function plotOptions(data, groups) {
+  const colours = ['#1f77b4', '#d62728', '#2ca02c'];
+  const colour = (n) => colours[data.plot.indexOf(n) % colours.length];
+  const degrees = (n) => ['DEG', 'RAD'].includes((data.units[n] ?? '').toUpperCase());
+  const series = [{ label: 't' }];
+  const axes = [{ label: 't (s)' }];
+  groups.forEach((names, k) => {
+    const scale = k === 0 ? 'y' : 'y' + k;
+    for (const n of names) series.push({ label: degrees(n) ? n + ' (deg)' : n, stroke: colour(n), width: 1.5, scale });
+    const axis = { scale, side: k % 2 === 0 ? 3 : 1, grid: { show: k === 0 }, size: axisSize };
+    if (groups.length > 1) axis.label = names.join(', ') + (degrees(names[0]) ? ' (deg)' : '');
+    if (groups.length > 1 && names.length === 1) axis.stroke = colour(names[0]);
+    axes.push(axis);
+  });
+  const width = 420 + 70 * (groups.length - 1);
+  return { width, height: 220, scales: { x: { time: false } }, axes, series };
+}
+
+/** Draws the second window for `data`, building it again when its groups change. */
 function drawPlot(data) {
-  if (plot) {
+  const groups = JSON.stringify(plotGroups(data));
+  if (plot && groups === drawnGroups) {
     plot.setData(plotData(data));
     return;
   }
-  const colours = ['#1f77b4', '#d62728', '#2ca02c'];
-  const series = data.plot.map((n, i) => {
-    const u = (data.units[n] ?? '').toUpperCase();
-    return { label: u === 'DEG' || u === 'RAD' ? n + ' (deg)' : n, stroke: colours[i % 3], width: 1.5 };
-  });
-  const opts = {
-    width: 420,
-    height: 220,
-    scales: { x: { time: false } },
-    axes: [{ label: 't (s)' }, {}],
-    series: [{ label: 't' }, ...series],
-  };
-  plot = new uPlot(opts, plotData(data), document.getElementById('plot-area'));
+  plot?.destroy();
+  drawnGroups = groups;
+  plot = new uPlot(plotOptions(data, plotGroups(data)), plotData(data), document.getElementById('plot-area'));
   // The EJS window's title for a top; what is plotted for any other model.
   const elevation = data.plot.some((n) => n === 'ELEVATION' || n === 'L_ELEVATION');
   document.querySelector('#plot .title').textContent = elevation

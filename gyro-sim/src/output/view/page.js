@@ -305,11 +305,13 @@ function addBodies(scene) {
   });
 }
 
-/** The arrows, each with its tip label and a checkbox showing or hiding both. */
+/** The arrows, each with its tip label (its tag: the label, unless that reads as the space axes)
+ * and a checkbox showing or hiding both. */
 function addArrows(scene, size) {
   const shown = params.has('arrows') ? new Set(params.get('arrows').split(',').filter((s) => s)) : null;
   const panel = document.getElementById('arrows');
   return data.view.arrows.map((a) => {
+    const tag = label(a.tag ?? a.label, a.colour, size * 0.07);
     const helper = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1, a.colour);
     // Drawn after the bodies and over them: a rotor around the origin never hides L or omega.
     for (const part of [helper.line, helper.cone]) {
@@ -317,8 +319,7 @@ function addArrows(scene, size) {
       part.material.transparent = true;
       part.renderOrder = 2;
     }
-    const tag = label(a.label, a.colour, size * 0.07);
-    const arrow = { spec: a, helper, tag, on: shown === null || shown.has(a.label) };
+    const arrow = { spec: a, helper, tag, on: shown === null || shown.has(a.label) || shown.has(a.tag) };
     scene.add(helper, tag);
     const row = document.createElement('label');
     const box = document.createElement('input');
@@ -331,7 +332,7 @@ function addArrows(scene, size) {
     const swatch = document.createElement('span');
     swatch.className = 'swatch';
     swatch.style.background = a.colour;
-    row.append(box, swatch, a.label);
+    row.append(box, swatch, a.tag ?? a.label);
     panel.append(row);
     return arrow;
   });
@@ -484,7 +485,11 @@ function tick(now) {
   requestAnimationFrame(tick);
 }
 
-let scene, camera, renderer, bodies, arrows, traces, points, size, scale, orbit, state, SPACE;
+let scene, camera, renderer, bodies, arrows, traces, points, size, scale, orbit, state, SPACE, furniture, framed;
+/** A run whose drawing reaches past this many times the framed size is framed again... */
+const GROWN = 1.1;
+/** ... and so is one shrunk below this fraction of it. */
+const SHRUNK = 1 / 3;
 /** Frames or points beyond this many are drawn without their names. */
 const MAX_LABELS = 24;
 const slider = document.getElementById('slider');
@@ -501,7 +506,10 @@ function main() {
   scale = drawScale();
   scene = new THREE.Scene();
   scene.background = new THREE.Color(0xf2f2ee);
-  addFurniture(scene, box, size);
+  furniture = new THREE.Group();
+  addFurniture(furniture, box, size);
+  scene.add(furniture);
+  framed = { size, centre: box.getCenter(new THREE.Vector3()), refits: 0 };
   bodies = addBodies(scene);
   points = addPoints(scene);
   arrows = addArrows(scene, size);
@@ -509,8 +517,8 @@ function main() {
   const home = () => ({
     azimuth: DEFAULT_AZIMUTH,
     elevation: DEFAULT_ELEVATION,
-    distance: (0.9 * size) / Math.sin(THREE.MathUtils.degToRad(FOV / 2)),
-    target: box.getCenter(new THREE.Vector3()),
+    distance: (0.9 * framed.size) / Math.sin(THREE.MathUtils.degToRad(FOV / 2)),
+    target: framed.centre.clone(),
   });
   orbit = home();
   const cam = numbers('cam', 3);
@@ -543,19 +551,21 @@ function main() {
 }
 
 /** Draws another run of the same view (new `t` and columns, bodies resized or moved with the
- * parameters), keeping the time and the camera. */
+ * parameters, the title), keeping the time and the camera's turn; the framing follows a
+ * drawing grown out of it or shrunk well inside it. */
 function load(next) {
   const reshaped = JSON.stringify(next.view.bodies) !== JSON.stringify(data.view.bodies);
   const repointed = JSON.stringify(next.view.points) !== JSON.stringify(data.view.points);
   data = next;
-  if (reshaped) {
+  const refitted = refit();
+  if (reshaped || refitted) {
     for (const b of bodies) {
       scene.remove(b.group);
       b.group.traverse((o) => o.geometry?.dispose());
     }
     bodies = addBodies(scene);
   }
-  if (repointed) {
+  if (repointed || refitted) {
     for (const p of points) {
       for (const o of [p.marker, p.line]) {
         if (!o) continue;
@@ -577,10 +587,42 @@ function load(next) {
   slider.min = String(data.t[0]);
   slider.max = String(data.t[data.t.length - 1]);
   state.t = Math.min(Math.max(state.t, data.t[0]), data.t[data.t.length - 1]);
+  document.title = data.title;
+  document.getElementById('title').textContent = data.title;
   update();
 }
 
-/** What other scripts may use: load a run, read values, the time and the arrows shown. */
+/** Frames the run's drawing again when it reaches past [GROWN] times the framed size or has
+ * shrunk below [SHRUNK] of it: the camera keeps its turn and its zoom relative to the drawing,
+ * the furniture, markers and labels are resized with it. Whether it did. */
+function refit() {
+  const box = sceneBox();
+  const next = box.getSize(new THREE.Vector3()).length() / 2 || 1;
+  const centre = box.getCenter(new THREE.Vector3());
+  if (centre.distanceTo(framed.centre) + next <= GROWN * framed.size && next >= SHRUNK * framed.size) return false;
+  const ratio = next / framed.size;
+  orbit.target = orbit.target.clone().sub(framed.centre).multiplyScalar(ratio).add(centre);
+  orbit.distance *= ratio;
+  framed = { size: next, centre, refits: framed.refits + 1 };
+  size = next;
+  scale = drawScale();
+  camera.near = size * 0.01;
+  camera.far = size * 100;
+  camera.updateProjectionMatrix();
+  scene.remove(furniture);
+  furniture.traverse((o) => {
+    o.geometry?.dispose();
+    o.material?.map?.dispose();
+    o.material?.dispose();
+  });
+  furniture = new THREE.Group();
+  addFurniture(furniture, box, size);
+  scene.add(furniture);
+  for (const a of arrows) a.tag.scale.multiplyScalar(ratio);
+  return true;
+}
+
+/** What other scripts may use: load a run, read values, the time, the arrows shown and the framing. */
 function expose() {
   window.gyroView = {
     load,
@@ -596,6 +638,21 @@ function expose() {
       update();
     },
     arrowsShown: () => Object.fromEntries(arrows.map((a) => [a.spec.label, a.helper.visible])),
+    /** The arrows' tags as drawn, by label. */
+    arrowTags: () => Object.fromEntries(arrows.map((a) => [a.spec.label, a.spec.tag ?? a.spec.label])),
+    /** The camera's framing: the size and centre framed, how often it was framed again, the
+     * camera's turn (degrees), distance and target. */
+    framing: () => ({
+      size: framed.size,
+      centre: framed.centre.toArray(),
+      refits: framed.refits,
+      azimuth: orbit.azimuth,
+      elevation: orbit.elevation,
+      distance: orbit.distance,
+      target: orbit.target.toArray(),
+    }),
+    /** Where a drawn point (z up) falls on the screen, -1 to 1 across and up when in view. */
+    onScreen: (xyz) => new THREE.Vector3(...xyz).project(camera).toArray().slice(0, 2),
     /** Each body's drawn centre in its own axes and its drawn size (the box of its shape). */
     bodiesDrawn: () =>
       Object.fromEntries(

@@ -195,6 +195,21 @@ fn data_hold_t_and_only_the_columns_read() {
 }
 
 #[test]
+fn an_arrow_labelled_as_the_space_axes_is_tagged_with_its_vector() {
+    let mut t = trajectory();
+    for c in t.columns.iter_mut().filter(|c| c.name.starts_with("L_")) {
+        c.unit = "KG*M^2/SEC".to_string();
+    }
+    let data = view_data(&t, &view(), &[]).unwrap();
+    assert_eq!(data["view"]["arrows"][0]["tag"], "L", "a label apart from N1, N2, N3 stays");
+    let mut v = view();
+    v.arrows[0].label = "N".to_string();
+    let data = view_data(&t, &v, &[]).unwrap();
+    assert_eq!(data["view"]["arrows"][0]["tag"], "l (kg·m²/s)");
+    assert_eq!(data["view"]["arrows"][0]["label"], "N", "the label still names it in the URL");
+}
+
+#[test]
 fn a_missing_column_is_named_with_the_known_ones() {
     let mut v = view();
     v.arrows[0].columns[1] = "H_N2".to_string();
