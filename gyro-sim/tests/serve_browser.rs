@@ -14,10 +14,6 @@ use serve_support::*;
 /// The time at which the page's state is compared with the run, s (a row of the CSV).
 const AT: f64 = 2.0;
 
-/// Waits in the page until `condition` holds (60 s at most).
-const UNTIL: &str = "const until = async (f) => { for (let i = 0; i < 1200; i++) { if (f()) return; \
-    await new Promise((r) => setTimeout(r, 50)); } throw new Error('timed out waiting for ' + f); };";
-
 /// Moves the slider of control `name` to each value in turn as a user would (an input event),
 /// each time waiting for the redraw; gives the latencies the page measured, ms.
 fn move_slider(browser: &mut Browser, name: &str, values: &[f64]) -> Vec<f64> {
@@ -209,19 +205,4 @@ fn every_top_preset_answers_its_spin_slider_as_gyro_sim_run_does() {
             report(preset, "spin", latencies);
         }
     }
-}
-
-/// Moves the slider of control `name` to `value` as a user would and waits for the server's
-/// answer: whether the page redrew, the error it shows and the latency it measured, ms.
-fn move_slider_once(browser: &mut Browser, name: &str, value: f64) -> serde_json::Value {
-    browser.eval(&format!(
-        "(async () => {{ {UNTIL}
-           const slider = document.getElementById('control-{name}');
-           const [n, answered] = [gyroState.redraws, gyroState.answers];
-           slider.value = String({value});
-           slider.dispatchEvent(new Event('input'));
-           await until(() => gyroState.answers > answered);
-           return {{ redrew: gyroState.redraws > n, error: gyroState.error,
-                     latency: gyroState.latencies[gyroState.latencies.length - 1] ?? null }}; }})()"
-    ))
 }

@@ -13,10 +13,6 @@ use std::path::{Path, PathBuf};
 use serve_support::cdp::Browser;
 use serve_support::*;
 
-/// Waits in the page until `condition` holds (60 s at most).
-const UNTIL: &str = "const until = async (f) => { for (let i = 0; i < 1200; i++) { if (f()) return; \
-    await new Promise((r) => setTimeout(r, 50)); } throw new Error('timed out waiting for ' + f); };";
-
 /// A model file of the repository, by its path from the workspace's root.
 fn model_file(path: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(path).canonicalize().unwrap()
@@ -64,15 +60,7 @@ fn open(scene: &Path, dir: &Path) -> (Server, Browser) {
 
 /// Moves the slider of control `name` to `value` as a user would and waits for the redraw.
 fn slide(browser: &mut Browser, name: &str, value: f64) {
-    let answer = browser.eval(&format!(
-        "(async () => {{ {UNTIL}
-           const slider = document.getElementById('control-{name}');
-           const [n, answered] = [gyroState.redraws, gyroState.answers];
-           slider.value = String({value});
-           slider.dispatchEvent(new Event('input'));
-           await until(() => gyroState.answers > answered);
-           return {{ redrew: gyroState.redraws > n, error: gyroState.error }}; }})()"
-    ));
+    let answer = move_slider_once(browser, name, value);
     assert_eq!(answer["redrew"], true, "{name} = {value}: {answer}");
 }
 

@@ -1,5 +1,6 @@
 //! What the `gyro-sim serve` tests share: in come a scene and requests; out go a running server
-//! (stopped when dropped), HTTP answers over a plain socket, and `gyro-sim run`'s CSV for a scene.
+//! (stopped when dropped), HTTP answers over a plain socket, `gyro-sim run`'s CSV for a scene, and
+//! a slider moved in the page as a user would.
 
 #![allow(dead_code)]
 
@@ -132,4 +133,23 @@ pub fn run_saved_outcome(
 pub fn csv_column(header: &[String], rows: &[Vec<f64>], name: &str) -> Vec<f64> {
     let i = header.iter().position(|h| h == name).unwrap_or_else(|| panic!("no {name} in {header:?}"));
     rows.iter().map(|r| r[i]).collect()
+}
+
+/// Waits in the page until `condition` holds (60 s at most).
+pub const UNTIL: &str = "const until = async (f) => { for (let i = 0; i < 1200; i++) { if (f()) return; \
+    await new Promise((r) => setTimeout(r, 50)); } throw new Error('timed out waiting for ' + f); };";
+
+/// Moves the slider of control `name` to `value` as a user would and waits for the server's
+/// answer: whether the page redrew, the error it shows and the latency it measured, ms.
+pub fn move_slider_once(browser: &mut cdp::Browser, name: &str, value: f64) -> serde_json::Value {
+    browser.eval(&format!(
+        "(async () => {{ {UNTIL}
+           const slider = document.getElementById('control-{name}');
+           const [n, answered] = [gyroState.redraws, gyroState.answers];
+           slider.value = String({value});
+           slider.dispatchEvent(new Event('input'));
+           await until(() => gyroState.answers > answered);
+           return {{ redrew: gyroState.redraws > n, error: gyroState.error,
+                     latency: gyroState.latencies[gyroState.latencies.length - 1] ?? null }}; }})()"
+    ))
 }

@@ -118,24 +118,27 @@ impl Arena {
         Ok(self.trig_canonical_many(&[split], TrigBasis::Cos)?[0])
     }
 
-    /// Whether `e` is identically zero once angles are expanded and the sum is put over a
-    /// common denominator (wherever its denominators do not vanish). `false` means "not shown",
-    /// including when the expansion would be too large.
-    pub fn proves_zero_over_common_denominator(&mut self, e: ExprId) -> bool {
-        self.zero_over_common_denominator(e).unwrap_or(false)
+    /// Whether `simplified` (as [`Arena::simplify`] gives it) is identically zero once angles
+    /// are expanded and the sum is put over a common denominator (wherever its denominators do
+    /// not vanish). `false` means "not shown", including when the expansion would be too large.
+    pub fn proves_zero_over_common_denominator(&mut self, simplified: ExprId) -> bool {
+        self.zero_over_common_denominator(simplified).unwrap_or(false)
     }
 
-    fn zero_over_common_denominator(&mut self, e: ExprId) -> Result<bool, ExprError> {
-        let reduced = self.reduce_angles(e)?;
+    fn zero_over_common_denominator(&mut self, simplified: ExprId) -> Result<bool, ExprError> {
+        let split = self.expand_angles(simplified)?;
+        // Without a compound angle the canonical form is already `simplified`'s.
+        let reduced = if split == simplified {
+            simplified
+        } else {
+            self.trig_canonical_many(&[split], TrigBasis::Cos)?[0]
+        };
         if self.is_zero(reduced) {
             return Ok(true);
         }
         let Some(d) = self.sum_denominators(reduced)? else { return Ok(false) };
         // Term by term, so that each term's own denominators cancel before expansion.
-        let terms: Vec<ExprId> = match self.node(reduced) {
-            Node::Sum(t) => t.to_vec(),
-            _ => vec![reduced],
-        };
+        let terms = self.terms(reduced);
         let cleared = terms.into_iter().map(|t| self.mul(&[t, d])).collect::<Result<Vec<_>, _>>()?;
         let cleared = self.add(&cleared)?;
         let numerator = self.trig_canonical_many(&[cleared], TrigBasis::Cos)?[0];
@@ -145,17 +148,9 @@ impl Arena {
     /// The product of the sums that the terms of `e` divide by, each to its highest power, or
     /// `None` when no term divides by a sum.
     fn sum_denominators(&mut self, e: ExprId) -> Result<Option<ExprId>, ExprError> {
-        let terms: Vec<ExprId> = match self.node(e) {
-            Node::Sum(t) => t.to_vec(),
-            _ => vec![e],
-        };
         let mut highest: Vec<(ExprId, i64)> = Vec::new();
-        for t in terms {
-            let factors: Vec<ExprId> = match self.node(t) {
-                Node::Product(f) => f.to_vec(),
-                _ => vec![t],
-            };
-            for f in factors {
+        for t in self.terms(e) {
+            for f in self.factors(t) {
                 let Node::Pow([base, exponent]) = *self.node(f) else { continue };
                 let Some(n) = self.as_rational(exponent).and_then(|r| r.as_i64()) else { continue };
                 if n >= 0 || !matches!(self.node(base), Node::Sum(_)) {
@@ -219,8 +214,9 @@ mod tests {
         let e = ar.sub(q1, q2).unwrap();
         let simplified = ar.simplify(e).unwrap();
         assert!(!ar.is_zero(simplified));
-        assert!(ar.proves_zero_over_common_denominator(e));
+        assert!(ar.proves_zero_over_common_denominator(simplified));
         let wrong = ar.add(&[e, x]).unwrap();
+        let wrong = ar.simplify(wrong).unwrap();
         assert!(!ar.proves_zero_over_common_denominator(wrong));
     }
 

@@ -159,6 +159,22 @@ impl Arena {
         }
     }
 
+    /// The terms of `e`: its summands when it is a sum, else `e` alone.
+    pub fn terms(&self, e: ExprId) -> Vec<ExprId> {
+        match self.node(e) {
+            Node::Sum(t) => t.to_vec(),
+            _ => vec![e],
+        }
+    }
+
+    /// The factors of `e`: its factors when it is a product, else `e` alone.
+    pub fn factors(&self, e: ExprId) -> Vec<ExprId> {
+        match self.node(e) {
+            Node::Product(f) => f.to_vec(),
+            _ => vec![e],
+        }
+    }
+
     /// The value of an exact rational node.
     pub fn as_rational(&self, id: ExprId) -> Option<Rational> {
         match self.node(id) {

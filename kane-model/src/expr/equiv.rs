@@ -114,13 +114,10 @@ impl Arena {
         cfg: &EquivalenceConfig,
     ) -> Result<Equivalence, ExprError> {
         let d = self.sub(a, b)?;
-        if self.is_zero(d)
-            || {
-                let s = self.simplify(d)?;
-                self.is_zero(s)
-            }
-            || self.proves_zero_over_common_denominator(d)
-        {
+        if self.is_zero(d) || {
+            let s = self.simplify(d)?;
+            self.is_zero(s) || self.proves_zero_over_common_denominator(s)
+        } {
             return Ok(Equivalence::Proven);
         }
         let syms: Vec<SymbolId> = self.free_symbols(&[a, b]);

@@ -57,10 +57,7 @@ impl Arena {
     fn expand_product(&mut self, factors: &[ExprId]) -> Res {
         let mut acc: Vec<ExprId> = vec![self.one()];
         for &f in factors {
-            let terms: Vec<ExprId> = match self.node(f) {
-                Node::Sum(t) => t.to_vec(),
-                _ => vec![f],
-            };
+            let terms = self.terms(f);
             if acc.len().saturating_mul(terms.len()) > MAX_EXPANDED_TERMS {
                 return Err(ExprError::TooLarge(acc.len().saturating_mul(terms.len())));
             }

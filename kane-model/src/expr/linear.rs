@@ -58,20 +58,12 @@ impl Arena {
     /// ```
     pub fn coefficient(&mut self, e: ExprId, s: SymbolId, k: i64) -> Result<ExprId, ExprError> {
         let expanded = self.expand(e)?;
-        let terms: Vec<ExprId> = match self.node(expanded) {
-            Node::Sum(t) => t.to_vec(),
-            _ => vec![expanded],
-        };
         let x = self.symbol_expr(s);
         let mut kept = Vec::new();
-        for t in terms {
-            let factors: Vec<ExprId> = match self.node(t) {
-                Node::Product(f) => f.to_vec(),
-                _ => vec![t],
-            };
+        for t in self.terms(expanded) {
             let mut power = 0;
-            let mut rest = Vec::with_capacity(factors.len());
-            for f in factors {
+            let mut rest = Vec::new();
+            for f in self.factors(t) {
                 match *self.node(f) {
                     _ if f == x => power += 1,
                     Node::Pow([b, n]) if b == x => match self.as_rational(n).and_then(|r| r.as_i64()) {

@@ -158,14 +158,11 @@ impl Interpreter {
                 return Ok(m.ar.add(&[x, minus])?);
             }
             let expanded = m.ar.expand(x)?;
-            let terms: Vec<ExprId> = match m.ar.node(expanded) {
-                crate::expr::Node::Sum(t) => t.to_vec(),
-                _ => vec![expanded],
-            };
-            let kept: Vec<ExprId> = terms
-                .into_iter()
-                .filter(|t| m.ar.free_symbols(&[*t]).iter().any(|s| syms.contains(s)) == keep_with)
-                .collect();
+            let kept: Vec<ExprId> =
+                m.ar.terms(expanded)
+                    .into_iter()
+                    .filter(|t| m.ar.free_symbols(&[*t]).iter().any(|s| syms.contains(s)) == keep_with)
+                    .collect();
             Ok(m.ar.add(&kept)?)
         })
     }
