@@ -808,3 +808,36 @@ fn an_initial_angle_in_degrees_on_the_input_line_starts_the_run_there() {
     let value: f64 = line["Q = ".len()..].split_whitespace().next().unwrap().parse().unwrap();
     assert!((value - 30.0).abs() < 1e-12 && line.ends_with("# DEG"), "{line}");
 }
+
+#[test]
+fn a_speed_in_degrees_per_second_is_read_run_and_written_in_degrees_per_second() {
+    // UNITS U = DEG/S: the INPUT value, `--set` and the CSV column are in deg/s; the model runs
+    // in rad/s. Without gravity U stays and Q grows by U*t.
+    let dir = folder("input_deg_per_s");
+    let file = dir.join("spinner.al");
+    let source =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/examples/pendulum.al"))
+            .unwrap()
+            .replace("G = 9.81 m/s^2, Q = 30 deg, U = 0", "G = 0, Q = 0, U = 10")
+            .replace("KANE()", "KANE()\nUNITS Q = DEG, U = DEG/S");
+    std::fs::write(&file, source).unwrap();
+    let run = |extra: &[&str], name: &str| {
+        let out = dir.join(name);
+        let mut args = vec!["--model", file.to_str().unwrap(), "--t-final", "1"];
+        args.extend(extra);
+        args.extend(["--out", out.to_str().unwrap()]);
+        let o = gyro_sim(&args, &dir);
+        assert!(o.status.success(), "{}", text(&o));
+        let header = std::fs::read_to_string(out.join("trajectory.csv")).unwrap();
+        assert!(header.starts_with("t,q_deg,u_deg_per_s"), "{}", header.lines().next().unwrap());
+        rows(&out)
+    };
+    let last = |r: &[Vec<f64>]| r.last().unwrap().clone();
+    let plain = last(&run(&[], "plain"));
+    assert!((plain[2] - 10.0).abs() < 1e-9, "U = {} deg/s", plain[2]);
+    assert!((plain[1] - 10.0).abs() < 1e-9, "Q(1) = {} deg", plain[1]);
+    let set = last(&run(&["--set", "U=1 rad/s"], "set_rad"));
+    assert!((set[2] - 1f64.to_degrees()).abs() < 1e-9, "1 rad/s is {} deg/s", set[2]);
+    let instant = last(&run(&["--engine", "instant", "--set", "U=20"], "instant"));
+    assert!((instant[1] - 20.0).abs() < 1e-9, "Q(1) = {} deg", instant[1]);
+}

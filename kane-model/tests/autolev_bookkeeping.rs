@@ -76,3 +76,12 @@ fn a_unit_system_names_mass_length_and_time_once_each() {
     let e = lang::load("u.al", "CONSTANTS K\nINPUT K = 3 M/FURLONG\n").err().unwrap().to_string();
     assert!(e.contains("unknown unit `FURLONG`"), "{e}");
 }
+
+#[test]
+fn a_plain_input_is_in_the_unit_units_declares_for_angles_and_their_rates() {
+    let src = "NEWTONIAN N\nVARIABLES Q', U', X'\nUNITS Q = DEG, U = DEG/S, X = CM\nQ' = U\nX' = U\nINPUT Q = 90, U = 60, X = 5\n";
+    let m = lang::load("units.al", src).unwrap();
+    assert!(close(input(&m, "Q"), std::f64::consts::FRAC_PI_2), "90 deg");
+    assert!(close(input(&m, "U"), std::f64::consts::PI / 3.0), "60 deg/s");
+    assert!(close(input(&m, "X"), 5.0), "a length is kept as written");
+}

@@ -1,8 +1,9 @@
 //! Display units: in come a trajectory's columns and rows in model units; out go the written
-//! columns (hidden ones left out, CSV headers naming name and unit) and rows with angles the
-//! model gives in degrees in degrees. Units are this module's concern and the figures' only.
+//! columns (hidden ones left out, CSV headers naming name and unit) and rows with each value in
+//! its declared unit (a model computes angles and their rates in radians). Units are this module's concern and the figures' only.
 
 use crate::problem::Trajectory;
+use kane_model::lang::units::size::shown_per_internal;
 
 /// One column of results.
 #[derive(Clone, Debug)]
@@ -54,10 +55,11 @@ pub fn display_table(trajectory: &Trajectory) -> Table {
 }
 
 /// How a run's rows (model units, hidden columns too) become written rows: the shown columns,
-/// angles the model gives in degrees written in degrees.
+/// each in its declared unit (angles and their rates the model computes in radians written in
+/// degrees, rpm, ... as declared).
 pub(crate) struct DisplayRows {
     shown: Vec<usize>,
-    degrees: Vec<bool>,
+    scales: Vec<f64>,
 }
 
 impl DisplayRows {
@@ -76,16 +78,16 @@ impl DisplayRows {
                 output: c.output,
             })
             .collect();
-        let degrees = written.iter().map(|c| c.degrees).collect();
-        (DisplayRows { shown, degrees }, written)
+        let scales = written.iter().map(|c| shown_per_internal(&c.unit)).collect();
+        (DisplayRows { shown, scales }, written)
     }
 
     /// One row in display units: `t`, then the shown columns.
     pub(crate) fn row(&self, row: &[f64]) -> Vec<f64> {
         let mut out = Vec::with_capacity(self.shown.len() + 1);
         out.push(row[0]);
-        let values = self.shown.iter().map(|k| row[k + 1]).zip(&self.degrees);
-        out.extend(values.map(|(v, d)| if *d { v.to_degrees() } else { v }));
+        let values = self.shown.iter().map(|k| row[k + 1]).zip(&self.scales);
+        out.extend(values.map(|(v, scale)| v * scale));
         out
     }
 }

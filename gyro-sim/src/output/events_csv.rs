@@ -6,6 +6,7 @@ use std::path::Path;
 
 use super::{column_name, write_atomically, WriteError};
 use crate::problem::Trajectory;
+use kane_model::lang::units::size::shown_per_internal;
 
 /// Writes the events of `trajectory` to `path` (atomically); a header alone when none happened.
 pub fn write_events_csv(trajectory: &Trajectory, path: &Path) -> Result<(), WriteError> {
@@ -26,7 +27,7 @@ pub fn write_events_csv(trajectory: &Trajectory, path: &Path) -> Result<(), Writ
             for k in &shown {
                 let c = &trajectory.columns[*k];
                 let v = r.row[k + 1];
-                record.push(if c.unit.eq_ignore_ascii_case("DEG") { v.to_degrees() } else { v }.to_string());
+                record.push((v * shown_per_internal(&c.unit)).to_string());
             }
             w.write_record(&record).map_err(fail)?;
         }

@@ -4,6 +4,7 @@
 //! place in its expression.
 
 use kane_model::lang::event::{lower_event, EventName};
+use kane_model::lang::units::size::shown_per_internal;
 use kane_model::program::event::EventSlot;
 use kane_model::runtime::ModelInfo;
 
@@ -65,15 +66,6 @@ fn names(info: &ModelInfo) -> (Vec<EventName>, Vec<Named>) {
     (names, named)
 }
 
-/// 180/pi for a quantity the CSV writes in degrees, else 1.
-fn scale(unit: &str) -> f64 {
-    if unit.eq_ignore_ascii_case("DEG") {
-        180.0 / std::f64::consts::PI
-    } else {
-        1.0
-    }
-}
-
 fn event(
     scene: &Scene,
     info: &ModelInfo,
@@ -102,7 +94,7 @@ fn event(
                 match named[i] {
                     Named::State(s) => {
                         reads.push(s);
-                        let f = scale(info.state_units[s]);
+                        let f = shown_per_internal(info.state_units[s]);
                         if rate {
                             Source::StateRate(s, f)
                         } else {
@@ -119,14 +111,14 @@ fn event(
                                 "use the rate of a quantity of the states alone, or the output itself",
                             ));
                         }
-                        let f = scale(o.unit);
+                        let f = shown_per_internal(o.unit);
                         if rate {
                             Source::ColumnRate(k, c, f)
                         } else {
                             Source::Column(k, c, f)
                         }
                     }
-                    Named::Param(p) => Source::Param(p, scale(info.param_units[p])),
+                    Named::Param(p) => Source::Param(p, shown_per_internal(info.param_units[p])),
                 }
             }
         };

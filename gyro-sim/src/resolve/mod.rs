@@ -11,7 +11,7 @@ mod presets;
 pub use initial::{sleeping_threshold, steady_precession};
 
 use kane_model::lang::units::normalised;
-use kane_model::lang::units::size::unit_size;
+use kane_model::lang::units::size::{shown_per_internal, unit_size};
 use kane_model::runtime::{ModelInfo, OutputKind};
 
 use crate::models::Registry;
@@ -461,14 +461,10 @@ fn with_view_picks(
 /// A model's internal value (radians for angles) as a scene writes it for its `model_unit`, the
 /// plain number [`in_model_units`] reads back as the same value.
 pub fn in_scene_units(internal: f64, model_unit: &str) -> f64 {
-    if normalised(model_unit) == "DEG" {
-        internal.to_degrees()
-    } else {
-        internal
-    }
+    internal * shown_per_internal(model_unit)
 }
 
-/// A scene value in the model's internal units (radians for angles).
+/// A scene value in the model's internal units (radians for angles and their rates).
 fn in_model_units(
     scene: &Scene,
     name: &str,
@@ -479,16 +475,10 @@ fn in_model_units(
     // Compared regardless of case and spacing, SEC as S (`10 n * m` is in N*M).
     let mu = normalised(model_unit);
     let given = v.unit.as_deref().map(normalised);
-    let deg = std::f64::consts::PI / 180.0;
-    Ok(match (mu.as_str(), given.as_deref()) {
-        ("DEG", None | Some("DEG")) => v.number * deg,
-        ("DEG" | "RAD", Some("RAD")) | ("RAD", None) => v.number,
-        ("RAD", Some("DEG")) => v.number * deg,
-        ("RAD/S", None | Some("RAD/S")) => v.number,
-        ("RAD/S", Some("DEG/S")) => v.number * deg,
-        (_, None) => v.number,
-        (m, Some(u)) if m == u => v.number,
-        (m, Some(u)) => match convertible(m, u) {
+    Ok(match given.as_deref() {
+        None => v.number / shown_per_internal(&mu),
+        Some(u) if u == mu => v.number / shown_per_internal(&mu),
+        Some(u) => match convertible(&mu, u) {
             Some(factor) => v.number * factor,
             None => {
                 let shown = if mu.is_empty() { "no unit" } else { model_unit };

@@ -5,6 +5,7 @@
 use crate::models::Registry;
 use crate::problem::Trajectory;
 use crate::scene::Scene;
+use kane_model::lang::units::size::shown_per_internal;
 
 use super::request::{self, Refused};
 
@@ -139,11 +140,22 @@ pub fn run_data(scene: &Scene, registry: &Registry) -> Result<serde_json::Value,
     let mut data = crate::output::view_data(&trajectory, &view, &plot)?;
     let units: serde_json::Map<String, serde_json::Value> =
         trajectory.columns.iter().map(|c| (c.name.clone(), c.unit.clone().into())).collect();
+    // Plotted values per model value: angles in degrees, other quantities in their declared unit.
+    let scale = |c: &crate::problem::Column| {
+        if c.is_angle() {
+            180.0 / std::f64::consts::PI
+        } else {
+            shown_per_internal(&c.unit)
+        }
+    };
+    let scales: serde_json::Map<String, serde_json::Value> =
+        trajectory.columns.iter().map(|c| (c.name.clone(), scale(c).into())).collect();
     let values: serde_json::Map<String, serde_json::Value> =
         scene.controls.iter().map(|c| (c.name.clone(), c.value.into())).collect();
     data["plot_groups"] = super::plot_groups::plot_groups(&trajectory, &plot).into();
     data["plot"] = plot.into();
     data["units"] = units.into();
+    data["scales"] = scales.into();
     data["values"] = values.into();
     data["wall_ms"] = (trajectory.wall.as_secs_f64() * 1e3).into();
     Ok(data)

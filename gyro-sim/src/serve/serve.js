@@ -27,10 +27,9 @@ window.gyroState = {
   plot: () => plot, // the second window's uPlot
 };
 
-/** The degrees of an angle column (model radians), other columns as they are. */
-function shown(name, v, units) {
-  const u = (units[name] ?? '').toUpperCase();
-  return u === 'DEG' || u === 'RAD' ? (v * 180) / Math.PI : v;
+/** A column's model value as plotted: angles in degrees, other columns in their declared unit. */
+function shown(name, v, scales) {
+  return v * (scales[name] ?? 1);
 }
 
 /** The plotted columns in groups, each on a y axis of its own (the server parts series whose
@@ -40,10 +39,10 @@ function plotGroups(data) {
   return data.plot_groups ?? [data.plot];
 }
 
-/** The plot's series: t, then each plotted column, group by group (angles in degrees). */
+/** The plot's series: t, then each plotted column, group by group (angles in degrees, the rest in their declared units). */
 function plotData(data) {
   const names = plotGroups(data).flat();
-  return [data.t, ...names.map((n) => data.columns[n].map((v) => shown(n, v, data.units)))];
+  return [data.t, ...names.map((n) => data.columns[n].map((v) => shown(n, v, data.scales)))];
 }
 
 /** A y axis's width in CSS pixels (its name aside): its ticks, gap and widest tick label, so

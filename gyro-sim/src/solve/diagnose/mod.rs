@@ -11,6 +11,7 @@ mod probe;
 
 pub(crate) use probe::probe;
 
+use kane_model::lang::units::size::shown_per_internal;
 use kane_model::mechanics::{reciprocal_condition, CONSTRAINT_RCOND_LIMIT};
 use kane_model::program::ProgramModel;
 use kane_model::runtime::{ModelInfo, OutputKind};
@@ -42,7 +43,7 @@ fn named_values(info: &ModelInfo, y: &[f64], states: impl IntoIterator<Item = us
     let text = |i: usize| match info.state_units[i] {
         u if u.eq_ignore_ascii_case("DEG") => format!("{} = {} deg", info.state_names[i], y[i].to_degrees()),
         "" => format!("{} = {}", info.state_names[i], y[i]),
-        u => format!("{} = {} {u}", info.state_names[i], y[i]),
+        u => format!("{} = {} {u}", info.state_names[i], y[i] * shown_per_internal(u)),
     };
     states.into_iter().map(text).collect::<Vec<_>>().join(", ")
 }

@@ -448,8 +448,3 @@ pub(crate) fn arity(name: &str, args: &[Expr], n: usize, span: &Span) -> IResult
 pub(crate) fn entity_key(upper: &str) -> String {
     format!("#{upper}")
 }
-
-/// True for degree units (`DEG`, and the paper's OCR spelling `DFG`).
-pub(crate) fn is_degrees(unit: &str) -> bool {
-    matches!(unit, "DEG" | "DEGREE" | "DEGREES")
-}

@@ -7,11 +7,9 @@
 use super::super::ast::{DeclItem, DeclKind, Expr, ExprKind, InputItem, Stmt, StmtKind};
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
-use super::super::units::size::{unit_size, UnitSystem};
+use super::super::units::size::{internal_per_declared, unit_size, UnitSystem};
 use super::super::units::unit_word;
-use super::{
-    entity_key, is_degrees, At, Binding, Bookkeeping, CodeRequest, IResult, InputValue, Interpreter,
-};
+use super::{entity_key, At, Binding, Bookkeeping, CodeRequest, IResult, InputValue, Interpreter};
 
 /// The `NAME ON` / `NAME OFF` settings a file may give.
 pub(crate) const SETTINGS: &[&str] = &["COMPLEX", "DEGREES", "ZEE_NOT"];
@@ -190,8 +188,8 @@ impl Interpreter {
     }
 
     /// `INPUT a = value [unit], ...`: values kept in internal units: a value with a unit tag is
-    /// converted into the unit system (angles into radians); one without is taken as written,
-    /// in radians unless UNITS gives its name in degrees.
+    /// converted into the unit system (angles into radians); one without is in the unit UNITS
+    /// gives its name, converted where that measures an angle (DEG, DEG/S, RPM), else as written.
     fn input(&mut self, items: &[InputItem]) -> IResult<()> {
         for item in items {
             let factor = match &item.unit {
@@ -200,9 +198,10 @@ impl Interpreter {
             };
             let v = self.number(&item.value)?;
             let name = format!("{}{}", item.name, "'".repeat(item.primes as usize));
-            let in_degrees = item.unit.is_none()
-                && self.units.get(&name.to_ascii_uppercase()).is_some_and(|u| is_degrees(u));
-            let value = if in_degrees { v.to_radians() } else { v * factor };
+            let value = match (&item.unit, self.units.get(&name.to_ascii_uppercase())) {
+                (None, Some(declared)) => v * internal_per_declared(declared, &self.unit_system),
+                _ => v * factor,
+            };
             self.inputs.push(InputValue { name, value, unit: item.unit.clone(), span: item.span.clone() });
         }
         Ok(())

@@ -226,6 +226,22 @@ impl UnitSystem {
     }
 }
 
+/// How many internal units one plain number of a quantity declared in `unit` is: where the unit
+/// measures an angle or an angle's rate, the model computes in radians (DEG: pi/180, DEG/S: pi/180,
+/// RPM: pi/30, in `system`'s mass, length and time); any other unit's values are kept as written (1).
+pub fn internal_per_declared(unit: &str, system: &UnitSystem) -> f64 {
+    match unit_size(&unit.to_ascii_uppercase()) {
+        Ok(size) if size.dim[3] != 0 => system.factor(size),
+        _ => 1.0,
+    }
+}
+
+/// How many `unit` one internal value of a quantity declared in it is, in SI: the inverse of
+/// [`internal_per_declared`] (DEG: 180/pi; M: 1).
+pub fn shown_per_internal(unit: &str) -> f64 {
+    1.0 / internal_per_declared(unit, &UnitSystem::default())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -258,6 +274,10 @@ mod tests {
         assert!(close(cgs.factor(unit_size("KG*M^2").unwrap()), 1e7));
         assert!(close(cgs.factor(unit_size("N").unwrap()), 1e5), "a newton is 1e5 dyn");
         assert!(close(cgs.factor(unit_size("DEG").unwrap()), std::f64::consts::PI / 180.0));
+        assert!(close(internal_per_declared("deg/s", &si), std::f64::consts::PI / 180.0));
+        assert!(close(internal_per_declared("RPM", &si), std::f64::consts::PI / 30.0));
+        assert_eq!(internal_per_declared("CM", &cgs), 1.0, "a length is kept as written");
+        assert_eq!(internal_per_declared("DFG", &si), 1.0);
         let e = UnitSystem::from_words(&["KG".into(), "N".into()]).unwrap_err();
         assert_eq!(e, (1, "`N` is not a unit of mass, length or time".into()));
         assert!(UnitSystem::from_words(&["M".into(), "FT".into()])
