@@ -593,3 +593,14 @@ fn a_specifieds_formula_reaches_the_rate_nicheck_adds() {
     let v = spec.model.ar.eval_named(rate, &[("Q", 0.5), ("U", 3.0)]).unwrap();
     assert!((v + 6.0).abs() < 1e-12, "{v}");
 }
+
+#[test]
+fn units_of_an_index_range_give_each_name_its_unit() {
+    let (m, _) = checks(
+        "NEWTONIAN N\nVARIABLES Q{3}', U{2}'\nUNITS Q{3} = DEG, [U{2}'] = RAD/S^2\nQ1' = U1\nQ2' = U2\nQ3' = U1\nINPUT Q1 = 90, Q2 = 180, Q3 = 45\n",
+    );
+    let value = |n: &str| m.inputs.iter().find(|i| i.name == n).unwrap().value;
+    let pi = std::f64::consts::PI;
+    assert!((value("Q1") - pi / 2.0).abs() < 1e-15 && (value("Q2") - pi).abs() < 1e-15);
+    assert!((value("Q3") - pi / 4.0).abs() < 1e-15);
+}

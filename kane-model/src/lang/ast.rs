@@ -276,3 +276,12 @@ pub struct Stmt {
     /// Where the command is in the file.
     pub span: Span,
 }
+
+/// `Q` with ranges `[(1,3)]` -> `Q1, Q2, Q3`; `P` with `[(1,2),(1,3)]` -> `P11, P12, ..., P23`.
+pub(crate) fn expand_ranges(name: &str, ranges: &[(i64, i64)]) -> Vec<String> {
+    let mut out = vec![name.to_string()];
+    for &(lo, hi) in ranges {
+        out = out.iter().flat_map(|p| (lo..=hi).map(move |i| format!("{p}{i}"))).collect();
+    }
+    out
+}

@@ -2,8 +2,8 @@
 //! every mistake in a file is reported in one run.
 
 use super::ast::{
-    AssignOp, BinOp, DeclItem, DeclKind, Expr, ExprKind, InputItem, OutputItem, Stmt, StmtKind, Target,
-    UnitsItem,
+    expand_ranges, AssignOp, BinOp, DeclItem, DeclKind, Expr, ExprKind, InputItem, OutputItem, Stmt,
+    StmtKind, Target, UnitsItem,
 };
 use super::diagnostic::Diagnostic;
 use super::sum_tree;
@@ -382,18 +382,14 @@ impl<'a> Parser<'a> {
             let mut names = Vec::new();
             if self.eat('[') {
                 loop {
-                    let (n, _, span) = self.name()?;
-                    let p = self.primes();
-                    names.push((format!("{n}{}", "'".repeat(p as usize)), span));
+                    names.extend(self.units_names()?);
                     if !self.eat(',') {
                         break;
                     }
                 }
                 self.expect(']', "to close the list of names in UNITS")?;
             } else {
-                let (n, _, span) = self.name()?;
-                let p = self.primes();
-                names.push((format!("{n}{}", "'".repeat(p as usize)), span));
+                names.extend(self.units_names()?);
             }
             self.expect('=', "after the name in UNITS")?;
             let from = self.pos;
@@ -410,7 +406,7 @@ impl<'a> Parser<'a> {
                 })
                 .collect();
             let span = start..self.end();
-            out.extend(names.into_iter().map(|(name, _)| UnitsItem {
+            out.extend(names.into_iter().map(|name| UnitsItem {
                 name,
                 unit: unit.clone(),
                 span: span.clone(),
@@ -421,6 +417,14 @@ impl<'a> Parser<'a> {
             }
         }
         Ok(StmtKind::Units(out))
+    }
+
+    /// The names one item of UNITS gives a unit: `Q1'`, or `Q{3}'` for Q1', Q2', Q3'.
+    fn units_names(&mut self) -> PResult<Vec<String>> {
+        let (n, _, _) = self.name()?;
+        let ranges = self.index_ranges()?;
+        let primes = "'".repeat(self.primes() as usize);
+        Ok(expand_ranges(&n, &ranges).into_iter().map(|name| format!("{name}{primes}")).collect())
     }
 
     /// `INPUT NAME = value [UNIT], ...`.
@@ -525,27 +529,32 @@ impl<'a> Parser<'a> {
         Ok(StmtKind::Code { kind: kind.to_ascii_uppercase(), args, file })
     }
 
+    /// An index range after a name, if any: `{3}` is 1..3, `{1:3}` 1..3, `{2,3}` two dimensions.
+    fn index_ranges(&mut self) -> PResult<Vec<(i64, i64)>> {
+        let mut ranges = Vec::new();
+        if self.eat('{') {
+            loop {
+                let lo = self.integer()?;
+                if self.eat(':') {
+                    ranges.push((lo, self.integer()?));
+                } else {
+                    ranges.push((1, lo));
+                }
+                if !self.eat(',') {
+                    break;
+                }
+            }
+            self.expect('}', "to close the index range")?;
+        }
+        Ok(ranges)
+    }
+
     fn decl_items(&mut self) -> PResult<Vec<DeclItem>> {
         let mut items = Vec::new();
         loop {
             let start = self.start();
             let (name, _, _) = self.name()?;
-            let mut ranges = Vec::new();
-            if self.eat('{') {
-                loop {
-                    // {3} means 1..3; {1:3} means 1..3; {2,3} is two dimensions 1..2 and 1..3.
-                    let lo = self.integer()?;
-                    if self.eat(':') {
-                        ranges.push((lo, self.integer()?));
-                    } else {
-                        ranges.push((1, lo));
-                    }
-                    if !self.eat(',') {
-                        break;
-                    }
-                }
-                self.expect('}', "to close the index range")?;
-            }
+            let ranges = self.index_ranges()?;
             // RRF{2}O: a name part right after the range (no space) ends each name.
             let mut tail = String::new();
             if let (false, Some(Tok::Name { text, suffix: 0 })) = (ranges.is_empty(), self.peek()) {

@@ -4,7 +4,7 @@
 //! In: one parsed statement. Out: the interpreter's bindings and the model changed accordingly
 //! (frames, points, bodies, particles and symbols declared; masses given; requests recorded).
 
-use super::super::ast::{DeclItem, DeclKind, Expr, ExprKind, InputItem, Stmt, StmtKind};
+use super::super::ast::{expand_ranges, DeclItem, DeclKind, Expr, ExprKind, InputItem, Stmt, StmtKind};
 use super::super::diagnostic::Diagnostic;
 use super::super::token::Span;
 use super::super::units::size::{internal_per_declared, unit_size, UnitSystem};
@@ -281,13 +281,4 @@ fn unit_error(span: &Span, e: String) -> Diagnostic {
     }
     Diagnostic::error(span.clone(), e)
         .with_help("a unit is unit names joined by *, / and ^ (or .), e.g. M/S^2, KG*M^2, KG.M^2 or RAD/SEC")
-}
-
-/// `Q` with ranges `[(1,3)]` -> `Q1, Q2, Q3`; `P` with `[(1,2),(1,3)]` -> `P11, P12, ..., P23`.
-fn expand_ranges(name: &str, ranges: &[(i64, i64)]) -> Vec<String> {
-    let mut out = vec![name.to_string()];
-    for &(lo, hi) in ranges {
-        out = out.iter().flat_map(|p| (lo..=hi).map(move |i| format!("{p}{i}"))).collect();
-    }
-    out
 }
