@@ -196,7 +196,7 @@ fn the_energy_line_is_the_total_where_gravity_is_the_only_load_and_kinetic_elsew
 }
 
 #[test]
-fn figures_from_the_rows_alone_are_noted_and_plot_points_draws_them_dense() {
+fn figures_are_dense_unless_plot_points_asks_for_the_rows_alone_which_is_noted() {
     let dir = folder("plot_points");
     let sparse = dir.join("sparse.al");
     let source = std::fs::read_to_string(DOUBLE).unwrap();
@@ -204,8 +204,13 @@ fn figures_from_the_rows_alone_are_noted_and_plot_points_draws_them_dense() {
     let sparse = sparse.to_str().unwrap();
     let out = dir.join("out");
     let out = out.to_str().unwrap();
-    let rows_only =
-        text(&gyro_sim(&["--model", sparse, "--engine", "instant", "--no-view", "--out", out], &dir));
+    // Without --plot-points the figures come from the dense output: nothing to note.
+    let auto = gyro_sim(&["--model", sparse, "--engine", "instant", "--no-view", "--out", out], &dir);
+    assert!(auto.status.success() && !text(&auto).contains("note:"), "{}", text(&auto));
+    let rows_only = text(&gyro_sim(
+        &["--model", sparse, "--engine", "instant", "--no-view", "--plot-points", "1", "--out", out],
+        &dir,
+    ));
     assert!(
         rows_only.contains("integrator steps per output row: the figures, drawn from the rows alone"),
         "{rows_only}"

@@ -261,7 +261,7 @@ fn run_command(
         Some(path) => {
             let mut scene = Scene::load_with(path, &args.integrator())?;
             if let Some(n) = args.plot_points {
-                scene.plot_points = n as usize;
+                scene.plot_points = Some(n as usize);
             }
             Some(scene)
         }

@@ -54,10 +54,6 @@ pub fn print_summary(title: &str, summary: &run::RunSummary) {
     }
 }
 
-/// Steps per output interval from which a note says figures drawn from the rows alone may miss
-/// a faster motion.
-const STEPS_PER_ROW_NOTED: f64 = 4.0;
-
 /// A note when the figures are drawn from the `rows` alone while the integrator stepped several
 /// times per row (the motion may be faster than the rows show).
 fn aliasing_note(t: &crate::problem::Trajectory, rows: usize) -> Option<String> {
@@ -65,7 +61,7 @@ fn aliasing_note(t: &crate::problem::Trajectory, rows: usize) -> Option<String> 
         return None;
     }
     let per_row = t.stats.steps as f64 / (rows - 1) as f64;
-    (per_row >= STEPS_PER_ROW_NOTED).then(|| {
+    (per_row >= crate::problem::STEPS_PER_ROW_DENSE).then(|| {
         format!(
             "note: {per_row:.0} integrator steps per output row: the figures, drawn from the rows alone, may miss a motion faster than the rows; --plot-points 10 (plot_points = 10 in a scene) draws them from the dense output"
         )

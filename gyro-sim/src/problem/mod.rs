@@ -33,6 +33,10 @@ pub enum Pick {
     Output(usize),
 }
 
+/// Integrator steps per output row from which figures drawn from the rows alone may miss a
+/// motion faster than the rows.
+pub const STEPS_PER_ROW_DENSE: f64 = 4.0;
+
 /// One integration to do.
 #[derive(Clone, Debug)]
 pub struct Problem {
@@ -49,6 +53,10 @@ pub struct Problem {
     /// Further times, between output times, evaluated only for the figures (drawn from the
     /// dense output; empty when the method has none, since extra stops would change its steps).
     pub plot_times: Vec<f64>,
+    /// Whether a run whose figures are written draws them from the dense output when the
+    /// integrator stepped [`STEPS_PER_ROW_DENSE`] times or more per output row (no plot points
+    /// were asked for, and the method has a dense output).
+    pub dense_figures: bool,
     /// The method and its tolerances or step.
     pub method: Method,
     /// Most accepted steps of one integration.

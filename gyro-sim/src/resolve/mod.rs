@@ -55,8 +55,9 @@ pub fn resolve(scene: &Scene, registry: &Registry) -> Result<Problem, SceneError
         params,
         initial,
         times: times.clone(),
+        dense_figures: scene.plot_points.is_none() && has_dense_output(method),
         plot_times: if has_dense_output(method) {
-            plot_times(&times, scene.plot_points, MAX_PLOT_POINTS)
+            plot_times(&times, scene.plot_points.unwrap_or(1), MAX_PLOT_POINTS)
         } else {
             Vec::new()
         },
@@ -146,7 +147,7 @@ fn euler_parameters_named_e(scene: &Scene, info: &ModelInfo, y: &[f64]) -> Resul
 }
 
 /// Figures are drawn from at most this many points in all.
-const MAX_PLOT_POINTS: usize = 20_000;
+pub(crate) const MAX_PLOT_POINTS: usize = 20_000;
 
 /// Whether `method` interpolates inside its steps (then plot points cost no extra steps).
 fn has_dense_output(method: Method) -> bool {

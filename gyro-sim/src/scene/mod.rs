@@ -64,8 +64,9 @@ pub struct Scene {
     pub t_final: f64,
     /// Output step.
     pub output_step: f64,
-    /// Points per output interval the figures are drawn from (dense output; 1: the rows alone).
-    pub plot_points: usize,
+    /// Points per output interval the figures are drawn from (dense output; 1: the rows alone);
+    /// none given: dense where the integrator steps several times per row.
+    pub plot_points: Option<usize>,
     /// Outputs asked for (state or output names); empty means all.
     pub outputs: Vec<(String, std::ops::Range<usize>)>,
     /// The integrator and its settings (`[integrator]`).

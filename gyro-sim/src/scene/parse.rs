@@ -318,15 +318,15 @@ impl Text<'_> {
 
     /// `t_final` and `output_step`: positive, the step no longer than the span.
     /// `plot_points`: 1 (the output rows alone) to 1000 points per output interval.
-    fn plot_points(&self, v: Option<Spanned<u32>>) -> Result<usize, SceneError> {
+    fn plot_points(&self, v: Option<Spanned<u32>>) -> Result<Option<usize>, SceneError> {
         match v {
             Some(n) if !(1..=1000).contains(n.get_ref()) => Err(self.err(
                 n.span(),
                 format!("plot_points must be 1 to 1000, not {}", n.get_ref()),
                 "give the points per output interval the figures are drawn from (1: the rows alone)",
             )),
-            Some(n) => Ok(*n.get_ref() as usize),
-            None => Ok(1),
+            Some(n) => Ok(Some(*n.get_ref() as usize)),
+            None => Ok(None),
         }
     }
 
