@@ -846,3 +846,23 @@ fn a_speed_in_degrees_per_second_is_read_run_and_written_in_degrees_per_second()
     let instant = last(&run(&["--engine", "instant", "--set", "U=20"], "instant"));
     assert!((instant[1] - 20.0).abs() < 1e-9, "Q(1) = {} deg", instant[1]);
 }
+
+#[test]
+fn a_scene_naming_a_model_file_takes_the_file_s_times_where_it_gives_none() {
+    let dir = folder("scene_file_times");
+    let source =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/examples/pendulum.al"))
+            .unwrap();
+    std::fs::write(dir.join("pendulum.al"), format!("{source}INPUT TFINAL = 2, INTEGSTP = 0.25\n")).unwrap();
+    let times = |scene: &str, name: &str| {
+        let path = dir.join(format!("{name}.toml"));
+        std::fs::write(&path, format!("model = \"pendulum.al\"\n{scene}[parameters]\nL = 2\n")).unwrap();
+        let out = dir.join(name);
+        let run = gyro_sim(&[path.to_str().unwrap(), "--no-view", "--out", out.to_str().unwrap()], &dir);
+        assert!(run.status.success(), "{}", text(&run));
+        rows(&out).iter().map(|r| r[0]).collect::<Vec<f64>>()
+    };
+    assert_eq!(times("", "from_file"), [0.0, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0]);
+    assert_eq!(times("t_final = 1.0\n", "own_end"), [0.0, 0.25, 0.5, 0.75, 1.0]);
+    assert_eq!(times("output_step = 1.0\n", "own_step"), [0.0, 1.0, 2.0]);
+}

@@ -328,3 +328,9 @@ fn a_built_in_model_has_no_drawing_to_draw() {
     assert!(e.starts_with("bad.toml:4:1: error: [view]: draw_model = true"), "{e}");
     assert!(e.contains("[[view.bodies]]"), "{e}");
 }
+
+#[test]
+fn missing_times_are_both_reported_at_once() {
+    let e = error("model = \"gimbal_gyroscope\"\n");
+    assert!(e.contains("missing `t_final`") && e.contains("missing `output_step`"), "{e}");
+}

@@ -259,7 +259,8 @@ fn run_command(
 ) -> Result<ExitCode, CliError> {
     let scene = match &args.scene {
         Some(path) => {
-            let mut scene = Scene::load_with(path, &args.integrator())?;
+            let defaults = |model: &str| crate::model_run::file_defaults(path, model);
+            let mut scene = Scene::load_with(path, &args.integrator(), &defaults)?;
             if let Some(n) = args.plot_points {
                 scene.plot_points = Some(n as usize);
             }

@@ -10,7 +10,7 @@ use crate::scene::Scene;
 
 /// Loads the scene (a model file it names runs on the JIT engine), runs it once and serves it.
 pub fn serve_command(scene: &Path, port: u16, registry: Registry) -> Result<ExitCode, CliError> {
-    let scene = Scene::load(scene)?;
+    let scene = Scene::load_with(scene, &Default::default(), &|m| crate::model_run::file_defaults(scene, m))?;
     let (registry, warnings) = crate::model_run::with_file_model(&scene, registry)?;
     eprint!("{warnings}");
     if scene.controls.is_empty() {

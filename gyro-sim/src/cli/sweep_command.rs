@@ -39,7 +39,12 @@ pub struct SweepArgs<'a> {
 /// folder must hold this sweep (or none) and no other sweep may be running in it.
 pub fn sweep_command(args: &SweepArgs<'_>, registry: &Registry) -> Result<ExitCode, CliError> {
     // A sweep writes no view: neither its columns nor a model's drawing are computed.
-    let scene = Scene { view: None, ..Scene::load(args.scene)? };
+    let scene = Scene {
+        view: None,
+        ..Scene::load_with(args.scene, &Default::default(), &|m| {
+            crate::model_run::file_defaults(args.scene, m)
+        })?
+    };
     let (registry, warnings) = crate::model_run::with_file_model(&scene, registry.clone())?;
     eprint!("{warnings}");
     let design = match args.samples {

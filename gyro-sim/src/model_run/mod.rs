@@ -174,6 +174,22 @@ pub fn with_file_model(scene: &Scene, registry: Registry) -> Result<(Registry, S
     Ok((registry.with_entry(&scene.model, model), file.warnings))
 }
 
+/// What a scene at `scene_path` naming `model` takes where it gives no times or tolerances:
+/// for a model file, its TFINAL, INTEGSTP, RELERR and ABSERR, else what a `--model` run takes
+/// (also when the file does not load: its mistakes are reported when it is run); nothing for a
+/// built-in model.
+pub fn file_defaults(scene_path: &Path, model: &str) -> crate::scene::SceneDefaults {
+    if !model.to_ascii_lowercase().ends_with(".al") {
+        return crate::scene::SceneDefaults::default();
+    }
+    let path = scene_path.parent().unwrap_or(Path::new(".")).join(model);
+    let source = std::fs::read_to_string(&path).unwrap_or_default();
+    let run = kane_model::lang::load(&path.display().to_string(), &source)
+        .map(|loaded| crate::models::file_run(&loaded))
+        .unwrap_or_default();
+    scene_text::scene_defaults(&run)
+}
+
 /// The model file a scene names (`model = "file.al"`, relative to the scene), if it does.
 pub fn model_file_of(scene: &Scene) -> Option<PathBuf> {
     if !scene.model.to_ascii_lowercase().ends_with(".al") {

@@ -8,7 +8,7 @@ use kane_model::runtime::ModelInfo;
 use super::origins::{GeneratedScene, Origin};
 use super::ModelRunError;
 use crate::models::FileRun;
-use crate::scene::IntegratorOverrides;
+use crate::scene::{IntegratorOverrides, SceneDefaults};
 
 /// End time when neither the command line nor the file's TFINAL gives one.
 const DEFAULT_T_FINAL: f64 = 10.0;
@@ -65,7 +65,7 @@ pub fn scene_text(
         (None, None) => (DEFAULT_T_FINAL, Origin::File),
     };
     scene.push(format!("t_final = {}", toml_number(t_final)), from);
-    let step = run.step.filter(|s| *s > 0.0 && *s <= t_final);
+    let step = file_step(run, t_final);
     let from = if step.is_some() { Origin::Input("INTEGSTP") } else { Origin::File };
     scene.push(format!("output_step = {}", toml_number(step.unwrap_or(t_final / DEFAULT_ROWS))), from);
     scene.push(format!("outputs = [{}]", outputs(run, info).join(", ")), Origin::Output);
@@ -91,6 +91,23 @@ fn outputs(run: &FileRun, info: &ModelInfo) -> Vec<String> {
         outputs = info.state_names.to_vec();
     }
     outputs.iter().map(|n| format!("{n:?}")).collect()
+}
+
+/// The file's INTEGSTP, when it is a step within `t_final`.
+fn file_step(run: &FileRun, t_final: f64) -> Option<f64> {
+    run.step.filter(|s| *s > 0.0 && *s <= t_final)
+}
+
+/// What a scene naming the model file takes where it gives no times or tolerances: the file's
+/// TFINAL, INTEGSTP, RELERR and ABSERR, else the defaults of a run without a scene.
+pub(crate) fn scene_defaults(run: &FileRun) -> SceneDefaults {
+    let t_final = run.t_final.unwrap_or(DEFAULT_T_FINAL);
+    SceneDefaults {
+        t_final: Some(t_final),
+        output_step: Some(file_step(run, t_final).unwrap_or(t_final / DEFAULT_ROWS)),
+        rtol: Some(run.relerr.unwrap_or(DEFAULT_TOLERANCE)),
+        atol: Some(run.abserr.unwrap_or(DEFAULT_TOLERANCE)),
+    }
 }
 
 /// The `[integrator]` table: the command line's settings, else the file's, else the defaults.

@@ -238,7 +238,7 @@ pub fn model_name(path: &Path) -> String {
 }
 
 /// The run settings a loaded file gives.
-fn file_run(loaded: &kane_model::lang::LoadedModel) -> FileRun {
+pub(crate) fn file_run(loaded: &kane_model::lang::LoadedModel) -> FileRun {
     let input = |n: &str| loaded.inputs.iter().find(|i| i.name.eq_ignore_ascii_case(n)).map(|i| i.value);
     let outputs = loaded
         .outputs

@@ -119,6 +119,19 @@ impl Axle {
     }
 }
 
+/// What a scene takes where it says nothing: a model file's TFINAL, INTEGSTP, ABSERR and RELERR.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SceneDefaults {
+    /// `t_final`.
+    pub t_final: Option<f64>,
+    /// `output_step`.
+    pub output_step: Option<f64>,
+    /// `[integrator] rtol`.
+    pub rtol: Option<f64>,
+    /// `[integrator] atol`.
+    pub atol: Option<f64>,
+}
+
 /// Integrator settings given outside the scene file (`gyro-sim run --method --rtol --atol`):
 /// each one given replaces the `[integrator]` table's.
 #[derive(Clone, Debug, Default, PartialEq)]

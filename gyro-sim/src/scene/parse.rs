@@ -14,7 +14,7 @@ use super::event_decls::{self, EventFile};
 use super::grid::too_many_rows;
 use super::specified_table::Table;
 use super::text::{is_simple_name, keep, SceneError, Span, Text};
-use super::{Axle, Integrator, IntegratorOverrides, Scene, Value, ViewSpec};
+use super::{Axle, Integrator, IntegratorOverrides, Scene, SceneDefaults, Value, ViewSpec};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -335,8 +335,16 @@ impl Text<'_> {
         t_final: Option<Spanned<f64>>,
         output_step: Option<Spanned<f64>>,
     ) -> Result<(f64, f64), SceneError> {
-        let t_final = t_final
-            .ok_or_else(|| self.err(0..0, "missing `t_final`".into(), "add t_final = 5.0 (seconds)"))?;
+        let missing =
+            |key: &str, add: &str| self.err(0..0, format!("missing `{key}`"), &format!("add {add}"));
+        let (t_final, output_step) = match (t_final, output_step) {
+            (Some(t), Some(s)) => (t, s),
+            (t, s) => {
+                let t_err = t.is_none().then(|| missing("t_final", "t_final = 5.0 (seconds)"));
+                let s_err = s.is_none().then(|| missing("output_step", "output_step = 0.05"));
+                return Err(SceneError::all(t_err.into_iter().chain(s_err).collect()));
+            }
+        };
         if !(*t_final.get_ref() > 0.0 && t_final.get_ref().is_finite()) {
             return Err(self.err(
                 t_final.span(),
@@ -344,8 +352,7 @@ impl Text<'_> {
                 "the simulation starts at t = 0; give a positive end time",
             ));
         }
-        let step = output_step
-            .ok_or_else(|| self.err(0..0, "missing `output_step`".into(), "add output_step = 0.05"))?;
+        let step = output_step;
         if !(*step.get_ref() > 0.0 && *step.get_ref() <= *t_final.get_ref()) {
             return Err(self.err(
                 step.span(),
@@ -378,11 +385,16 @@ fn view_span(source: &str) -> Span {
 impl Scene {
     /// Reads and validates a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
-        Scene::load_with(path, &IntegratorOverrides::default())
+        Scene::load_with(path, &IntegratorOverrides::default(), &|_| SceneDefaults::default())
     }
 
-    /// Reads and validates a scene file, with `overrides` in place of its integrator settings.
-    pub fn load_with(path: &Path, overrides: &IntegratorOverrides) -> Result<Scene, SceneError> {
+    /// Reads and validates a scene file, with `overrides` in place of its integrator settings
+    /// and `defaults(model)` (given the scene's `model`) where it gives no times or tolerances.
+    pub fn load_with(
+        path: &Path,
+        overrides: &IntegratorOverrides,
+        defaults: &dyn Fn(&str) -> SceneDefaults,
+    ) -> Result<Scene, SceneError> {
         let file = path.display().to_string();
         let source = std::fs::read_to_string(path).map_err(|e| SceneError {
             file: file.clone(),
@@ -392,23 +404,30 @@ impl Scene {
             help: "give the path of a scene .toml file, e.g. gyro-sim/scenes/paper/trial3.toml".into(),
             more: Vec::new(),
         })?;
-        Scene::parse_with(&file, &source, overrides)
+        Scene::parse_with(&file, &source, overrides, defaults)
     }
 
     /// Parses and validates a scene from its text (the model is looked up when it is resolved).
     pub fn parse(file: &str, source: &str) -> Result<Scene, SceneError> {
-        Scene::parse_with(file, source, &IntegratorOverrides::default())
+        Scene::parse_with(file, source, &IntegratorOverrides::default(), &|_| SceneDefaults::default())
     }
 
-    /// [`Scene::parse`] with `overrides` in place of the text's integrator settings.
+    /// [`Scene::parse`] with `overrides` in place of the text's integrator settings and
+    /// `defaults(model)` where it gives no times or tolerances.
     pub fn parse_with(
         file: &str,
         source: &str,
         overrides: &IntegratorOverrides,
+        defaults: &dyn Fn(&str) -> SceneDefaults,
     ) -> Result<Scene, SceneError> {
         let text = Text { file, source };
         let typed = super::typed::read_typed::<SceneFile>(&text)?;
-        let raw = typed.tables;
+        let mut raw = typed.tables;
+        let defaults = match &raw.model {
+            Some(m) if raw.lacks_settings() => defaults(m.get_ref()),
+            _ => SceneDefaults::default(),
+        };
+        raw.fill(&defaults);
         // Each check on its own, so one reading reports every mistake.
         let mut found = typed.unknown;
         let model = keep(
@@ -564,5 +583,28 @@ mod tests {
         assert_eq!(method("[integrator]\nmethod = \"AUTO\"\nrtol = 1e-6\natol = 1e-10\n"), "dop853");
         assert_eq!(method("[integrator]\nmethod = \"auto\"\nrtol = 1e-8\natol = 1e-8\n"), "vern9");
         assert_eq!(method("[integrator]\nmethod = \"dopri5\"\nrtol = 1e-8\n"), "dopri5");
+    }
+}
+
+impl SceneFile {
+    /// Whether it leaves out a time or a tolerance.
+    fn lacks_settings(&self) -> bool {
+        let integ = self.integrator.as_ref();
+        self.t_final.is_none()
+            || self.output_step.is_none()
+            || integ.is_none_or(|i| i.rtol.is_none() || i.atol.is_none())
+    }
+
+    /// The scene with `defaults` where it gives no times or tolerances (located at its start).
+    fn fill(&mut self, defaults: &SceneDefaults) {
+        let at_start = |v: Option<f64>| v.map(|v| Spanned::new(0..0, v));
+        self.t_final = self.t_final.take().or_else(|| at_start(defaults.t_final));
+        self.output_step = self.output_step.take().or_else(|| at_start(defaults.output_step));
+        if defaults.rtol.is_none() && defaults.atol.is_none() {
+            return;
+        }
+        let integ = self.integrator.get_or_insert_with(IntegratorFile::default);
+        integ.rtol = integ.rtol.take().or_else(|| at_start(defaults.rtol));
+        integ.atol = integ.atol.take().or_else(|| at_start(defaults.atol));
     }
 }
