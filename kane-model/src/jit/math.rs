@@ -1,6 +1,14 @@
 //! The math functions machine code calls: each the Rust function the evaluator uses, behind the
-//! C calling convention, so both engines compute the same values.
+//! C calling convention, so both engines compute the same values; and the calls to them.
 
+use std::collections::HashMap;
+
+use cranelift_codegen::ir::{self, types, AbiParam, InstBuilder, Value};
+use cranelift_frontend::FunctionBuilder;
+use cranelift_jit::JITModule;
+use cranelift_module::{Linkage, Module};
+
+use super::JitError;
 use crate::expr::Func;
 
 extern "C" fn sin(x: f64) -> f64 {
@@ -125,4 +133,38 @@ pub(super) fn sin_cos_callee() -> Callee {
 pub(super) fn all() -> Vec<Callee> {
     let binary = [powf_callee(), atan2_callee(), sin_cos_callee()];
     Func::ALL.iter().filter_map(|&f| unary(f)).chain(binary).collect()
+}
+
+/// The callees one function being emitted has declared so far.
+#[derive(Default)]
+pub(super) struct Callees {
+    declared: HashMap<&'static str, ir::FuncRef>,
+}
+
+impl Callees {
+    /// A call of `callee` on `args`: its results.
+    pub(super) fn call(
+        &mut self,
+        module: &mut JITModule,
+        b: &mut FunctionBuilder<'_>,
+        callee: Callee,
+        args: &[Value],
+    ) -> Result<Vec<Value>, JitError> {
+        let func = match self.declared.get(callee.name) {
+            Some(&f) => f,
+            None => {
+                let mut signature = module.make_signature();
+                signature.params.extend((0..callee.arity).map(|_| AbiParam::new(types::F64)));
+                signature.returns.extend((0..callee.results).map(|_| AbiParam::new(types::F64)));
+                let id = module
+                    .declare_function(callee.name, Linkage::Import, &signature)
+                    .map_err(|e| JitError::Compile(e.to_string()))?;
+                let f = module.declare_func_in_func(id, b.func);
+                self.declared.insert(callee.name, f);
+                f
+            }
+        };
+        let call = b.ins().call(func, args);
+        Ok(b.inst_results(call).to_vec())
+    }
 }

@@ -4,8 +4,10 @@
 //! Taylor coefficients the first time they are asked for (a run pays only for what it uses);
 //! everything else (output rates, faults) is the evaluator's.
 
+mod expansion;
 mod math;
 mod native;
+mod recurrence;
 mod section;
 mod taylor;
 
@@ -13,6 +15,7 @@ use std::sync::{Arc, OnceLock};
 
 use thiserror::Error;
 
+pub use expansion::CompiledExpansion;
 pub use section::{CompiledSection, Reads};
 pub use taylor::CompiledTaylor;
 
@@ -40,9 +43,9 @@ pub struct JitModel {
     rhs: CompiledSection,
     outputs: Vec<OnceLock<Result<CompiledSection, JitError>>>,
     taylor: OnceLock<Option<Result<CompiledTaylor, JitError>>>,
-    /// The orders whose Taylor passes are written out, and their code once compiled.
+    /// The orders whose Taylor expansions are written out, and their code once compiled.
     straight_orders: Vec<usize>,
-    straight: Vec<OnceLock<Result<CompiledTaylor, JitError>>>,
+    straight: Vec<OnceLock<Result<CompiledExpansion, JitError>>>,
     quaternion: Vec<bool>,
 }
 
@@ -143,16 +146,16 @@ impl JitModel {
         out: &mut [f64],
         work: &mut TaylorWork,
     ) -> bool {
-        let code = match self.straight_code(order) {
-            Some(Ok(code)) => Some(code),
-            _ => self.taylor_code().and_then(|r| r.as_ref().ok()),
-        };
-        match code {
-            Some(code) => {
+        if let Some(Ok(code)) = self.straight_code(order) {
+            code.run(t, y, params, constants, out);
+            return true;
+        }
+        match self.taylor_code() {
+            Some(Ok(code)) => {
                 let passes = |w: &mut [Row<f64>], order| code.passes(w, order);
                 self.evaluator.taylor_by(t, y, params, constants, order, out, work, passes)
             }
-            None => self.evaluator.taylor(t, y, params, constants, order, out, work) == Ok(true),
+            _ => self.evaluator.taylor(t, y, params, constants, order, out, work) == Ok(true),
         }
     }
 
@@ -164,10 +167,10 @@ impl JitModel {
         code.as_ref()
     }
 
-    fn straight_code(&self, order: usize) -> Option<&Result<CompiledTaylor, JitError>> {
+    fn straight_code(&self, order: usize) -> Option<&Result<CompiledExpansion, JitError>> {
         let i = self.straight_orders.iter().position(|&o| o == order)?;
         let program = self.evaluator.taylor_program().ok()?;
-        Some(self.straight[i].get_or_init(|| CompiledTaylor::straight_line(program, order)))
+        Some(self.straight[i].get_or_init(|| CompiledExpansion::new(program, order)))
     }
 
     fn output_section(&self, k: usize) -> Result<&CompiledSection, JitError> {

@@ -5,12 +5,11 @@
 
 use std::collections::{HashMap, HashSet};
 
-use cranelift_codegen::ir::{self, types, AbiParam, InstBuilder, MemFlagsData, Value};
+use cranelift_codegen::ir::{types, InstBuilder, MemFlagsData, Value};
 use cranelift_frontend::FunctionBuilder;
 use cranelift_jit::JITModule;
-use cranelift_module::{Linkage, Module};
 
-use super::math::{self, Callee};
+use super::math::{self, Callee, Callees};
 use super::native::{NativeCode, Param};
 use super::JitError;
 use crate::expr::Func;
@@ -94,7 +93,7 @@ impl CompiledSection {
 struct Body<'m, 'b, 'f> {
     module: &'m mut JITModule,
     b: &'b mut FunctionBuilder<'f>,
-    callees: HashMap<&'static str, ir::FuncRef>,
+    callees: Callees,
     /// The operands whose sine and cosine are both taken.
     paired: HashSet<u32>,
     /// `(sin, cos)` of a paired operand, once computed.
@@ -103,7 +102,7 @@ struct Body<'m, 'b, 'f> {
 
 impl<'m, 'b, 'f> Body<'m, 'b, 'f> {
     fn new(module: &'m mut JITModule, b: &'b mut FunctionBuilder<'f>) -> Self {
-        Body { module, b, callees: HashMap::new(), paired: HashSet::new(), sin_cos: HashMap::new() }
+        Body { module, b, callees: Callees::default(), paired: HashSet::new(), sin_cos: HashMap::new() }
     }
 
     /// Emits `section` as the whole function; returns the least length of each array it reads.
@@ -226,27 +225,7 @@ impl<'m, 'b, 'f> Body<'m, 'b, 'f> {
 
     /// A call of `callee` on `args`: its results.
     fn call_all(&mut self, callee: Callee, args: &[Value]) -> Result<Vec<Value>, JitError> {
-        let func = match self.callees.get(callee.name) {
-            Some(&f) => f,
-            None => {
-                let mut signature = self.module.make_signature();
-                for _ in 0..callee.arity {
-                    signature.params.push(AbiParam::new(types::F64));
-                }
-                for _ in 0..callee.results {
-                    signature.returns.push(AbiParam::new(types::F64));
-                }
-                let id = self
-                    .module
-                    .declare_function(callee.name, Linkage::Import, &signature)
-                    .map_err(|e| JitError::Compile(e.to_string()))?;
-                let f = self.module.declare_func_in_func(id, self.b.func);
-                self.callees.insert(callee.name, f);
-                f
-            }
-        };
-        let call = self.b.ins().call(func, args);
-        Ok(self.b.inst_results(call).to_vec())
+        self.callees.call(self.module, self.b, callee, args)
     }
 }
 
@@ -285,7 +264,7 @@ fn array_of(input: Input) -> Option<(usize, usize)> {
 }
 
 /// The byte offset of `f64` number `index`.
-fn offset(index: usize) -> Result<i32, JitError> {
+pub(super) fn offset(index: usize) -> Result<i32, JitError> {
     index
         .checked_mul(8)
         .and_then(|b| i32::try_from(b).ok())
