@@ -501,6 +501,29 @@ impl Scene {
     }
 }
 
+impl SceneFile {
+    /// Whether it leaves out a time or a tolerance.
+    fn lacks_settings(&self) -> bool {
+        let integ = self.integrator.as_ref();
+        self.t_final.is_none()
+            || self.output_step.is_none()
+            || integ.is_none_or(|i| i.rtol.is_none() || i.atol.is_none())
+    }
+
+    /// The scene with `defaults` where it gives no times or tolerances (located at its start).
+    fn fill(&mut self, defaults: &SceneDefaults) {
+        let at_start = |v: Option<f64>| v.map(|v| Spanned::new(0..0, v));
+        self.t_final = self.t_final.take().or_else(|| at_start(defaults.t_final));
+        self.output_step = self.output_step.take().or_else(|| at_start(defaults.output_step));
+        if defaults.rtol.is_none() && defaults.atol.is_none() {
+            return;
+        }
+        let integ = self.integrator.get_or_insert_with(IntegratorFile::default);
+        integ.rtol = integ.rtol.take().or_else(|| at_start(defaults.rtol));
+        integ.atol = integ.atol.take().or_else(|| at_start(defaults.atol));
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -583,28 +606,5 @@ mod tests {
         assert_eq!(method("[integrator]\nmethod = \"AUTO\"\nrtol = 1e-6\natol = 1e-10\n"), "dop853");
         assert_eq!(method("[integrator]\nmethod = \"auto\"\nrtol = 1e-8\natol = 1e-8\n"), "vern9");
         assert_eq!(method("[integrator]\nmethod = \"dopri5\"\nrtol = 1e-8\n"), "dopri5");
-    }
-}
-
-impl SceneFile {
-    /// Whether it leaves out a time or a tolerance.
-    fn lacks_settings(&self) -> bool {
-        let integ = self.integrator.as_ref();
-        self.t_final.is_none()
-            || self.output_step.is_none()
-            || integ.is_none_or(|i| i.rtol.is_none() || i.atol.is_none())
-    }
-
-    /// The scene with `defaults` where it gives no times or tolerances (located at its start).
-    fn fill(&mut self, defaults: &SceneDefaults) {
-        let at_start = |v: Option<f64>| v.map(|v| Spanned::new(0..0, v));
-        self.t_final = self.t_final.take().or_else(|| at_start(defaults.t_final));
-        self.output_step = self.output_step.take().or_else(|| at_start(defaults.output_step));
-        if defaults.rtol.is_none() && defaults.atol.is_none() {
-            return;
-        }
-        let integ = self.integrator.get_or_insert_with(IntegratorFile::default);
-        integ.rtol = integ.rtol.take().or_else(|| at_start(defaults.rtol));
-        integ.atol = integ.atol.take().or_else(|| at_start(defaults.atol));
     }
 }
