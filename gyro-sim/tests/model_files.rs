@@ -89,7 +89,15 @@ fn a_model_run_draws_its_frames_and_points_where_its_coordinates_put_them() {
             )
         })
         .collect();
-    assert_eq!(bodies, [("A", "axes", "P_O_AO_N1"), ("B", "axes", "P_O_BO_N1")]);
+    assert_eq!(
+        bodies,
+        [
+            ("A", "axes", "P_O_AO_N1"),
+            ("B", "axes", "P_O_BO_N1"),
+            ("A (inertia)", "ellipsoid", "P_O_AO_N1"),
+            ("B (inertia)", "ellipsoid", "P_O_BO_N1")
+        ]
+    );
     let joined: Vec<(&str, Option<&str>)> = view["points"]
         .as_array()
         .unwrap()
@@ -111,6 +119,64 @@ fn a_model_run_draws_its_frames_and_points_where_its_coordinates_put_them() {
             assert!((d - h).abs() < 1e-12, "row {k}: drawn {drawn:?}, by hand {hand:?}");
         }
     }
+}
+
+/// The semi-axes, orientation and position columns of the view's body `name`.
+fn ellipsoid(view: &serde_json::Value, name: &str) -> ([f64; 3], String, String) {
+    let body = view["bodies"].as_array().unwrap().iter().find(|b| b["name"] == name);
+    let body = body.unwrap_or_else(|| panic!("no body {name}: {}", view["bodies"]));
+    assert_eq!(body["shape"]["kind"], "ellipsoid", "{body}");
+    assert!(body["opacity"].as_f64().unwrap() < 0.6 && body["turn"].is_null(), "{body}");
+    let semi = ["a", "b", "c"].map(|k| body["shape"][k].as_f64().unwrap());
+    let column = |v: &serde_json::Value| v.as_str().unwrap().to_string();
+    (semi, column(&body["orientation"]["dcm"][0]), column(&body["position"][0]))
+}
+
+#[test]
+fn each_gimbal_body_is_drawn_as_the_ellipsoid_of_its_inertia_sized_by_the_run_s_values() {
+    let dir = folder("gimbal_ellipsoids");
+    let run = |out: &Path, set: &[&str]| {
+        let mut args = vec!["--model", PAPER, "--engine", "instant", "--t-final", "0.1"];
+        args.extend_from_slice(set);
+        args.extend(["--out", out.to_str().unwrap()]);
+        let run = gyro_sim(&args, &dir);
+        assert!(run.status.success(), "{}", text(&run));
+        view_data(out)["view"].clone()
+    };
+    // The file's INPUT values: L = .3, W = .025, H1 = .6, H2 = .5, H3 = .4, M1 = M2 = 2, M3 = 50.
+    let (l, w) = (0.3, 0.025);
+    // a^2 = 5/(2m) (I2 + I3 - I1) and cyclically, for moments (I1, I2, I3).
+    let semi = |m: f64, [i1, i2, i3]: [f64; 3]| {
+        [i2 + i3 - i1, i3 + i1 - i2, i1 + i2 - i3].map(|s: f64| (2.5 / m * s).sqrt())
+    };
+    let gimbal = |m: f64, h: f64| {
+        let (i1, i2) = (2.0 / 3.0 * m * (h * w - w * w), m / 6.0 * (h * h - (h - w) * (h - w)));
+        semi(m, [i1, i1, i2])
+    };
+    let rotor = |h3: f64| {
+        let (k1, k2) = (0.5 * 50.0 * l * l, 0.25 * 50.0 * l * l + 50.0 * h3 * h3 / 12.0);
+        semi(50.0, [k2, k1, k2])
+    };
+    let close = |got: [f64; 3], want: [f64; 3]| {
+        assert!(got.iter().zip(want).all(|(g, w)| (g - w).abs() < 1e-12), "{got:?} against {want:?}");
+    };
+    let view = run(&dir.join("file"), &[]);
+    for (name, frame, want) in
+        [("B", "A_B", gimbal(2.0, 0.6)), ("C", "A_C", gimbal(2.0, 0.5)), ("D", "A_D", rotor(0.4))]
+    {
+        let (got, dcm, position) = ellipsoid(&view, &format!("{name} (inertia)"));
+        close(got, want);
+        assert_eq!((dcm, position), (format!("{frame}_11"), format!("P_O_{name}O_A1")), "body {name}");
+    }
+    // The rotor's semi-axes by hand: sqrt(0.05 K1) along D1 and D3, sqrt(0.05 (2 K2 - K1)) along D2.
+    close(
+        rotor(0.4),
+        [0.1125f64.sqrt(), (0.05 * (2.0 * (1.125 + 0.8 / 1.2) - 2.25f64)).sqrt(), 0.1125f64.sqrt()],
+    );
+    let set = run(&dir.join("set"), &["--set", "H3=0.8"]);
+    let (got, _, _) = ellipsoid(&set, "D (inertia)");
+    close(got, rotor(0.8));
+    assert!(got[1] > 1.5 * rotor(0.4)[1], "a longer rotor is drawn longer: {got:?}");
 }
 
 #[test]

@@ -67,6 +67,7 @@ fn view() -> ViewSpec {
                 offset: [ARM.into(), 0.0.into(), 0.0.into()],
                 opacity: 1.0,
                 axis: 3,
+                turn: None,
                 position: None,
             },
             BodyView {
@@ -77,6 +78,7 @@ fn view() -> ViewSpec {
                 offset: [(ARM / 2.0).into(), 0.0.into(), 0.0.into()],
                 opacity: 1.0,
                 axis: 3,
+                turn: None,
                 position: None,
             },
         ],

@@ -58,7 +58,8 @@ pub(crate) fn script_json(value: &serde_json::Value) -> String {
 }
 
 /// `{"title", "fov", "t": [..], "columns": {name: [..]}, "view": ViewSpec}` (each arrow with its
-/// `tag`), each column once: those the view reads, then those of `extra` the trajectory has.
+/// `tag`, each body sized by its inertia an ellipsoid from the first row), each column once:
+/// those the view reads, then those of `extra` the trajectory has.
 pub(crate) fn view_data(
     trajectory: &Trajectory,
     view: &ViewSpec,
@@ -69,6 +70,8 @@ pub(crate) fn view_data(
     if trajectory.rows.is_empty() {
         return Err(ViewError::Empty);
     }
+    let names: Vec<&str> = trajectory.columns.iter().map(|c| c.name.as_str()).collect();
+    let view = &view.with_inertias(&names, &trajectory.rows[0][1..])?;
     let mut columns: BTreeMap<&str, Vec<f64>> = BTreeMap::new();
     let column = |index: usize| trajectory.rows.iter().map(|r| r[index + 1]).collect::<Vec<f64>>();
     for (user, name) in view.columns() {

@@ -1,6 +1,9 @@
 //! A view with the model's default drawing: in come a [`ViewSpec`] asking for it
 //! (`draw_model = true`) and the model's [`Drawing`]; out goes the view with a body of axes per
-//! frame and a marker per point, joined to the points they were located from.
+//! frame, a translucent ellipsoid of inertia per body with a mass and an inertia (sized once the
+//! run is known, in `inertia`) and a marker per point, joined to the points it was located from.
+
+mod inertia;
 
 use kane_model::spec::Drawing;
 
@@ -10,10 +13,13 @@ use super::view_spec::{BodyView, Length, Orientation, PointView, Shape, ViewSpec
 const FRAME_COLOURS: [&str; 6] = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#8c564b", "#e377c2"];
 /// The points' colour.
 const POINT_COLOUR: &str = "#333333";
+/// The opacity of a body's ellipsoid of inertia: its frame's axes and the arrows inside show.
+const BODY_OPACITY: f64 = 0.4;
 
 impl ViewSpec {
-    /// This view with `drawing`'s frames and points added after its own bodies and points (and
-    /// its up axis and frame name, unless the view gives them).
+    /// This view with `drawing`'s frames, bodies (each the ellipsoid of its inertia, in its
+    /// frame's colour, about its mass centre) and points added after its own bodies and points
+    /// (and its up axis and frame name, unless the view gives them).
     pub fn with_drawing(&self, drawing: &Drawing) -> ViewSpec {
         let mut view = self.clone();
         view.draw_model = false;
@@ -21,18 +27,28 @@ impl ViewSpec {
         view.frame.get_or_insert_with(|| drawing.newtonian.clone());
         let position_of =
             |name: &str| drawing.points.iter().find(|p| p.name == name).map(|p| p.position.clone());
+        // A body turning with frame `i`, at its mass centre, in the frame's colour.
+        let with_frame = |i: usize, name: String, shape: Shape, opacity: f64| BodyView {
+            name,
+            shape,
+            colour: FRAME_COLOURS[i % FRAME_COLOURS.len()].to_string(),
+            orientation: Orientation::Dcm(drawing.frames[i].dcm.clone()),
+            offset: [Length::Number(0.0), Length::Number(0.0), Length::Number(0.0)],
+            opacity,
+            axis: 3,
+            turn: None,
+            position: drawing.frames[i].at.as_deref().and_then(position_of),
+        };
         for (i, frame) in drawing.frames.iter().enumerate() {
-            let taken = |n: &str| view.bodies.iter().any(|b| b.name == n);
-            view.bodies.push(BodyView {
-                name: unused(&frame.name, taken),
-                shape: Shape::Axes { length: None },
-                colour: FRAME_COLOURS[i % FRAME_COLOURS.len()].to_string(),
-                orientation: Orientation::Dcm(frame.dcm.clone()),
-                offset: [Length::Number(0.0), Length::Number(0.0), Length::Number(0.0)],
-                opacity: 1.0,
-                axis: 3,
-                position: frame.at.as_deref().and_then(position_of),
-            });
+            let name = unused(&frame.name, |n| view.bodies.iter().any(|b| b.name == n));
+            view.bodies.push(with_frame(i, name, Shape::Axes { length: None }, 1.0));
+        }
+        for body in &drawing.bodies {
+            let Some(i) = drawing.frames.iter().position(|f| f.name == body.frame) else { continue };
+            let name =
+                unused(&format!("{} (inertia)", body.name), |n| view.bodies.iter().any(|b| b.name == n));
+            let shape = Shape::Inertia { mass: body.mass.clone(), inertia: body.inertia.clone() };
+            view.bodies.push(with_frame(i, name, shape, BODY_OPACITY));
         }
         // The drawing's points under names the view's own points do not have.
         let own = self.points.clone();
@@ -58,7 +74,7 @@ fn unused(name: &str, taken: impl Fn(&str) -> bool) -> String {
 
 #[cfg(test)]
 mod tests {
-    use kane_model::spec::{DrawnFrame, DrawnPoint};
+    use kane_model::spec::{DrawnBody, DrawnFrame, DrawnPoint};
 
     use super::*;
 
@@ -81,7 +97,35 @@ mod tests {
                 DrawnPoint { name: "O".into(), position: columns("P_O_O", xyz), from: None },
                 DrawnPoint { name: "AO".into(), position: columns("P_O_AO", xyz), from: Some("O".into()) },
             ],
+            bodies: Vec::new(),
         }
+    }
+
+    /// [`drawing`] with body A (mass `MASS_A`, inertia `I_A_AO_ij`).
+    fn drawing_with_a_body() -> Drawing {
+        let inertia = columns("I_A_AO", ["11", "22", "33", "12", "23", "31"]);
+        let a = DrawnBody { name: "A".into(), frame: "A".into(), mass: "MASS_A".into(), inertia };
+        Drawing { bodies: vec![a], ..drawing() }
+    }
+
+    #[test]
+    fn a_body_is_an_ellipsoid_of_inertia_turning_with_its_frame_at_its_mass_centre() {
+        let own = ViewSpec { draw_model: true, ..ViewSpec::default() };
+        let view = own.with_drawing(&drawing_with_a_body());
+        let names: Vec<&str> = view.bodies.iter().map(|b| b.name.as_str()).collect();
+        assert_eq!(names, ["A", "C", "A (inertia)"]);
+        let (axes, body) = (&view.bodies[0], &view.bodies[2]);
+        assert_eq!(
+            (&body.orientation, &body.position, &body.colour),
+            (&axes.orientation, &axes.position, &axes.colour)
+        );
+        assert!(
+            matches!(&body.shape, Shape::Inertia { mass, inertia } if mass == "MASS_A" && inertia[3] == "I_A_AO_12")
+        );
+        assert!(body.opacity > 0.3 && body.opacity < 0.6, "the axes inside show: {}", body.opacity);
+        view.check().unwrap();
+        let read: Vec<&str> = view.columns().into_iter().map(|(_, c)| c).collect();
+        assert_eq!(read.len(), 9 + 3 + 9 + (9 + 3 + 7) + 3 + 3, "the mass and inertia are read");
     }
 
     #[test]
@@ -108,6 +152,7 @@ mod tests {
             offset: [Length::Number(0.0), Length::Number(0.0), Length::Number(0.0)],
             opacity: 1.0,
             axis: 3,
+            turn: None,
             position: None,
         };
         let point = PointView {

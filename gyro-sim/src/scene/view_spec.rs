@@ -31,8 +31,9 @@ pub struct ViewSpec {
     /// gives it).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub frame: Option<String>,
-    /// Draw the model's frames (axes at their mass centres) and points (markers joined to the
-    /// points they were located from) besides anything else given: a model file's.
+    /// Draw the model's frames (axes at their mass centres), bodies (ellipsoids of inertia) and
+    /// points (markers joined to the points they were located from) besides anything else
+    /// given: a model file's.
     #[serde(default, skip_serializing_if = "is_false")]
     pub draw_model: bool,
 }
@@ -66,6 +67,10 @@ pub struct BodyView {
     /// rotor spinning about body y is a cylinder with `axis = 2`.
     #[serde(default = "third")]
     pub axis: u8,
+    /// The shape's axes in body axes, a rotation row by row (`B_i . S_j`), in place of `axis`:
+    /// an ellipsoid of inertia's principal axes (set by [`ViewSpec::with_inertias`], not read).
+    #[serde(default, skip_deserializing, skip_serializing_if = "Option::is_none")]
+    pub turn: Option<[f64; 9]>,
 }
 
 /// A body's shape in its own axes; cylinders and rods lie along its z axis, rings about it.
@@ -115,6 +120,16 @@ pub enum Shape {
         /// most 0.3 of the drawing's size).
         #[serde(default, skip_serializing_if = "Option::is_none")]
         length: Option<Length>,
+    },
+    /// The uniform solid ellipsoid of the mass and central inertia these columns give at the
+    /// run's start: a model's default drawing of a body (an ellipsoid once the run is known,
+    /// see [`ViewSpec::with_inertias`]; not read from a scene).
+    #[serde(skip_deserializing)]
+    Inertia {
+        /// The column of the mass.
+        mass: String,
+        /// The columns of the inertia in body axes: I11, I22, I33, I12, I23, I31.
+        inertia: [String; 6],
     },
 }
 
@@ -272,6 +287,7 @@ impl ViewSpec {
             check_colour(&user, &b.colour)?;
             check_finite(&user, "offset", &numbers(&b.offset))?;
             check_shape(&user, &b.shape)?;
+            check_finite(&user, "turn", b.turn.as_ref().map_or(&[], |t| &t[..]))?;
             if !(0.0..=1.0).contains(&b.opacity) {
                 return Err(ViewError::Number {
                     user,
@@ -311,10 +327,15 @@ impl ViewSpec {
     pub fn columns(&self) -> Vec<(String, &str)> {
         let bodies = self.bodies.iter().flat_map(|b| {
             let position = b.position.iter().flatten();
+            let sizes = match &b.shape {
+                Shape::Inertia { mass, inertia } => Some(std::iter::once(mass).chain(inertia)),
+                _ => None,
+            };
             b.orientation
                 .columns()
                 .iter()
                 .chain(position)
+                .chain(sizes.into_iter().flatten())
                 .map(move |c| (format!("body {}", b.name), c.as_str()))
         });
         let arrows = self
@@ -374,6 +395,7 @@ impl Shape {
             Shape::Rod { length } => vec![length],
             Shape::Ring { radius, tube } => vec![radius, tube],
             Shape::Axes { length } => length.iter_mut().collect(),
+            Shape::Inertia { .. } => Vec::new(),
         }
     }
 }

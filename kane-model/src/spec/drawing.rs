@@ -1,7 +1,10 @@
 //! A model's default drawing: in comes a spec (its frames, points, bodies and gravity); out go
 //! outputs placing each frame and point in the Newtonian frame (direction cosines `N_F`,
-//! positions `P_O_P`) and a [`Drawing`] naming their columns, for a view that draws the model
-//! without a hand-written scene.
+//! positions `P_O_P`), each body's mass and inertia (`MASS_B`, `I_B_BO_11`, ...) and a
+//! [`Drawing`] naming their columns, for a view that draws the model without a hand-written
+//! scene.
+
+mod bodies;
 
 use rustc_hash::FxHashSet;
 
@@ -9,6 +12,8 @@ use crate::expr::ExprId;
 use crate::mechanics::{FrameId, PointId, Result, Vector};
 
 use super::{ModelSpec, OrientationForm, OutputKind};
+
+pub use bodies::DrawnBody;
 
 /// The frames and points of a model a default view draws, each with the columns placing it.
 #[derive(Clone, Debug, PartialEq)]
@@ -24,6 +29,8 @@ pub struct Drawing {
     pub frames: Vec<DrawnFrame>,
     /// The points whose position from the origin is known.
     pub points: Vec<DrawnPoint>,
+    /// The bodies with a mass and an inertia whose frame stands at their mass centre.
+    pub bodies: Vec<DrawnBody>,
 }
 
 /// A frame drawn as axes.
@@ -58,8 +65,8 @@ struct Gathered {
 
 impl ModelSpec {
     /// Adds one output placing every frame and point the model can place (columns an output
-    /// of the same name and meaning has already are read from it); `gravity` decides the
-    /// upward axis.
+    /// of the same name and meaning has already are read from it) and giving the drawn bodies'
+    /// masses and inertias; `gravity` decides the upward axis.
     pub fn add_drawing(&mut self, gravity: Option<&Vector>) -> Result<Drawing> {
         let n = self.model.newtonian();
         let newtonian = self.model.frame_name(n).to_string();
@@ -92,6 +99,7 @@ impl ModelSpec {
             let dcm = self.drawing_orientation(&mut gathered, f)?;
             frames.push(DrawnFrame { name: self.model.frame_name(f).to_string(), dcm, at });
         }
+        let bodies = self.drawing_bodies(&mut gathered, &frames);
         let points = points
             .iter()
             .map(|(p, position)| {
@@ -110,7 +118,7 @@ impl ModelSpec {
             let Gathered { columns, components, .. } = gathered;
             self.push(&name, "", OutputKind::Drawing { columns }, components);
         }
-        Ok(Drawing { newtonian, origin, up, frames, points })
+        Ok(Drawing { newtonian, origin, up, frames, points, bodies })
     }
 
     /// The root of the largest tree of position relations (the first such point on a tie).
@@ -234,21 +242,21 @@ mod tests {
         crate::lang::load("double.al", &text).unwrap().into_spec_drawn("double").unwrap()
     }
 
-    /// The values of the columns `NAME_suffix` at `q1`, `q2` and L = 1.
+    /// The values of the columns `NAME` and `NAME_suffix` at `q1`, `q2` and L = M = 1.
     fn values(spec: &ModelSpec, name: &str, q1: f64, q2: f64) -> Vec<f64> {
         let output = spec.outputs.iter().find(|o| o.name == "DRAWING").unwrap();
         let picked: Vec<ExprId> = output
             .columns()
             .iter()
             .zip(&output.components)
-            .filter(|(c, _)| c.starts_with(&format!("{name}_")))
+            .filter(|(c, _)| *c == name || c.starts_with(&format!("{name}_")))
             .map(|(_, e)| *e)
             .collect();
         let ar = &spec.model.ar;
         let value_of = |s| match ar.symbol_info(s).name.as_str() {
             "Q1" => Some(q1),
             "Q2" => Some(q2),
-            "L" => Some(1.0),
+            "L" | "M" => Some(1.0),
             _ => None,
         };
         ar.eval::<f64>(&picked, value_of).unwrap()
@@ -303,6 +311,37 @@ mod tests {
         assert_eq!(drawn("G*N1>", "").1.up, -1, "G = 9.81 pulls along +N1");
         assert_eq!(drawn("-G*N3>", "").1.up, 3);
         assert_eq!(drawn("-G*N1> - G*N2>", "").1.up, 3, "not along one axis");
+    }
+
+    #[test]
+    fn each_body_gives_its_mass_and_inertia_in_its_own_axes() {
+        let (spec, d) = drawn("-G*N2>", "");
+        let a = &d.bodies[0];
+        assert_eq!((d.bodies.len(), a.name.as_str(), a.frame.as_str()), (2, "A", "A"));
+        assert_eq!(
+            (a.mass.as_str(), a.inertia[0].as_str(), a.inertia[5].as_str()),
+            ("MASS_A", "I_A_AO_11", "I_A_AO_31")
+        );
+        let mass_and_inertia =
+            values(&spec, "MASS_B", 0.3, 0.5).into_iter().chain(values(&spec, "I_B_BO", 0.3, 0.5));
+        let hand = [1.0, 0.0, 0.0, 1.0 / 12.0, 0.0, 0.0, 0.0];
+        for (got, want) in mass_and_inertia.zip(hand) {
+            assert!((got - want).abs() < 1e-14, "{got} against {want}");
+        }
+    }
+
+    #[test]
+    fn a_body_with_products_of_inertia_gives_them_and_one_without_mass_or_moments_is_left_out() {
+        let with_products = DOUBLE
+            .replace("DOWN", "-G*N2>")
+            .replace("INERTIA B, 0, 0, M*L^2/12", "INERTIA B, 1, 2, 3, 4, 5, 6");
+        let (spec, d) = crate::lang::load("double.al", &with_products).unwrap().into_spec_drawn("d").unwrap();
+        assert_eq!(values(&spec, "I_B_BO", 0.3, 0.5), [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+        assert_eq!(d.bodies.len(), 2);
+        let massless = DOUBLE.replace("DOWN", "-G*N2>").replace("MASS A = M, B = M", "MASS A = 0, B = M");
+        let (_, d) = crate::lang::load("double.al", &massless).unwrap().into_spec_drawn("d").unwrap();
+        let names: Vec<&str> = d.bodies.iter().map(|b| b.name.as_str()).collect();
+        assert_eq!(names, ["B"]);
     }
 
     #[test]

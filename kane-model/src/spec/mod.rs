@@ -4,6 +4,7 @@
 //! ([`crate::lang::LoadedModel::into_spec`]); a Rust-API model builds one by hand.
 
 mod drawing;
+mod inertia_ellipsoid;
 mod outputs;
 
 use rustc_hash::FxHashMap;
@@ -11,7 +12,8 @@ use rustc_hash::FxHashMap;
 use crate::expr::{ExprId, SymbolId};
 use crate::mechanics::{KaneEquations, Model};
 
-pub use drawing::{Drawing, DrawnFrame, DrawnPoint};
+pub use drawing::{Drawing, DrawnBody, DrawnFrame, DrawnPoint};
+pub use inertia_ellipsoid::{inertia_ellipsoid, InertiaEllipsoid};
 pub use outputs::{OrientationForm, OutputKind, OutputSpec};
 
 /// Everything code generation needs: the equations, defaults, units and outputs of one model.

@@ -27,6 +27,15 @@ function axisTurn(axis) {
   return new THREE.Quaternion().setFromUnitVectors(new THREE.Vector3(0, 0, 1), to);
 }
 
+/** The rotation turning a shape's axes to body axes: `turn` (rows `B_i . S_j`, an ellipsoid of
+ * inertia's principal axes) when given, else its z axis to body axis `axis`. */
+function shapeTurn(body) {
+  if (!body.turn) return axisTurn(body.axis);
+  const c = body.turn;
+  const m = new THREE.Matrix4().set(c[0], c[1], c[2], 0, c[3], c[4], c[5], 0, c[6], c[7], c[8], 0, 0, 0, 0, 1);
+  return new THREE.Quaternion().setFromRotationMatrix(m);
+}
+
 /** The parameters after `?` and after `#`, the latter winning. */
 function readParams() {
   const merged = new URLSearchParams(location.search.slice(1));
@@ -298,7 +307,7 @@ function addBodies(scene) {
     const mark = spinMark(b.shape, b.colour, b.opacity);
     if (mark) mesh.add(mark);
     mesh.position.set(...b.offset);
-    mesh.quaternion.copy(axisTurn(b.axis));
+    mesh.quaternion.copy(shapeTurn(b));
     group.add(mesh);
     scene.add(group);
     return { spec: b, group };
