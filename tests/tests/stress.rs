@@ -608,6 +608,7 @@ fn a_rate_turning_nan_in_a_fixed_step_run_is_named_with_the_time_and_the_state_w
         initial: vec![0.0, 0.0],
         times: (0..=20).map(|i| 0.1 * i as f64).collect(),
         plot_times: Vec::new(),
+        dense_figures: false,
         method: Method::Fixed(&RK4, 0.01),
         max_steps: 1_000_000,
         accuracy: None,
