@@ -54,7 +54,7 @@ pub struct Problem {
     /// dense output; empty when the method has none, since extra stops would change its steps).
     pub plot_times: Vec<f64>,
     /// Whether a run whose figures are written draws them from the dense output when the
-    /// integrator stepped [`STEPS_PER_ROW_DENSE`] times or more per output row (no plot points
+    /// integrator stepped four times or more per output row (no plot points
     /// were asked for, and the method has a dense output).
     pub dense_figures: bool,
     /// The method and its tolerances or step.
