@@ -104,3 +104,63 @@ pub fn build_script(model: &str, out: &Path, options: &CodeOptions) -> Result<()
     std::fs::write(&tmp, text).map_err(io(&tmp))?;
     std::fs::rename(&tmp, out).map_err(io(out))
 }
+
+/// A model's name from its file: the stem, as an identifier (`my gimbal-2.al` -> `my_gimbal_2`).
+pub fn model_name(path: &Path) -> String {
+    let stem = path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
+    let mut name: String = stem.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
+    if name.is_empty() || name.starts_with(|c: char| c.is_ascii_digit()) {
+        name.insert_str(0, "model_");
+    }
+    name
+}
+
+/// A model file ready for standalone programs: its lowered program, run settings and CODE
+/// statements.
+pub struct StandaloneFile {
+    /// The lowered program and the file's values.
+    pub model: crate::program::ProgramModel,
+    /// What the file says about a run.
+    pub run: crate::lang::FileRun,
+    /// The file's CODE statements, in order.
+    pub requests: Vec<crate::lang::CodeRequest>,
+    /// The model file as shown.
+    pub shown: String,
+    /// An empty report on the file, for errors at its CODE statements.
+    report: crate::lang::Report,
+}
+
+impl StandaloneFile {
+    /// Checks and lowers the model file `path` (its text `source`).
+    pub fn load(path: &Path, source: &str) -> Result<StandaloneFile, BuildError> {
+        let shown = path.display().to_string();
+        let loaded = crate::lang::check_for_generation(&shown, source)?.model;
+        let run = crate::lang::FileRun::of(&loaded);
+        let requests = loaded.code.clone();
+        let report = loaded.report(&shown, Vec::new());
+        let mut spec = loaded
+            .into_spec(&model_name(path))
+            .map_err(|source| BuildError::Spec { model: shown.clone(), source })?;
+        let model = crate::program::ProgramModel::new(&mut spec)
+            .map_err(|source| BuildError::Codegen { model: shown.clone(), source })?;
+        Ok(StandaloneFile { model, run, requests, shown, report })
+    }
+
+    /// The program in `language` named `stem` (its file's stem).
+    pub fn program(
+        &self,
+        language: crate::standalone::Language,
+        stem: &str,
+    ) -> Result<String, crate::standalone::StandaloneError> {
+        let plan = crate::standalone::Plan::new(&self.model, &self.run)?;
+        let identifier = self.model.info().name.to_string();
+        let about = crate::standalone::Program { identifier, model_file: self.shown.clone() };
+        crate::standalone::write(&plan, language, stem, &about)
+    }
+
+    /// `message` (with `help`) as an error at `request`'s line, rendered.
+    pub fn error_at(&self, request: &crate::lang::CodeRequest, message: &str, help: &str) -> String {
+        let d = crate::lang::Diagnostic::error(request.span.clone(), message).with_help(help);
+        crate::lang::Report { diagnostics: vec![d], ..self.report.clone() }.render()
+    }
+}

@@ -185,7 +185,7 @@ pub fn file_defaults(scene_path: &Path, model: &str) -> crate::scene::SceneDefau
     let path = scene_path.parent().unwrap_or(Path::new(".")).join(model);
     let source = std::fs::read_to_string(&path).unwrap_or_default();
     let run = kane_model::lang::load(&path.display().to_string(), &source)
-        .map(|loaded| crate::models::file_run(&loaded))
+        .map(|loaded| FileRun::of(&loaded))
         .unwrap_or_default();
     scene_text::scene_defaults(&run)
 }

@@ -3,6 +3,7 @@
 //! the integrator); out goes the scene's TOML text (printable, so a user can save it and edit
 //! it further), each line with where it came from.
 
+use kane_model::lang::run_settings::{DEFAULT_ROWS, DEFAULT_TOLERANCE, DEFAULT_T_FINAL};
 use kane_model::runtime::ModelInfo;
 
 use super::origins::{GeneratedScene, Origin};
@@ -10,15 +11,9 @@ use super::ModelRunError;
 use crate::models::FileRun;
 use crate::scene::{IntegratorOverrides, SceneDefaults};
 
-/// End time when neither the command line nor the file's TFINAL gives one.
-const DEFAULT_T_FINAL: f64 = 10.0;
-/// Output rows when the file gives no INTEGSTP.
-const DEFAULT_ROWS: f64 = 100.0;
 /// Method when the command line gives none (Autolev's generated programs use an adaptive
 /// Runge-Kutta method of this family).
 const DEFAULT_METHOD: &str = "dop853";
-/// Tolerance when the file gives no ABSERR / RELERR.
-const DEFAULT_TOLERANCE: f64 = 1e-8;
 
 /// What the command line asks of a model-file run.
 #[derive(Clone, Debug, Default)]
@@ -65,7 +60,7 @@ pub fn scene_text(
         (None, None) => (DEFAULT_T_FINAL, Origin::File),
     };
     scene.push(format!("t_final = {}", toml_number(t_final)), from);
-    let step = file_step(run, t_final);
+    let step = run.step_within(t_final);
     let from = if step.is_some() { Origin::Input("INTEGSTP") } else { Origin::File };
     scene.push(format!("output_step = {}", toml_number(step.unwrap_or(t_final / DEFAULT_ROWS))), from);
     scene.push(format!("outputs = [{}]", outputs(run, info).join(", ")), Origin::Output);
@@ -85,28 +80,18 @@ pub fn scene_text(
 
 /// The OUTPUT names the model knows, quoted (every state when none).
 fn outputs(run: &FileRun, info: &ModelInfo) -> Vec<String> {
-    let known = |n: &str| info.state(n).is_some() || info.output(n).is_some();
-    let mut outputs: Vec<&str> = run.outputs.iter().map(String::as_str).filter(|n| known(n)).collect();
-    if outputs.is_empty() {
-        outputs = info.state_names.to_vec();
-    }
-    outputs.iter().map(|n| format!("{n:?}")).collect()
-}
-
-/// The file's INTEGSTP, when it is a step within `t_final`.
-fn file_step(run: &FileRun, t_final: f64) -> Option<f64> {
-    run.step.filter(|s| *s > 0.0 && *s <= t_final)
+    run.written(info).iter().map(|n| format!("{n:?}")).collect()
 }
 
 /// What a scene naming the model file takes where it gives no times or tolerances: the file's
 /// TFINAL, INTEGSTP, RELERR and ABSERR, else the defaults of a run without a scene.
 pub(crate) fn scene_defaults(run: &FileRun) -> SceneDefaults {
-    let t_final = run.t_final.unwrap_or(DEFAULT_T_FINAL);
+    let settings = run.settings();
     SceneDefaults {
-        t_final: Some(t_final),
-        output_step: Some(file_step(run, t_final).unwrap_or(t_final / DEFAULT_ROWS)),
-        rtol: Some(run.relerr.unwrap_or(DEFAULT_TOLERANCE)),
-        atol: Some(run.abserr.unwrap_or(DEFAULT_TOLERANCE)),
+        t_final: Some(settings.t_final),
+        output_step: Some(settings.output_step),
+        rtol: Some(settings.rtol),
+        atol: Some(settings.atol),
     }
 }
 

@@ -21,7 +21,6 @@ pub use compiled::{cache_dir, content_hash, ensure_binary, not_a_program, regist
 pub use generated::generated;
 pub use instant::{instant_file_model, InstantSystem};
 pub use jit::{jit_file_model, JitSystem};
-pub(crate) use model_file::file_run;
 pub use model_file::{source_with, FileRun, ModelFile, ModelFileError};
 pub use registry::Registry;
 

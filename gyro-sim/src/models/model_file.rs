@@ -50,20 +50,7 @@ pub enum ModelFileError {
     },
 }
 
-/// What a model file says about a run (INPUT TFINAL, INTEGSTP, ABSERR, RELERR; OUTPUT).
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct FileRun {
-    /// The final time, `TFINAL`.
-    pub t_final: Option<f64>,
-    /// `INTEGSTP`: the output step.
-    pub step: Option<f64>,
-    /// The absolute tolerance, `ABSERR`.
-    pub abserr: Option<f64>,
-    /// The relative tolerance, `RELERR`.
-    pub relerr: Option<f64>,
-    /// The OUTPUT names other than `T`, in order (without `>`).
-    pub outputs: Vec<String>,
-}
+pub use kane_model::lang::FileRun;
 
 /// A checked model file, ready to run.
 pub struct ModelFile {
@@ -147,7 +134,7 @@ impl ModelFile {
         let warnings = checked.warnings.to_string();
         let loaded = checked.model;
         let name = model_name(path);
-        let run = file_run(&loaded);
+        let run = FileRun::of(&loaded);
         let spec = match drawn {
             true => loaded.into_spec_drawn(&name).map(|(spec, drawing)| (spec, Some(Arc::new(drawing)))),
             false => loaded.into_spec(&name).map(|spec| (spec, None)),
@@ -227,33 +214,7 @@ pub fn source_with(
     Ok(source)
 }
 
-/// A model's name from its file: the stem, as an identifier (`my gimbal-2.al` -> `my_gimbal_2`).
-pub fn model_name(path: &Path) -> String {
-    let stem = path.file_stem().map(|s| s.to_string_lossy().to_string()).unwrap_or_default();
-    let mut name: String = stem.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
-    if name.is_empty() || name.starts_with(|c: char| c.is_ascii_digit()) {
-        name.insert_str(0, "model_");
-    }
-    name
-}
-
-/// The run settings a loaded file gives.
-pub(crate) fn file_run(loaded: &kane_model::lang::LoadedModel) -> FileRun {
-    let input = |n: &str| loaded.inputs.iter().find(|i| i.name.eq_ignore_ascii_case(n)).map(|i| i.value);
-    let outputs = loaded
-        .outputs
-        .iter()
-        .map(|(n, _)| n.trim_end_matches('>').to_string())
-        .filter(|n| !n.eq_ignore_ascii_case("T"))
-        .collect();
-    FileRun {
-        t_final: input("TFINAL"),
-        step: input("INTEGSTP"),
-        abserr: input("ABSERR"),
-        relerr: input("RELERR"),
-        outputs,
-    }
-}
+pub use kane_model::generate::model_name;
 
 #[cfg(test)]
 mod tests {

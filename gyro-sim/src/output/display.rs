@@ -3,6 +3,7 @@
 //! its declared unit (a model computes angles and their rates in radians). Units are this module's concern and the figures' only.
 
 use crate::problem::Trajectory;
+pub use kane_model::lang::units::column_name;
 use kane_model::lang::units::size::shown_per_internal;
 
 /// One column of results.
@@ -89,20 +90,5 @@ impl DisplayRows {
         let values = self.shown.iter().map(|k| row[k + 1]).zip(&self.scales);
         out.extend(values.map(|(v, scale)| v * scale));
         out
-    }
-}
-
-/// `q1` + `DEG` -> `q1_deg`; `AP` + `M/SEC^2` -> `ap_m_per_s2`.
-pub fn column_name(name: &str, unit: &str) -> String {
-    let slug = unit
-        .to_ascii_lowercase()
-        .replace("sec", "s")
-        .replace('/', "_per_")
-        .replace(['^', ' '], "")
-        .replace('*', "_");
-    if slug.is_empty() {
-        name.to_ascii_lowercase()
-    } else {
-        format!("{}_{slug}", name.to_ascii_lowercase())
     }
 }

@@ -1,5 +1,6 @@
 //! The `kane` command: check model files, print, evaluate and compare their equations.
 
+mod code;
 mod output;
 mod solve;
 
@@ -108,6 +109,23 @@ enum Command {
         #[arg(long)]
         drawing: bool,
     },
+    /// Write the standalone programs the file's CODE statements ask for (CODE DYNAMICS()
+    /// NAME.m, .c or .py: the rhs, its outputs and a driver that writes the OUTPUT quantities as
+    /// CSV), or with --lang one program in that language.
+    Code {
+        /// The model file.
+        file: PathBuf,
+        /// The folder the programs go to (default: the model file's).
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+        /// One program in this language (c, matlab, python) instead of the CODE statements.
+        #[arg(long = "lang", value_name = "LANGUAGE")]
+        language: Option<String>,
+        /// Where the --lang program goes (default: the model's name and the language's
+        /// extension, in the folder).
+        #[arg(short = 'o', value_name = "FILE")]
+        output: Option<PathBuf>,
+    },
     /// Check hand-derived equations (`U1' = ...` or `ZERO[1] = ...`) and quantities (V_P_A> = ...)
     /// against the derived ones, and say how they differ.
     Compare {
@@ -185,6 +203,9 @@ fn run(command: Command) -> Result<(), String> {
             stats,
             CodeOptions { taylor, taylor_orders, lanes, equation_counts: stats, drawing },
         ),
+        Command::Code { file, out, language, output } => {
+            code::code(code::CodeArgs { file, out_dir: out, language, output })
+        }
         Command::Compare { file, hand, up_to_sign } => compare(file, hand, up_to_sign),
         Command::Show { file, name, frame } => show(file, name, frame),
     }

@@ -9,6 +9,22 @@ use super::diagnostic::Diagnostic;
 use super::interp::names::edit_distance;
 use super::token::Span;
 
+/// A written column's header from a quantity's name and unit: `q1` + `DEG` -> `q1_deg`;
+/// `AP` + `M/SEC^2` -> `ap_m_per_s2`.
+pub fn column_name(name: &str, unit: &str) -> String {
+    let slug = unit
+        .to_ascii_lowercase()
+        .replace("sec", "s")
+        .replace('/', "_per_")
+        .replace(['^', ' '], "")
+        .replace('*', "_");
+    if slug.is_empty() {
+        name.to_ascii_lowercase()
+    } else {
+        format!("{}_{slug}", name.to_ascii_lowercase())
+    }
+}
+
 /// The unit names a model may use (upper-case; combine them with `*`, `/` and `^`).
 pub const KNOWN_UNITS: &[&str] = &[
     "M", "CM", "MM", "KM", "IN", "FT", "YD", "MI", // length
