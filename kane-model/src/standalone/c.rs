@@ -6,7 +6,7 @@ use crate::expr::Func;
 use crate::program::ir::Input;
 
 use super::dialect::{self, Dialect};
-use super::plan::{Plan, Source};
+use super::plan::Plan;
 use super::{comment_lines, Program};
 
 /// C's spelling.
@@ -99,27 +99,10 @@ fn functions(plan: &Plan<'_>, c: &C, name: &str) -> String {
     } else {
         out.push_str("    (void)k;\n");
     }
-    for &k in &plan.outputs {
-        let (lines, results) = dialect::print(&p.outputs[k].section, c, &format!("o{k}_"));
-        out.push_str("    {\n");
-        lines.iter().for_each(|l| out.push_str(&format!("        {l}\n")));
-        for (col, column) in plan.columns.iter().enumerate() {
-            if let Source::Output(kk, j) = column.source {
-                if kk == k {
-                    out.push_str(&format!(
-                        "        row[{col}] = {} * {};\n",
-                        results[j],
-                        dialect::shortest(column.scale)
-                    ));
-                }
-            }
-        }
-        out.push_str("    }\n");
-    }
-    for (col, column) in plan.columns.iter().enumerate() {
-        if let Source::State(i) = column.source {
-            out.push_str(&format!("    row[{col}] = y[{i}] * {};\n", dialect::shortest(column.scale)));
-        }
+    let (lines, cells) = dialect::row(plan, c);
+    lines.iter().for_each(|l| out.push_str(&format!("    {l}\n")));
+    for (col, cell) in cells.iter().enumerate() {
+        out.push_str(&format!("    row[{col}] = {cell};\n"));
     }
     out.push_str("}\n\n");
     out

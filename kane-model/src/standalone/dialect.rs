@@ -6,6 +6,8 @@
 use crate::expr::Func;
 use crate::program::ir::{Input, Op, Section};
 
+use super::plan::{Plan, Source};
+
 /// How a language spells the parts of a straight-line section.
 pub(super) trait Dialect {
     /// Reading an input of the section.
@@ -57,6 +59,31 @@ pub(super) fn print(section: &Section, dialect: &dyn Dialect, prefix: &str) -> (
         lines.push(dialect.assign(&format!("{prefix}{i}"), &value));
     }
     (lines, section.results.iter().map(|v| operand(*v)).collect())
+}
+
+/// The statements of the outputs `plan` writes and each written column's value (scaled to its
+/// unit), output `k`'s temporaries prefixed `o{k}_`.
+pub(super) fn row(plan: &Plan<'_>, dialect: &dyn Dialect) -> (Vec<String>, Vec<String>) {
+    let mut lines = Vec::new();
+    let mut cells = vec![String::new(); plan.columns.len()];
+    for &k in &plan.outputs {
+        let (statements, results) = print(&plan.program.outputs[k].section, dialect, &format!("o{k}_"));
+        lines.extend(statements);
+        for (cell, column) in cells.iter_mut().zip(&plan.columns) {
+            match column.source {
+                Source::Output(kk, j) if kk == k => {
+                    *cell = format!("{} * {}", results[j], shortest(column.scale))
+                }
+                _ => {}
+            }
+        }
+    }
+    for (cell, column) in cells.iter_mut().zip(&plan.columns) {
+        if let Source::State(i) = column.source {
+            *cell = format!("{} * {}", dialect.input(Input::State(i)), shortest(column.scale));
+        }
+    }
+    (lines, cells)
 }
 
 /// Which values the results need (the section may hold values no result reads).

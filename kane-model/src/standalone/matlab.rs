@@ -6,7 +6,7 @@ use crate::expr::Func;
 use crate::program::ir::Input;
 
 use super::dialect::{self, Dialect};
-use super::plan::{Plan, Source};
+use super::plan::Plan;
 use super::{comment_lines, Program};
 
 /// MATLAB's spelling (one-based indices).
@@ -126,31 +126,10 @@ fn functions(plan: &Plan<'_>, m: &Matlab) -> String {
         out.push_str("  dy = rhs(t, y, p, k);\n");
     }
     out.push_str(&format!("  r = zeros(1, {});\n", plan.columns.len()));
-    for &k in &plan.outputs {
-        let (lines, results) = dialect::print(&p.outputs[k].section, m, &format!("o{k}_"));
-        body(&mut out, &lines);
-        for (col, column) in plan.columns.iter().enumerate() {
-            if let Source::Output(kk, j) = column.source {
-                if kk == k {
-                    out.push_str(&format!(
-                        "  r({}) = {} * {};\n",
-                        col + 1,
-                        results[j],
-                        dialect::shortest(column.scale)
-                    ));
-                }
-            }
-        }
-    }
-    for (col, column) in plan.columns.iter().enumerate() {
-        if let Source::State(i) = column.source {
-            out.push_str(&format!(
-                "  r({}) = y({}) * {};\n",
-                col + 1,
-                i + 1,
-                dialect::shortest(column.scale)
-            ));
-        }
+    let (lines, cells) = dialect::row(plan, m);
+    body(&mut out, &lines);
+    for (col, cell) in cells.iter().enumerate() {
+        out.push_str(&format!("  r({}) = {cell};\n", col + 1));
     }
     out.push_str("end\n");
     out

@@ -6,7 +6,7 @@ use crate::expr::Func;
 use crate::program::ir::Input;
 
 use super::dialect::{self, Dialect};
-use super::plan::{Plan, Source};
+use super::plan::Plan;
 use super::{comment_lines, Program};
 
 /// Python's spelling (scalars through `math`).
@@ -119,23 +119,8 @@ fn functions(plan: &Plan<'_>, py: &Python) -> String {
     if plan.needs_rates {
         out.push_str("    dy = rhs(t, y, p, k)\n");
     }
-    let mut cells = vec![String::new(); plan.columns.len()];
-    for &k in &plan.outputs {
-        let (lines, results) = dialect::print(&p.outputs[k].section, py, &format!("o{k}_"));
-        body(&mut out, &lines);
-        for (col, column) in plan.columns.iter().enumerate() {
-            if let Source::Output(kk, j) = column.source {
-                if kk == k {
-                    cells[col] = format!("{} * {}", results[j], dialect::shortest(column.scale));
-                }
-            }
-        }
-    }
-    for (col, column) in plan.columns.iter().enumerate() {
-        if let Source::State(i) = column.source {
-            cells[col] = format!("y[{i}] * {}", dialect::shortest(column.scale));
-        }
-    }
+    let (lines, cells) = dialect::row(plan, py);
+    body(&mut out, &lines);
     out.push_str(&format!("    return [{}]\n\n\n", cells.join(", ")));
     out
 }

@@ -1,0 +1,68 @@
+//! The standalone programs `kane code` writes: their text for a pendulum (snapshots, one per
+//! language), the names CODE statements may give, and what a program is refused for.
+
+use std::path::Path;
+
+use kane_model::generate::StandaloneFile;
+use kane_model::standalone::{Language, StandaloneError};
+
+const PENDULUM: &str = "NEWTONIAN N\nBODIES A\nVARIABLES Q', U'\nCONSTANTS L, M, G\nSPECIFIED TQ\n\
+    SIMPROT(N, A, 3, Q)\nQ' = U\nW_A_N> = U*N3>\nP_NO_AO> = -L*A2>\nMASS A = M\n\
+    INERTIA A, 0, 0, M*L^2/12\nGRAVITY(-G*N2>)\nTORQUE_A> = TQ*N3>\nZERO = FR() + FRSTAR()\nKANE()\n\
+    UNITS Q = DEG, U = RAD/SEC\nINPUT L = 1, M = 1, G = 9.81, Q = 30, U = 0\n\
+    INPUT TFINAL = 2, INTEGSTP = 0.1\nOUTPUT Q, U\nCODE DYNAMICS() swing.m\n";
+
+fn pendulum() -> StandaloneFile {
+    StandaloneFile::load(Path::new("pendulum.al"), PENDULUM).unwrap()
+}
+
+#[test]
+fn the_pendulum_program_in_c() {
+    insta::assert_snapshot!(pendulum().program(Language::C, "swing").unwrap());
+}
+
+#[test]
+fn the_pendulum_program_in_matlab() {
+    insta::assert_snapshot!(pendulum().program(Language::Matlab, "swing").unwrap());
+}
+
+#[test]
+fn the_pendulum_program_in_python() {
+    insta::assert_snapshot!(pendulum().program(Language::Python, "swing").unwrap());
+}
+
+#[test]
+fn languages_come_from_extensions_in_any_case() {
+    assert_eq!(Language::of_file("PHASE3.M"), Some(Language::Matlab));
+    assert_eq!(Language::of_file("out.C"), Some(Language::C));
+    assert_eq!(Language::of_file("run.py"), Some(Language::Python));
+    assert_eq!(Language::of_file("x.f90"), None);
+    assert_eq!(Language::of_file("noextension"), None);
+    assert_eq!(Language::named("Octave"), Some(Language::Matlab));
+}
+
+#[test]
+fn the_code_request_and_the_open_input_are_kept() {
+    let file = pendulum();
+    assert_eq!(file.requests.len(), 1);
+    assert_eq!(file.requests[0].file, "swing.m");
+    let c = file.program(Language::C, "swing").unwrap();
+    assert!(c.contains("OPEN_INPUTS = \"TQ\""), "the open input is named for the warning");
+}
+
+#[test]
+fn a_matlab_program_needs_a_function_name() {
+    let e = pendulum().program(Language::Matlab, "my-swing").unwrap_err();
+    assert!(matches!(e, StandaloneError::FileName(..)), "{e}");
+}
+
+#[test]
+fn a_quaternion_output_is_refused_with_the_way_on() {
+    // Only built-in models have quaternion outputs: the heavy top's `Q`.
+    let mut spec = kane_model::models::builtin_spec("heavy_top_rust").unwrap().unwrap();
+    let model = kane_model::program::ProgramModel::new(&mut spec).unwrap();
+    let run = kane_model::lang::FileRun { outputs: vec!["Q".into()], ..Default::default() };
+    let e = kane_model::standalone::Plan::new(&model, &run).err().expect("refused");
+    assert!(matches!(e, StandaloneError::Quaternion(ref name) if name == "Q"), "{e}");
+    assert!(e.to_string().contains("direction cosines"), "{e}");
+}
