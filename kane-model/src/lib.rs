@@ -7,7 +7,7 @@
 //! - [`program`]: a spec lowered to one straight-line program, with its evaluator, Taylor
 //!   recurrences, events, faults and linearisation.
 //! - [`codegen`]: the program printed as Rust.
-//! - [`standalone`]: the program as a C, MATLAB/Octave or Python program with its own driver.
+//! - [`standalone`]: the program as a C, Fortran, MATLAB/Octave or Python program with its own driver.
 //! - `jit` (feature `jit`): the program compiled to machine code in process.
 //! - [`runtime`]: what generated code reaches (the model traits and metadata, Taylor
 //!   recurrences, dual numbers implementing `num_traits::Float`); a leaf.

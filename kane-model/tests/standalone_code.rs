@@ -27,6 +27,11 @@ fn the_pendulum_program_in_matlab() {
 }
 
 #[test]
+fn the_pendulum_program_in_fortran() {
+    insta::assert_snapshot!(pendulum().program(Language::Fortran, "swing").unwrap());
+}
+
+#[test]
 fn the_pendulum_program_in_python() {
     insta::assert_snapshot!(pendulum().program(Language::Python, "swing").unwrap());
 }
@@ -36,7 +41,9 @@ fn languages_come_from_extensions_in_any_case() {
     assert_eq!(Language::of_file("PHASE3.M"), Some(Language::Matlab));
     assert_eq!(Language::of_file("out.C"), Some(Language::C));
     assert_eq!(Language::of_file("run.py"), Some(Language::Python));
-    assert_eq!(Language::of_file("x.f90"), None);
+    assert_eq!(Language::of_file("x.f90"), Some(Language::Fortran));
+    assert_eq!(Language::of_file("X.FOR"), Some(Language::Fortran));
+    assert_eq!(Language::of_file("x.jl"), None);
     assert_eq!(Language::of_file("noextension"), None);
     assert_eq!(Language::named("Octave"), Some(Language::Matlab));
 }

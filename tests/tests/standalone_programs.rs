@@ -1,5 +1,5 @@
-//! The programs `kane code` writes, run by their real runtimes (gcc, GNU Octave, python3 with
-//! NumPy and SciPy): each writes the simulator's CSV header, and its rows match a tight `gyro-sim
+//! The programs `kane code` writes, run by their real runtimes (gcc, gfortran, GNU Octave, python3
+//! with NumPy and SciPy): each writes the simulator's CSV header, and its rows match a tight `gyro-sim
 //! run` of the same file (Verner 9(8) at 1e-13) to within the file's tolerances, on the paper's
 //! gimbal (its own CODE statement), the bicycle with its constraint solve, the four-bar loop and a
 //! 10-link chain. `tests/run` installs the runtimes.
@@ -86,6 +86,18 @@ fn c_rows(dir: &Path, model: &Path) -> Table {
     table(&dir.join("model.csv"))
 }
 
+/// The Fortran program of `model`, as fixed form (`.f`, the stricter layout), compiled with
+/// gfortran and run: its rows.
+fn fortran_rows(dir: &Path, model: &Path) -> Table {
+    let (source, exe) = (dir.join("model_f.f"), dir.join("model_f"));
+    write_program(model, "fortran", &source);
+    let mut gfortran = Command::new("gfortran");
+    gfortran.args(["-O2", "-Wall", "-o"]).arg(&exe).arg(&source);
+    succeeds(&mut gfortran, "gfortran");
+    succeeds(&mut Command::new(&exe), "the Fortran program");
+    table(&dir.join("model_f.csv"))
+}
+
 /// The Python program of `model` run by python3: its rows.
 fn python_rows(dir: &Path, model: &Path) -> Table {
     let program = dir.join("model_py.py");
@@ -116,6 +128,7 @@ fn every_language_matches(name: &str, text: &str, bound: f64) {
     let reference = reference(&dir, &model);
     for (language, rows) in [
         ("C", c_rows(&dir, &model)),
+        ("Fortran", fortran_rows(&dir, &model)),
         ("Python", python_rows(&dir, &model)),
         ("Octave", octave_rows(&dir, &model)),
     ] {

@@ -1,6 +1,6 @@
 //! Standalone programs in other languages, as Autolev's CODE statements wrote them: in comes a
 //! model's lowered program with its values and run settings (a [`Plan`]); out goes the text of
-//! a C, MATLAB/Octave or Python program that computes the model's right-hand side from the same
+//! a C, Fortran, MATLAB/Octave or Python program that computes the model's right-hand side from the same
 //! straight-line sections the simulator runs (shared subexpressions as named temporaries,
 //! solves included), integrates it from the file's INPUT values with the file's TFINAL,
 //! INTEGSTP, ABSERR and RELERR, and writes the OUTPUT quantities as a CSV with the simulator's
@@ -8,6 +8,7 @@
 
 mod c;
 mod dialect;
+mod fortran;
 mod matlab;
 mod plan;
 mod python;
@@ -25,16 +26,20 @@ pub enum Language {
     Matlab,
     /// Python with NumPy and SciPy's `solve_ivp` (`.py`).
     Python,
+    /// Fortran in the layout fixed and free form share (`.f90`, `.f`, `.for`).
+    Fortran,
 }
 
 impl Language {
     /// Every language, in the order the reference lists them.
-    pub const ALL: [Language; 3] = [Language::Matlab, Language::C, Language::Python];
+    pub const ALL: [Language; 4] = [Language::Matlab, Language::C, Language::Fortran, Language::Python];
 
     /// The language a file name's extension names (case-insensitive), if any.
     pub fn of_file(name: &str) -> Option<Language> {
         let ext = name.rsplit_once('.')?.1.to_ascii_lowercase();
-        Language::ALL.into_iter().find(|l| l.extension() == ext)
+        Language::ALL.into_iter().find(|l| {
+            l.extension() == ext || (*l == Language::Fortran && ["f", "for", "f95"].contains(&ext.as_str()))
+        })
     }
 
     /// The language named `name` (`c`, `matlab`, `m`, `python`, `py`; case-insensitive).
@@ -43,6 +48,7 @@ impl Language {
             "c" => Some(Language::C),
             "m" | "matlab" | "octave" => Some(Language::Matlab),
             "py" | "python" => Some(Language::Python),
+            "f" | "f90" | "fortran" => Some(Language::Fortran),
             _ => None,
         }
     }
@@ -53,6 +59,7 @@ impl Language {
             Language::C => "c",
             Language::Matlab => "m",
             Language::Python => "py",
+            Language::Fortran => "f90",
         }
     }
 }
@@ -115,6 +122,14 @@ pub fn write(
             matlab::program(plan, stem, about)
         }
         Language::Python => python::program(plan, stem, about),
+        Language::Fortran => {
+            if !is_identifier(stem) || stem.len() > 63 {
+                let why =
+                    "the program's name is a Fortran name: a letter then at most 62 letters, digits or _";
+                return Err(StandaloneError::FileName(stem.to_string(), "Fortran", why));
+            }
+            fortran::program(plan, stem, about)
+        }
     })
 }
 

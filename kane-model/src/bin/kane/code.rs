@@ -32,8 +32,9 @@ pub fn code(args: CodeArgs) -> Result<(), String> {
     let dir =
         args.out_dir.clone().unwrap_or_else(|| args.file.parent().unwrap_or(Path::new("")).to_path_buf());
     if let Some(name) = &args.language {
-        let language = Language::named(name)
-            .ok_or_else(|| format!("--lang {name}: not a language kane writes (c, matlab, python)"))?;
+        let language = Language::named(name).ok_or_else(|| {
+            format!("--lang {name}: not a language kane writes (c, fortran, matlab, python)")
+        })?;
         let stem = kane_model::generate::model_name(&args.file);
         let path =
             args.output.clone().unwrap_or_else(|| dir.join(format!("{stem}.{}", language.extension())));
@@ -54,7 +55,7 @@ pub fn code(args: CodeArgs) -> Result<(), String> {
     }
     if file.requests.is_empty() {
         return Err(format!(
-            "{}: the file has no CODE statement: add one (CODE DYNAMICS() NAME.m, .c or .py), or give --lang c|matlab|python",
+            "{}: the file has no CODE statement: add one (CODE DYNAMICS() NAME.m, .c, .f90 or .py), or give --lang c|fortran|matlab|python",
             args.file.display()
         ));
     }
@@ -94,17 +95,21 @@ fn request_path(
         return Err(file.error_at(
             request,
             "CODE DYNAMICS() names no file",
-            "name one: CODE DYNAMICS() NAME.m (or .c, .py)",
+            "name one: CODE DYNAMICS() NAME.m (or .c, .f90, .py)",
         ));
     }
     let language = Language::of_file(name).ok_or_else(|| {
         let message = format!("`{name}`: kane writes no program in the language this extension names");
-        file.error_at(request, &message, "name a .m (MATLAB, Octave), .c (C) or .py (Python) file")
+        file.error_at(
+            request,
+            &message,
+            "name a .m (MATLAB, Octave), .c (C), .f, .for or .f90 (Fortran) or .py (Python) file",
+        )
     })?;
     // MATLAB and Octave load only `.m`, and `.C` is C++ to compilers: the extension is written in
     // lower case.
-    let (stem, _) = name.rsplit_once('.').unwrap_or((name, ""));
-    Ok((language, dir.join(format!("{stem}.{}", language.extension()))))
+    let (stem, extension) = name.rsplit_once('.').unwrap_or((name, ""));
+    Ok((language, dir.join(format!("{stem}.{}", extension.to_ascii_lowercase()))))
 }
 
 /// Writes `language`'s program to `path`, its name the path's stem.

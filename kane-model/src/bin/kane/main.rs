@@ -110,7 +110,7 @@ enum Command {
         drawing: bool,
     },
     /// Write the standalone programs the file's CODE statements ask for (CODE DYNAMICS()
-    /// NAME.m, .c or .py: the rhs, its outputs and a driver that writes the OUTPUT quantities as
+    /// NAME.m, .c, .f90 or .py: the rhs, its outputs and a driver that writes the OUTPUT quantities as
     /// CSV), or with --lang one program in that language.
     Code {
         /// The model file.
@@ -118,7 +118,7 @@ enum Command {
         /// The folder the programs go to (default: the model file's).
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
-        /// One program in this language (c, matlab, python) instead of the CODE statements.
+        /// One program in this language (c, fortran, matlab, python) instead of the CODE statements.
         #[arg(long = "lang", value_name = "LANGUAGE")]
         language: Option<String>,
         /// Where the --lang program goes (default: the model's name and the language's

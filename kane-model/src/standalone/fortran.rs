@@ -1,0 +1,422 @@
+//! A standalone Fortran program: in comes a [`Plan`]; out goes one program unit with the
+//! model's `constants`, `rhs` and `row` as internal procedures and the same Dormand-Prince 5(4)
+//! driver as the C program's. It is laid out in the format fixed and free form share (code from
+//! column 7, lines of at most 72 columns, a continued line ending in `&` at column 73 and its
+//! continuation starting with `&` in column 6), so one text compiles as `.f`, `.for` and `.f90`.
+
+use crate::expr::Func;
+use crate::program::ir::Input;
+
+use super::dialect::{self, Dialect};
+use super::plan::Plan;
+use super::Program;
+
+/// Fortran's spelling (one-based indices, double-precision literals).
+struct Fortran {
+    n_coordinates: usize,
+}
+
+impl Dialect for Fortran {
+    fn input(&self, input: Input) -> String {
+        match input {
+            Input::Time => "t".into(),
+            Input::State(i) => format!("y({})", i + 1),
+            Input::Param(i) => format!("p({})", i + 1),
+            Input::ParamConstant(i) => format!("k({})", i + 1),
+            Input::Rate(i) => format!("dy({})", self.n_coordinates + i + 1),
+            Input::Slot(_) => self.nan(),
+        }
+    }
+    fn number(&self, x: f64) -> String {
+        double(x)
+    }
+    fn powi(&self, a: &str, k: i32) -> String {
+        format!("{a}**({k})")
+    }
+    fn powf(&self, a: &str, b: &str) -> String {
+        format!("{a}**{b}")
+    }
+    fn func(&self, f: Func, a: &str) -> String {
+        match f {
+            Func::Sign => format!("(merge(1d0, 0d0, {a} > 0d0) - merge(1d0, 0d0, {a} < 0d0))"),
+            other => format!("{}({a})", dialect::common_name(other)),
+        }
+    }
+    fn atan2(&self, a: &str, b: &str) -> String {
+        format!("atan2({a}, {b})")
+    }
+    fn assign(&self, name: &str, value: &str) -> String {
+        format!("{name} = {value}")
+    }
+    fn nan(&self) -> String {
+        "ieee_value(1d0, ieee_quiet_nan)".into()
+    }
+}
+
+/// `x` as a double-precision literal (`0.3d0`, `1d-7`).
+fn double(x: f64) -> String {
+    let s = dialect::shortest(x);
+    match s.split_once('e') {
+        Some((mantissa, exponent)) => format!("{mantissa}d{exponent}"),
+        None => format!("{s}d0"),
+    }
+}
+
+/// One statement laid out from column 7, continued over lines of at most 72 columns: broken
+/// after a space or comma outside a string where one is near the end of the line, else (inside
+/// a string, where padding would be text) at the full width.
+fn statement(out: &mut String, text: &str) {
+    const WIDTH: usize = 66;
+    let chars: Vec<char> = text.chars().collect();
+    let mut in_string = vec![false; chars.len() + 1];
+    for (i, c) in chars.iter().enumerate() {
+        in_string[i + 1] = in_string[i] != (*c == '\'');
+    }
+    let (mut start, mut first) = (0, true);
+    while start < chars.len() {
+        let lead = if first { "      " } else { "     &" };
+        first = false;
+        if chars.len() - start <= WIDTH {
+            let line: String = chars[start..].iter().collect();
+            out.push_str(format!("{lead}{line}").trim_end());
+            out.push('\n');
+            return;
+        }
+        let full = start + WIDTH;
+        let end = (start + WIDTH / 2..full)
+            .rev()
+            .find(|&i| matches!(chars[i - 1], ' ' | ',') && !in_string[i])
+            .unwrap_or(full);
+        let line: String = chars[start..end].iter().collect();
+        out.push_str(&format!("{:<72}&\n", format!("{lead}{line}")));
+        start = end;
+    }
+}
+
+/// `text` with each line that a continuation follows ended by `&` at column 73.
+fn continued(text: &str) -> String {
+    let lines: Vec<&str> = text.lines().collect();
+    let mut out = String::new();
+    for (i, line) in lines.iter().enumerate() {
+        if lines.get(i + 1).is_some_and(|next| next.starts_with("     &")) {
+            out.push_str(&format!("{line:<72}&\n"));
+        } else {
+            out.push_str(line);
+            out.push('\n');
+        }
+    }
+    out
+}
+
+/// A comment line.
+fn comment(out: &mut String, text: &str) {
+    out.push_str(format!("! {text}").trim_end());
+    out.push('\n');
+}
+
+/// The Fortran program of `plan`, its file named `stem`.
+pub(super) fn program(plan: &Plan<'_>, stem: &str, about: &Program) -> String {
+    let f = Fortran { n_coordinates: plan.info.n_coordinates };
+    let mut out = String::new();
+    for line in about.header_lines(&format!("gfortran -O2 -o {stem} {stem}.f90 && ./{stem} [OUT.csv]")) {
+        comment(&mut out, &line);
+    }
+    statement(&mut out, &format!("program {stem}"));
+    statement(&mut out, "use, intrinsic :: ieee_arithmetic");
+    statement(&mut out, "use, intrinsic :: iso_fortran_env, only: error_unit");
+    statement(&mut out, "implicit none");
+    let (ny, np) = (plan.info.state_names.len(), plan.params.len());
+    let nk = plan.program.param_constants.results.len().max(1);
+    statement(
+        &mut out,
+        &format!(
+            "integer, parameter :: ny = {ny}, np = {np}, nk = {nk}, ncol = {}",
+            plan.columns.len().max(1)
+        ),
+    );
+    values(&mut out, plan, stem);
+    out.push_str(&continued(&DRIVER.replace("STEM", stem)));
+    functions(&mut out, plan, &f);
+    statement(&mut out, &format!("end program {stem}"));
+    out
+}
+
+/// Declarations and values of the main program.
+fn values(out: &mut String, plan: &Plan<'_>, stem: &str) {
+    let info = plan.info;
+    let s = plan.settings;
+    let list = |values: &[f64]| -> String {
+        let items: Vec<String> =
+            values.iter().map(|v| if v.is_finite() { double(*v) } else { "-huge(1d0)".into() }).collect();
+        if items.is_empty() {
+            "0d0".into()
+        } else {
+            items.join(", ")
+        }
+    };
+    let names = |values: &[&str]| -> (usize, String) {
+        let width = values.iter().map(|v| v.len()).max().unwrap_or(1).max(1);
+        let items: Vec<String> = values.iter().map(|v| format!("'{v:<width$}'")).collect();
+        (width, if items.is_empty() { "' '".into() } else { items.join(", ") })
+    };
+    comment(out, "The file's INPUT values (internal units: angles in radians); -huge where it gives none.");
+    let p0 = if plan.params.is_empty() { vec![0.0] } else { plan.start_params() };
+    statement(out, &format!("real(8), parameter :: p0(max(np, 1)) = (/ {} /)", list(&p0)));
+    statement(out, &format!("real(8), parameter :: y0(ny) = (/ {} /)", list(&plan.initial)));
+    let (w, text) = names(if info.param_names.is_empty() { &[""] } else { info.param_names });
+    statement(out, &format!("character(len={w}), parameter :: p_names(max(np, 1)) = (/ {text} /)"));
+    let (w, text) = names(info.state_names);
+    statement(out, &format!("character(len={w}), parameter :: y_names(ny) = (/ {text} /)"));
+    let open: Vec<&str> = info.open_inputs.iter().map(|i| info.param_names[*i]).collect();
+    statement(out, &format!("character(len=*), parameter :: open_inputs = '{}'", open.join(", ")));
+    statement(out, &format!("character(len=*), parameter :: header = '{}'", plan.header()));
+    statement(out, &format!("character(len=*), parameter :: name = '{stem}'"));
+    statement(
+        out,
+        &format!(
+            "real(8), parameter :: t_final = {}, step = {}, rtol = {}, atol = {}",
+            double(s.t_final),
+            double(s.output_step),
+            double(s.rtol),
+            double(s.atol)
+        ),
+    );
+}
+
+/// Declares the temporaries `lines` assign, then the statements.
+fn body(out: &mut String, lines: &[String]) {
+    let names: Vec<&str> = lines.iter().filter_map(|l| l.split_once(" = ").map(|(n, _)| n)).collect();
+    for group in names.chunks(40) {
+        statement(out, &format!("real(8) :: {}", group.join(", ")));
+    }
+    lines.iter().for_each(|l| statement(out, l));
+}
+
+/// The internal procedures `constants`, `rhs` and `row`.
+fn functions(out: &mut String, plan: &Plan<'_>, f: &Fortran) {
+    let p = plan.program;
+    comment(out, "The parameter-only quantities of p (once per parameter set).");
+    statement(out, "subroutine constants(p, k)");
+    statement(out, "real(8), intent(in) :: p(:)");
+    statement(out, "real(8), intent(out) :: k(nk)");
+    let (lines, results) = dialect::print(&p.param_constants, f, "c");
+    body(out, &lines);
+    statement(out, "k = 0d0");
+    results.iter().enumerate().for_each(|(i, r)| statement(out, &format!("k({}) = {r}", i + 1)));
+    statement(out, "end subroutine constants");
+    comment(out, "dy = f(t, y): coordinates' rates, then speeds' rates; k = constants of p.");
+    statement(out, "subroutine rhs(t, y, p, k, dy)");
+    statement(out, "real(8), intent(in) :: t, y(ny), p(:), k(nk)");
+    statement(out, "real(8), intent(out) :: dy(ny)");
+    let (lines, results) = dialect::print(&p.rhs, f, "v");
+    body(out, &lines);
+    results.iter().enumerate().for_each(|(i, r)| statement(out, &format!("dy({}) = {r}", i + 1)));
+    statement(out, "end subroutine rhs");
+    comment(out, "One written row after t: each column in its unit.");
+    statement(out, "subroutine row(t, y, p, k, r)");
+    statement(out, "real(8), intent(in) :: t, y(ny), p(:), k(nk)");
+    statement(out, "real(8), intent(out) :: r(ncol)");
+    if plan.needs_rates {
+        statement(out, "real(8) :: dy(ny)");
+    }
+    let (lines, cells) = dialect::row(plan, f);
+    let names: Vec<&str> = lines.iter().filter_map(|l| l.split_once(" = ").map(|(n, _)| n)).collect();
+    for group in names.chunks(40) {
+        statement(out, &format!("real(8) :: {}", group.join(", ")));
+    }
+    if plan.needs_rates {
+        statement(out, "call rhs(t, y, p, k, dy)");
+    }
+    lines.iter().for_each(|l| statement(out, l));
+    statement(out, "r = 0d0");
+    cells.iter().enumerate().for_each(|(i, c)| statement(out, &format!("r({}) = {c}", i + 1)));
+    statement(out, "end subroutine row");
+}
+
+/// The main program's run and the integrator, with `STEM` for the program's name; lines in
+/// the shared fixed and free layout.
+const DRIVER: &str = "      real(8) :: p(max(np, 1))
+      character(len=4096) :: path
+      integer :: i
+      p = p0
+      do i = 1, np
+        if (p(i) == -huge(1d0)) then
+          write (error_unit, '(4a)') name, ': parameter ',
+     &      trim(p_names(i)),
+     &      ' has no value: give it in the INPUT and regenerate'
+          stop 2
+        end if
+      end do
+      do i = 1, ny
+        if (y0(i) == -huge(1d0)) then
+          write (error_unit, '(4a)') name, ': state ', trim(y_names(i)),
+     &      ' has no initial value: give it in the INPUT, regenerate'
+          stop 2
+        end if
+      end do
+      if (len(open_inputs) > 0) write (error_unit, '(4a)') name,
+     &  ': warning: ', open_inputs,
+     &  ' (inputs the model leaves open) are 0 in this run'
+      if (command_argument_count() > 0) then
+        call get_command_argument(1, path)
+      else
+        call get_command_argument(0, path)
+        i = index(path, '/', back=.true.)
+        path = path(1:i) // name // '.csv'
+      end if
+      if (run(trim(path)) /= 0) stop 1
+      contains
+! Integrates from 0 to t_final, writing a row at each output time
+! through a temporary file; 0 on success.
+      integer function run(path)
+      character(len=*), intent(in) :: path
+      real(8) :: k(nk), y(ny), f(ny), t, h, target
+      integer :: u, n, i, status
+      run = 1
+      call constants(p, k)
+      y = y0
+      t = 0d0
+      call rhs(t, y, p, k, f)
+      h = min(step, 1d-3 * max(t_final, 1d-300))
+      open (newunit=u, file=path // '.partial', status='replace',
+     &  action='write')
+      write (u, '(a)') header
+      if (write_row(u, t, y, k) /= 0) go to 9
+      n = int(t_final / step * (1d0 + 1d-12))
+      do i = 1, n + 1
+        target = dble(i) * step
+        if (i == n .and. abs(target - t_final) <= 1d-12 * t_final)
+     &    target = t_final
+        if (i == n + 1) then
+          if (t >= t_final) exit
+          target = t_final
+        end if
+        if (advance(t, y, f, target, h, k) /= 0) then
+          write (error_unit, '(2a,es24.16)') name,
+     &      ': the step size fell to nothing at t = ', t
+          go to 9
+        end if
+        if (write_row(u, t, y, k) /= 0) go to 9
+      end do
+      close (u)
+      call rename(path // '.partial', path, status)
+      if (status == 0) run = 0
+      return
+9     close (u, status='delete')
+      end function run
+! One CSV row; nonzero if a value is not finite.
+      integer function write_row(u, t, y, k)
+      integer, intent(in) :: u
+      real(8), intent(in) :: t, y(ny), k(nk)
+      real(8) :: r(ncol)
+      character(len=32) :: text
+      integer :: j
+      write_row = 1
+      call row(t, y, p, k, r)
+      write (text, '(es24.16e3)') t
+      write (u, '(a)', advance='no') trim(adjustl(text))
+      do j = 1, size(r)
+        if (.not. ieee_is_finite(r(j))) then
+          write (error_unit, '(2a,i0,a,es24.16)') name, ': column ',
+     &      j + 1, ' is not finite at t = ', t
+          return
+        end if
+        write (text, '(es24.16e3)') r(j)
+        write (u, '(2a)', advance='no') ',', trim(adjustl(text))
+      end do
+      write (u, '(a)') ''
+      write_row = 0
+      end function write_row
+! Integrates from t to t_end, h the step to try (updated).
+      integer function advance(t, y, f, t_end, h, k)
+      real(8), intent(inout) :: t, y(ny), f(ny), h
+      real(8), intent(in) :: t_end, k(nk)
+      real(8) :: y1(ny), f1(ny), dt, err, factor
+      advance = 1
+      do while (t < t_end)
+        dt = min(h, t_end - t)
+        if (.not. (dt > 1d-14 * max(1d0, abs(t)))) return
+        err = dopri_step(t, y, f, dt, k, y1, f1)
+        if (.not. ieee_is_finite(err)) err = 1d10
+        factor = 5d0
+        if (err > 0d0) factor = 0.9d0 * err**(-0.2d0)
+        factor = min(5d0, max(0.2d0, factor))
+        if (err <= 1d0) then
+          if (t_end - t - dt <= 1d-14 * max(1d0, abs(t_end))) then
+            t = t_end
+          else
+            t = t + dt
+          end if
+          y = y1
+          f = f1
+          if (dt == h .or. factor < 1d0) h = dt * factor
+        else
+          h = dt * min(1d0, factor)
+        end if
+      end do
+      advance = 0
+      end function advance
+! Dormand-Prince 5(4): one step of size h into y1, its error norm.
+      real(8) function dopri_step(t, y, f0, h, k, y1, f1)
+      real(8), intent(in) :: t, y(ny), f0(ny), h, k(nk)
+      real(8), intent(out) :: y1(ny), f1(ny)
+      real(8) :: a(6, 6), c(6), e(7), st(ny, 7), yi(ny), sc(ny)
+      integer :: s, j
+      a = 0d0
+      a(1, 1) = 1d0 / 5
+      a(2, 1:2) = (/ 3d0 / 40, 9d0 / 40 /)
+      a(3, 1:3) = (/ 44d0 / 45, -56d0 / 15, 32d0 / 9 /)
+      a(4, 1:4) = (/ 19372d0 / 6561, -25360d0 / 2187, 64448d0 / 6561,
+     &  -212d0 / 729 /)
+      a(5, 1:5) = (/ 9017d0 / 3168, -355d0 / 33, 46732d0 / 5247,
+     &  49d0 / 176, -5103d0 / 18656 /)
+      a(6, 1:6) = (/ 35d0 / 384, 0d0, 500d0 / 1113, 125d0 / 192,
+     &  -2187d0 / 6784, 11d0 / 84 /)
+      c = (/ 1d0 / 5, 3d0 / 10, 4d0 / 5, 8d0 / 9, 1d0, 1d0 /)
+      e = (/ 71d0 / 57600, 0d0, -71d0 / 16695, 71d0 / 1920,
+     &  -17253d0 / 339200, 22d0 / 525, -1d0 / 40 /)
+      st(:, 1) = f0
+      do s = 1, 6
+        yi = y
+        do j = 1, s
+          yi = yi + h * a(s, j) * st(:, j)
+        end do
+        call rhs(t + c(s) * h, yi, p, k, st(:, s + 1))
+      end do
+      y1 = yi
+      f1 = st(:, 7)
+      sc = atol + rtol * max(abs(y), abs(y1))
+      dopri_step = sqrt(sum((h * matmul(st, e) / sc)**2) / ny)
+      end function dopri_step
+";
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_driver_keeps_to_72_columns() {
+        for line in continued(DRIVER).lines().filter(|l| !l.starts_with('!')) {
+            let code = line.strip_suffix('&').unwrap_or(line).trim_end();
+            assert!(code.len() <= 72, "{line}");
+            assert!(!line.ends_with('&') || line.len() == 73, "`&` at column 73: {line}");
+        }
+    }
+
+    #[test]
+    fn long_statements_are_continued_inside_strings_too() {
+        let mut out = String::new();
+        let text = format!("character(len=*), parameter :: header = '{}'", "q1_deg,".repeat(30));
+        statement(&mut out, &text);
+        let lines: Vec<&str> = out.lines().collect();
+        assert!(lines.len() > 2);
+        assert!(lines[..lines.len() - 1].iter().all(|l| l.len() == 73 && l.ends_with('&')));
+        assert!(lines[1..].iter().all(|l| l.starts_with("     &")));
+        let joined: String =
+            lines.iter().map(|l| l.trim_end_matches('&').trim_start_matches("     &")).collect();
+        let squeeze = |s: &str| s.replace(' ', "");
+        assert_eq!(squeeze(&joined), squeeze(&text));
+        let literal = format!("'{}'", "q1_deg,".repeat(30));
+        assert!(joined.contains(&literal), "the string is continued without padding: {joined}");
+    }
+}
