@@ -158,6 +158,14 @@ impl StandaloneFile {
         crate::standalone::write(&plan, language, stem, &about)
     }
 
+    /// The texts of the file's FMU.
+    pub fn fmu(&self) -> Result<crate::standalone::FmuText, crate::standalone::StandaloneError> {
+        let plan = crate::standalone::Plan::new(&self.model, &self.run)?;
+        let identifier = self.model.info().name.to_string();
+        let about = crate::standalone::Program { identifier, model_file: self.shown.clone() };
+        crate::standalone::fmu(&plan, &about)
+    }
+
     /// `message` (with `help`) as an error at `request`'s line, rendered.
     pub fn error_at(&self, request: &crate::lang::CodeRequest, message: &str, help: &str) -> String {
         let d = crate::lang::Diagnostic::error(request.span.clone(), message).with_help(help);

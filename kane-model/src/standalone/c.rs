@@ -10,8 +10,9 @@ use super::plan::Plan;
 use super::{comment_lines, Program};
 
 /// C's spelling.
-struct C {
-    n_coordinates: usize,
+pub(super) struct C {
+    /// Coordinates before speeds in the state.
+    pub(super) n_coordinates: usize,
 }
 
 impl Dialect for C {
@@ -73,7 +74,7 @@ pub(super) fn program(plan: &Plan<'_>, stem: &str, about: &Program) -> String {
 }
 
 /// `NAME_constants`, `NAME_rhs` and `NAME_row`.
-fn functions(plan: &Plan<'_>, c: &C, name: &str) -> String {
+pub(super) fn functions(plan: &Plan<'_>, c: &C, name: &str) -> String {
     let p = plan.program;
     let mut out = String::new();
     let (lines, results) = dialect::print(&p.param_constants, c, "c");
@@ -159,14 +160,15 @@ fn driver(plan: &Plan<'_>, stem: &str, name: &str) -> String {
         dialect::shortest(s.rtol),
         dialect::shortest(s.atol)
     ));
-    out.push_str(&DRIVER.replace("MODEL", name).replace("STEM", stem));
+    out.push_str(&INTEGRATOR.replace("MODEL", name));
+    out.push_str(&MAIN.replace("MODEL", name).replace("STEM", stem));
     out
 }
 
-/// The integrator and `main`, with `MODEL` for the functions' prefix and `STEM` for the file's.
-const DRIVER: &str = r#"/* Dormand-Prince 5(4): one step of size h from (t, y) into y1, its error norm returned. */
+/// The integrator, with `MODEL` for the functions' prefix.
+pub(super) const INTEGRATOR: &str = r#"/* Dormand-Prince 5(4): one step of size h from (t, y) into y1, its error norm returned. */
 static double dopri_step(double t, const double y[NY], const double f0[NY], double h, const double p[NP],
-                         const double k[NK], double y1[NY], double f1[NY]) {
+                         const double k[NK], const double tol[2], double y1[NY], double f1[NY]) {
     static const double A[6][6] = {
         {1.0 / 5},
         {3.0 / 40, 9.0 / 40},
@@ -193,20 +195,21 @@ static double dopri_step(double t, const double y[NY], const double f0[NY], doub
     for (int i = 0; i < NY; i++) {
         double e = 0.0;
         for (int j = 0; j < 7; j++) e += E[j] * stages[j][i];
-        double scale = ATOL + RTOL * fmax(fabs(y[i]), fabs(y1[i]));
+        double scale = tol[1] + tol[0] * fmax(fabs(y[i]), fabs(y1[i]));
         norm += (h * e / scale) * (h * e / scale);
     }
     return NY > 0 ? sqrt(norm / NY) : 0.0;
 }
 
-/* Integrates from (t, y) to t_end, h the step to try (updated); 0 on success. */
+/* Integrates from (t, y) to t_end, f = rhs at (t, y), h the step to try (updated), tol = {rtol,
+ * atol}; 0 on success. */
 static int advance(double *t, double y[NY], double f[NY], double t_end, double *h, const double p[NP],
-                   const double k[NK]) {
+                   const double k[NK], const double tol[2]) {
     double y1[NY], f1[NY];
     while (*t < t_end) {
         double step = fmin(*h, t_end - *t);
         if (!(step > 1e-14 * fmax(1.0, fabs(*t)))) return 1;
-        double err = dopri_step(*t, y, f, step, p, k, y1, f1);
+        double err = dopri_step(*t, y, f, step, p, k, tol, y1, f1);
         if (!isfinite(err)) err = 1e10;
         double factor = err > 0.0 ? 0.9 * pow(err, -0.2) : 5.0;
         factor = fmin(5.0, fmax(0.2, factor));
@@ -221,7 +224,11 @@ static int advance(double *t, double y[NY], double f[NY], double t_end, double *
     }
     return 0;
 }
+"#;
 
+/// The CSV writer, the run and `main`, with `MODEL` for the functions' prefix and `STEM` for
+/// the file's.
+const MAIN: &str = r#"
 /* x in the fewest digits that read back as x. */
 static void put(FILE *out, double x) {
     char text[32];
@@ -251,6 +258,7 @@ static int write_row(FILE *out, double t, const double y[NY], const double p[NP]
 /* Integrates from t = 0 to T_FINAL and writes a row at every output time. */
 static int run(FILE *out, const double p[NP]) {
     double k[NK], y[NY], f[NY], t = 0.0;
+    const double tol[2] = {RTOL, ATOL};
     MODEL_constants(p, k);
     memcpy(y, Y0, sizeof y);
     MODEL_rhs(t, y, p, k, f);
@@ -265,7 +273,7 @@ static int run(FILE *out, const double p[NP]) {
             if (t >= T_FINAL) break;
             target = T_FINAL;
         }
-        if (advance(&t, y, f, target, &h, p, k)) {
+        if (advance(&t, y, f, target, &h, p, k, tol)) {
             fprintf(stderr, "STEM: the step size fell to nothing at t = %.17g: the solution is singular there\n", t);
             return 1;
         }

@@ -8,6 +8,8 @@
 
 mod c;
 mod dialect;
+mod fmi;
+mod fmu;
 mod fortran;
 mod matlab;
 mod plan;
@@ -15,6 +17,7 @@ mod python;
 
 use thiserror::Error;
 
+pub use fmu::FmuText;
 pub use plan::{Plan, Source, WrittenColumn};
 
 /// A language a standalone program is written in.
@@ -73,6 +76,9 @@ pub enum StandaloneError {
     /// The INPUT configuration does not satisfy the configuration constraints.
     #[error("the INPUT configuration cannot be assembled: {0}")]
     Assembly(String),
+    /// Parameters or states have no value (an FMU needs a start value for each).
+    #[error("no value for {0}: give it in the file's INPUT (an FMU carries a start value for every parameter and state)")]
+    NoValue(String),
     /// The program's file name is not one a language can load.
     #[error("`{0}` is not a name a {1} program can have: {2}")]
     FileName(String, &'static str, &'static str),
@@ -131,6 +137,15 @@ pub fn write(
             fortran::program(plan, stem, about)
         }
     })
+}
+
+/// The FMI 2.0 model description and C source of `plan`'s FMU.
+pub fn fmu(plan: &Plan<'_>, about: &Program) -> Result<FmuText, StandaloneError> {
+    if !is_identifier(&about.identifier) {
+        let why = "an FMU's model identifier names its C functions and library";
+        return Err(StandaloneError::FileName(about.identifier.clone(), "FMU", why));
+    }
+    fmu::fmu(plan, about)
 }
 
 /// Whether `s` is an identifier in C, MATLAB and Python alike.

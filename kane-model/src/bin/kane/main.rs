@@ -1,6 +1,7 @@
 //! The `kane` command: check model files, print, evaluate and compare their equations.
 
 mod code;
+mod fmu;
 mod output;
 mod solve;
 
@@ -126,6 +127,15 @@ enum Command {
         #[arg(short = 'o', value_name = "FILE")]
         output: Option<PathBuf>,
     },
+    /// Build the file's FMI 2.0 FMU for Model Exchange and Co-Simulation: model description,
+    /// C source and a library for this platform (the system's C compiler: CC, else cc).
+    Fmu {
+        /// The model file.
+        file: PathBuf,
+        /// The FMU to write (default: the model's name and .fmu, beside the file).
+        #[arg(short = 'o', value_name = "FILE")]
+        output: Option<PathBuf>,
+    },
     /// Check hand-derived equations (`U1' = ...` or `ZERO[1] = ...`) and quantities (V_P_A> = ...)
     /// against the derived ones, and say how they differ.
     Compare {
@@ -206,6 +216,7 @@ fn run(command: Command) -> Result<(), String> {
         Command::Code { file, out, language, output } => {
             code::code(code::CodeArgs { file, out_dir: out, language, output })
         }
+        Command::Fmu { file, output } => fmu::fmu(file, output),
         Command::Compare { file, hand, up_to_sign } => compare(file, hand, up_to_sign),
         Command::Show { file, name, frame } => show(file, name, frame),
     }
