@@ -73,3 +73,17 @@ fn a_quaternion_output_is_refused_with_the_way_on() {
     assert!(matches!(e, StandaloneError::Quaternion(ref name) if name == "Q"), "{e}");
     assert!(e.to_string().contains("direction cosines"), "{e}");
 }
+
+#[test]
+fn a_forty_link_chain_s_c_rhs_is_one_statement_per_operation_of_the_program() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../gyro-sim/tests/data/chain40_rigid.al");
+    let file = StandaloneFile::load(&path, &std::fs::read_to_string(&path).unwrap()).unwrap();
+    let c = file.program(Language::C, "chain").unwrap();
+    let body = c.split("_rhs(double t").nth(1).unwrap().split("\n}\n").next().unwrap();
+    let statements = body.lines().filter(|l| l.trim_start().starts_with("const double ")).count();
+    let operations = file.model.program().op_counts().rhs;
+    // Each statement is one operation of the program; values no result reads are left out.
+    assert!(statements <= operations, "{statements} statements for {operations} operations");
+    assert!(statements * 2 >= operations, "{statements} statements for {operations} operations");
+    eprintln!("40-link chain: {statements} C statements, {operations} lowered operations");
+}
