@@ -87,3 +87,18 @@ fn a_forty_link_chain_s_c_rhs_is_one_statement_per_operation_of_the_program() {
     assert!(statements * 2 >= operations, "{statements} statements for {operations} operations");
     eprintln!("40-link chain: {statements} C statements, {operations} lowered operations");
 }
+
+#[test]
+fn the_fmu_declares_si_units_with_the_file_s_units_for_display() {
+    let text = pendulum().fmu().unwrap();
+    let md = &text.model_description;
+    let q = md.split("name=\"Q\"").nth(1).unwrap().split("</ScalarVariable>").next().unwrap();
+    assert!(q.contains("unit=\"rad\" displayUnit=\"DEG\""), "{q}");
+    assert!(md.contains("<DisplayUnit name=\"DEG\" factor=\"57.29577951308232\"/>"), "{md}");
+    let tq = md.split("name=\"TQ\"").nth(1).unwrap().split("</ScalarVariable>").next().unwrap();
+    assert!(tq.contains("causality=\"input\""), "the open SPECIFIED input is an FMU input: {tq}");
+    assert!(text.source.contains(&format!(
+        "strcmp(guid, \"{}\")",
+        md.split("guid=\"").nth(1).unwrap().split('"').next().unwrap()
+    )));
+}

@@ -1,9 +1,11 @@
 //! An FMI 2.0 Functional Mock-up Unit for Model Exchange and Co-Simulation, as text: in comes a
 //! [`Plan`]; out go its `modelDescription.xml` and one C source (the C program's `constants`,
 //! `rhs` and outputs, its integrator for Co-Simulation's steps, and the FMI functions). The
-//! caller compiles and zips them. Values are in internal units (SI, angles in radians).
+//! caller compiles and zips them. Values are in internal units (SI, angles in radians), each
+//! with its SI unit and the file's UNITS as its display unit.
 
 use super::c::{self, C};
+use super::fmu_units::{escape, Units};
 use super::plan::{Plan, Source};
 use super::{Program, StandaloneError};
 
@@ -26,6 +28,7 @@ struct Variable {
     start: Option<f64>,
     derivative_of: Option<usize>,
     description: String,
+    unit: String,
 }
 
 /// The FMU of `plan`: parameters (open inputs as inputs), states, their derivatives and the
@@ -70,6 +73,7 @@ fn variables(plan: &Plan<'_>) -> Vec<Variable> {
             start: Some(start[i]),
             derivative_of: None,
             description: if input { "a SPECIFIED input".into() } else { "a constant".into() },
+            unit: info.param_units[i].to_string(),
         });
     }
     for (i, name) in info.state_names.iter().enumerate() {
@@ -81,6 +85,7 @@ fn variables(plan: &Plan<'_>) -> Vec<Variable> {
             start: Some(plan.initial[i]),
             derivative_of: None,
             description: if i < info.n_coordinates { "a coordinate" } else { "a speed" }.into(),
+            unit: info.state_units[i].to_string(),
         });
     }
     for (i, name) in info.state_names.iter().enumerate() {
@@ -92,6 +97,7 @@ fn variables(plan: &Plan<'_>) -> Vec<Variable> {
             start: None,
             derivative_of: Some(info.param_names.len() + i + 1),
             description: format!("the rate of {name}"),
+            unit: String::new(),
         });
     }
     for column in &plan.columns {
@@ -105,14 +111,10 @@ fn variables(plan: &Plan<'_>) -> Vec<Variable> {
             start: None,
             derivative_of: None,
             description: format!("OUTPUT {}", o.name),
+            unit: o.unit.to_string(),
         });
     }
     out
-}
-
-/// XML text with `&`, `<`, `>` and `"` escaped.
-fn escape(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 
 fn model_description(plan: &Plan<'_>, variables: &[Variable], id: &str, guid: &str) -> String {
@@ -123,6 +125,9 @@ fn model_description(plan: &Plan<'_>, variables: &[Variable], id: &str, guid: &s
     ));
     x.push_str(&format!("  <ModelExchange modelIdentifier=\"{id}\">\n    <SourceFiles><File name=\"{id}.c\"/></SourceFiles>\n  </ModelExchange>\n"));
     x.push_str(&format!("  <CoSimulation modelIdentifier=\"{id}\" canHandleVariableCommunicationStepSize=\"true\">\n    <SourceFiles><File name=\"{id}.c\"/></SourceFiles>\n  </CoSimulation>\n"));
+    let mut units = Units::default();
+    let attributes: Vec<String> = variables.iter().map(|v| units.attributes(&v.unit)).collect();
+    x.push_str(&units.definitions());
     x.push_str(&format!(
         "  <DefaultExperiment startTime=\"0\" stopTime=\"{:?}\" tolerance=\"{:?}\" stepSize=\"{:?}\"/>\n",
         s.t_final, s.rtol, s.output_step
@@ -130,7 +135,7 @@ fn model_description(plan: &Plan<'_>, variables: &[Variable], id: &str, guid: &s
     x.push_str("  <ModelVariables>\n");
     for (i, v) in variables.iter().enumerate() {
         x.push_str(&format!(
-            "    <!-- index {} -->\n    <ScalarVariable name=\"{}\" valueReference=\"{i}\" description=\"{}\" causality=\"{}\" variability=\"{}\"{}>\n      <Real{}{}/>\n    </ScalarVariable>\n",
+            "    <!-- index {} -->\n    <ScalarVariable name=\"{}\" valueReference=\"{i}\" description=\"{}\" causality=\"{}\" variability=\"{}\"{}>\n      <Real{}{}{}/>\n    </ScalarVariable>\n",
             i + 1,
             escape(&v.name),
             escape(&v.description),
@@ -139,6 +144,7 @@ fn model_description(plan: &Plan<'_>, variables: &[Variable], id: &str, guid: &s
             v.initial.map_or(String::new(), |i| format!(" initial=\"{i}\"")),
             v.start.map_or(String::new(), |s| format!(" start=\"{s:?}\"")),
             v.derivative_of.map_or(String::new(), |d| format!(" derivative=\"{d}\"")),
+            attributes[i],
         ));
     }
     x.push_str("  </ModelVariables>\n  <ModelStructure>\n");

@@ -10,6 +10,7 @@ mod c;
 mod dialect;
 mod fmi;
 mod fmu;
+mod fmu_units;
 mod fortran;
 mod matlab;
 mod plan;
