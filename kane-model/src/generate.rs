@@ -153,17 +153,19 @@ impl StandaloneFile {
         stem: &str,
     ) -> Result<String, crate::standalone::StandaloneError> {
         let plan = crate::standalone::Plan::new(&self.model, &self.run)?;
-        let identifier = self.model.info().name.to_string();
-        let about = crate::standalone::Program { identifier, model_file: self.shown.clone() };
-        crate::standalone::write(&plan, language, stem, &about)
+        crate::standalone::write(&plan, language, stem, &self.about())
     }
 
     /// The texts of the file's FMU.
     pub fn fmu(&self) -> Result<crate::standalone::FmuText, crate::standalone::StandaloneError> {
         let plan = crate::standalone::Plan::new(&self.model, &self.run)?;
+        crate::standalone::fmu(&plan, &self.about())
+    }
+
+    /// What a program says about itself: the model's name and file.
+    fn about(&self) -> crate::standalone::Program {
         let identifier = self.model.info().name.to_string();
-        let about = crate::standalone::Program { identifier, model_file: self.shown.clone() };
-        crate::standalone::fmu(&plan, &about)
+        crate::standalone::Program { identifier, model_file: self.shown.clone() }
     }
 
     /// `message` (with `help`) as an error at `request`'s line, rendered.

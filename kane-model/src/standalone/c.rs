@@ -17,14 +17,7 @@ pub(super) struct C {
 
 impl Dialect for C {
     fn input(&self, input: Input) -> String {
-        match input {
-            Input::Time => "t".into(),
-            Input::State(i) => format!("y[{i}]"),
-            Input::Param(i) => format!("p[{i}]"),
-            Input::ParamConstant(i) => format!("k[{i}]"),
-            Input::Rate(i) => format!("dy[{}]", self.n_coordinates + i),
-            Input::Slot(_) => "NAN".into(),
-        }
+        dialect::array_read(input, self.n_coordinates, 0, ("[", "]"), "NAN")
     }
     fn number(&self, x: f64) -> String {
         dialect::shortest(x)

@@ -134,6 +134,26 @@ pub(super) fn shortest(x: f64) -> String {
     }
 }
 
+/// Reading `input` from the arrays `t`, `y`, `p`, `k` and `dy` (the speeds' rates after the
+/// `n_coordinates` coordinates' rates), indexed from `base` (0 or 1) as `open`/`close` spell it.
+pub(super) fn array_read(
+    input: Input,
+    n_coordinates: usize,
+    base: usize,
+    brackets: (&str, &str),
+    nan: &str,
+) -> String {
+    let (open, close) = brackets;
+    match input {
+        Input::Time => "t".into(),
+        Input::State(i) => format!("y{open}{}{close}", i + base),
+        Input::Param(i) => format!("p{open}{}{close}", i + base),
+        Input::ParamConstant(i) => format!("k{open}{}{close}", i + base),
+        Input::Rate(i) => format!("dy{open}{}{close}", n_coordinates + i + base),
+        Input::Slot(_) => nan.into(),
+    }
+}
+
 /// A C-family power with an integer exponent: a product for a square, a quotient for `-1`,
 /// else `pow`.
 pub(super) fn powi_by_pow(a: &str, k: i32, pow: &str) -> String {

@@ -41,16 +41,7 @@ pub(super) fn fmu(plan: &Plan<'_>, about: &Program) -> Result<FmuText, Standalon
     let outputs: Vec<_> =
         plan.columns.iter().filter(|c| matches!(c.source, Source::Output(..))).cloned().collect();
     let internal = outputs.iter().map(|c| super::WrittenColumn { scale: 1.0, ..c.clone() }).collect();
-    let fmu_plan = Plan {
-        info: plan.info,
-        program: plan.program,
-        params: plan.params.clone(),
-        initial: plan.initial.clone(),
-        settings: plan.settings,
-        columns: internal,
-        outputs: plan.outputs.clone(),
-        needs_rates: plan.needs_rates,
-    };
+    let fmu_plan = Plan { columns: internal, ..plan.clone() };
     let variables = variables(&fmu_plan);
     let description = model_description(&fmu_plan, &variables, &about.identifier, "GUID");
     let guid = guid(&description);

@@ -16,14 +16,7 @@ struct Matlab {
 
 impl Dialect for Matlab {
     fn input(&self, input: Input) -> String {
-        match input {
-            Input::Time => "t".into(),
-            Input::State(i) => format!("y({})", i + 1),
-            Input::Param(i) => format!("p({})", i + 1),
-            Input::ParamConstant(i) => format!("k({})", i + 1),
-            Input::Rate(i) => format!("dy({})", self.n_coordinates + i + 1),
-            Input::Slot(_) => "NaN".into(),
-        }
+        dialect::array_read(input, self.n_coordinates, 1, ("(", ")"), "NaN")
     }
     fn number(&self, x: f64) -> String {
         dialect::shortest(x)

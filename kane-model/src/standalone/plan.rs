@@ -32,6 +32,7 @@ pub struct WrittenColumn {
 }
 
 /// A model's program and everything a standalone run of it needs.
+#[derive(Clone)]
 pub struct Plan<'a> {
     /// The model's metadata (names and units).
     pub info: &'static ModelInfo,

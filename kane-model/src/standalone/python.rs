@@ -16,14 +16,7 @@ struct Python {
 
 impl Dialect for Python {
     fn input(&self, input: Input) -> String {
-        match input {
-            Input::Time => "t".into(),
-            Input::State(i) => format!("y[{i}]"),
-            Input::Param(i) => format!("p[{i}]"),
-            Input::ParamConstant(i) => format!("k[{i}]"),
-            Input::Rate(i) => format!("dy[{}]", self.n_coordinates + i),
-            Input::Slot(_) => "nan".into(),
-        }
+        dialect::array_read(input, self.n_coordinates, 0, ("[", "]"), "nan")
     }
     fn number(&self, x: f64) -> String {
         dialect::shortest(x)
