@@ -115,19 +115,74 @@ pub fn model_name(path: &Path) -> String {
     name
 }
 
-/// A model file ready for standalone programs: its lowered program, run settings and CODE
-/// statements.
+/// A model file's CODE statements, with the systems CODE ALGEBRAIC and CODE NONLINEAR ask
+/// for ready for their programs (the dynamics are lowered only by [`StandaloneFile`]).
+pub struct CodeFile {
+    /// The file's CODE statements, in order.
+    pub requests: Vec<crate::lang::CodeRequest>,
+    /// The model file as shown.
+    pub shown: String,
+    /// Each request's system plan (or why there is none); `None` for a request without one.
+    systems: Vec<Option<Result<crate::standalone::SystemPlan, String>>>,
+    /// What a system's program says about itself.
+    about: crate::standalone::Program,
+    /// An empty report on the file, for errors at its CODE statements.
+    report: crate::lang::Report,
+}
+
+impl CodeFile {
+    /// Checks the model file `path` (its text `source`) and plans its systems.
+    pub fn load(path: &Path, source: &str) -> Result<CodeFile, BuildError> {
+        let shown = path.display().to_string();
+        let mut loaded = crate::lang::check_for_generation(&shown, source)?.model;
+        let requests = loaded.code.clone();
+        let report = loaded.report(&shown, Vec::new());
+        let names: Vec<String> = loaded.model.ar.symbols().map(|(_, info)| info.name.clone()).collect();
+        let values: Vec<Option<f64>> = names.iter().map(|n| loaded.input(n)).collect();
+        let value_of = |s: crate::expr::SymbolId| values.get(s.index()).copied().flatten();
+        let systems = requests
+            .iter()
+            .map(|r| {
+                r.system.as_ref().map(|system| {
+                    crate::standalone::SystemPlan::new(&mut loaded.model.ar, system, &value_of)
+                        .map_err(|e| e.to_string())
+                })
+            })
+            .collect();
+        let about = crate::standalone::Program { identifier: model_name(path), model_file: shown.clone() };
+        Ok(CodeFile { requests, shown, systems, about, report })
+    }
+
+    /// The program of request `i`'s system in `language`, named `stem`; `None` when the request
+    /// has no system (CODE DYNAMICS, CODE ALGEBRAIC()).
+    pub fn system_program(
+        &self,
+        i: usize,
+        language: crate::standalone::Language,
+        stem: &str,
+    ) -> Option<Result<String, String>> {
+        let plan = self.systems.get(i)?.as_ref()?;
+        Some(plan.as_ref().map_err(String::clone).and_then(|plan| {
+            crate::standalone::write_system(plan, language, stem, &self.about).map_err(|e| e.to_string())
+        }))
+    }
+
+    /// `message` (with `help`) as an error at `request`'s line, rendered.
+    pub fn error_at(&self, request: &crate::lang::CodeRequest, message: &str, help: &str) -> String {
+        let d = crate::lang::Diagnostic::error(request.span.clone(), message).with_help(help);
+        crate::lang::Report { diagnostics: vec![d], ..self.report.clone() }.render()
+    }
+}
+
+/// A model file ready for standalone programs of its dynamics: its lowered program and run
+/// settings.
 pub struct StandaloneFile {
     /// The lowered program and the file's values.
     pub model: crate::program::ProgramModel,
     /// What the file says about a run.
     pub run: crate::lang::FileRun,
-    /// The file's CODE statements, in order.
-    pub requests: Vec<crate::lang::CodeRequest>,
     /// The model file as shown.
     pub shown: String,
-    /// An empty report on the file, for errors at its CODE statements.
-    report: crate::lang::Report,
 }
 
 impl StandaloneFile {
@@ -136,14 +191,12 @@ impl StandaloneFile {
         let shown = path.display().to_string();
         let loaded = crate::lang::check_for_generation(&shown, source)?.model;
         let run = crate::lang::FileRun::of(&loaded);
-        let requests = loaded.code.clone();
-        let report = loaded.report(&shown, Vec::new());
         let mut spec = loaded
             .into_spec(&model_name(path))
             .map_err(|source| BuildError::Spec { model: shown.clone(), source })?;
         let model = crate::program::ProgramModel::new(&mut spec)
             .map_err(|source| BuildError::Codegen { model: shown.clone(), source })?;
-        Ok(StandaloneFile { model, run, requests, shown, report })
+        Ok(StandaloneFile { model, run, shown })
     }
 
     /// The program in `language` named `stem` (its file's stem).
@@ -153,6 +206,17 @@ impl StandaloneFile {
         stem: &str,
     ) -> Result<String, crate::standalone::StandaloneError> {
         let plan = crate::standalone::Plan::new(&self.model, &self.run)?;
+        crate::standalone::write(&plan, language, stem, &self.about())
+    }
+
+    /// The program in `language` named `stem` that evaluates the OUTPUT quantities once, at
+    /// the file's INPUT values (what `CODE ALGEBRAIC()` asks for).
+    pub fn outputs_program(
+        &self,
+        language: crate::standalone::Language,
+        stem: &str,
+    ) -> Result<String, crate::standalone::StandaloneError> {
+        let plan = crate::standalone::Plan::new(&self.model, &self.run)?.at_start();
         crate::standalone::write(&plan, language, stem, &self.about())
     }
 
@@ -166,11 +230,5 @@ impl StandaloneFile {
     fn about(&self) -> crate::standalone::Program {
         let identifier = self.model.info().name.to_string();
         crate::standalone::Program { identifier, model_file: self.shown.clone() }
-    }
-
-    /// `message` (with `help`) as an error at `request`'s line, rendered.
-    pub fn error_at(&self, request: &crate::lang::CodeRequest, message: &str, help: &str) -> String {
-        let d = crate::lang::Diagnostic::error(request.span.clone(), message).with_help(help);
-        crate::lang::Report { diagnostics: vec![d], ..self.report.clone() }.render()
     }
 }

@@ -1,9 +1,10 @@
-//! The standalone programs `kane code` writes: their text for a pendulum (snapshots, one per
-//! language), the names CODE statements may give, and what a program is refused for.
+//! The standalone programs `kane code` writes: their text for a pendulum and for a linear and a
+//! nonlinear system (snapshots), the names CODE statements may give, and what a program is
+//! refused for.
 
 use std::path::Path;
 
-use kane_model::generate::StandaloneFile;
+use kane_model::generate::{CodeFile, StandaloneFile};
 use kane_model::standalone::{Language, StandaloneError};
 
 const PENDULUM: &str = "NEWTONIAN N\nBODIES A\nVARIABLES Q', U'\nCONSTANTS L, M, G\nSPECIFIED TQ\n\
@@ -36,6 +37,41 @@ fn the_pendulum_program_in_python() {
     insta::assert_snapshot!(pendulum().program(Language::Python, "swing").unwrap());
 }
 
+const SYSTEMS: &str = "CONSTANTS A, B, R\nVARIABLES X, Y\nEQN[1] = A*X + B*Y - R\nEQN[2] = X - Y\n\
+    NL[1] = A*X^3 + B*Y^2 - R\nNL[2] = A*SIN(X)^2 + B*COS(2*Y) - R^2\n\
+    INPUT A = 2, B = 3, R = 1, X = 30 DEG, Y = 3.14\n\
+    CODE ALGEBRAIC(EQN, X, Y) lin.c\nCODE NONLINEAR(NL, X, Y) nl.c\n";
+
+fn system_program(i: usize, language: Language) -> String {
+    let code = CodeFile::load(Path::new("systems.al"), SYSTEMS).unwrap();
+    code.system_program(i, language, "solve").unwrap().unwrap()
+}
+
+#[test]
+fn the_linear_system_program_in_c() {
+    insta::assert_snapshot!(system_program(0, Language::C));
+}
+
+#[test]
+fn the_nonlinear_system_program_in_every_language() {
+    for language in Language::ALL {
+        insta::assert_snapshot!(format!("nonlinear_{}", language.extension()), system_program(1, language));
+    }
+}
+
+#[test]
+fn the_outputs_program_evaluates_once_and_says_so() {
+    let c = pendulum().outputs_program(Language::C, "at_start").unwrap();
+    assert!(c.contains("evaluates them once") && c.contains("T_FINAL = 0.0"), "{c}");
+}
+
+#[test]
+fn a_file_without_equations_of_motion_writes_no_dynamics_program() {
+    let file = StandaloneFile::load(Path::new("systems.al"), SYSTEMS).unwrap();
+    let refused = file.outputs_program(Language::C, "x");
+    assert!(matches!(refused, Err(StandaloneError::NoDynamics)), "{refused:?}");
+}
+
 #[test]
 fn languages_come_from_extensions_in_any_case() {
     assert_eq!(Language::of_file("PHASE3.M"), Some(Language::Matlab));
@@ -50,10 +86,11 @@ fn languages_come_from_extensions_in_any_case() {
 
 #[test]
 fn the_code_request_and_the_open_input_are_kept() {
-    let file = pendulum();
-    assert_eq!(file.requests.len(), 1);
-    assert_eq!(file.requests[0].file, "swing.m");
-    let c = file.program(Language::C, "swing").unwrap();
+    let code = CodeFile::load(Path::new("pendulum.al"), PENDULUM).unwrap();
+    assert_eq!(code.requests.len(), 1);
+    assert_eq!(code.requests[0].file, "swing.m");
+    assert!(code.system_program(0, Language::C, "swing").is_none(), "CODE DYNAMICS() has no system");
+    let c = pendulum().program(Language::C, "swing").unwrap();
     assert!(c.contains("OPEN_INPUTS = \"TQ\""), "the open input is named for the warning");
 }
 

@@ -3,6 +3,7 @@
 //! and runs against reference trajectories.
 
 pub mod bins;
+pub mod runtimes;
 
 use kane_model::expr::{Arena, ExprId};
 use kane_model::mechanics::KaneEquations;

@@ -7,18 +7,10 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use kane_tests::bins;
+use kane_tests::runtimes::{self, succeeds};
 
 fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("kane-fmu-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn succeeds(cmd: &mut Command, what: &str) {
-    let out = cmd.output().unwrap_or_else(|e| panic!("{what}: cannot start ({e}); tests/run installs it"));
-    let (stdout, stderr) = (String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
-    assert!(out.status.success(), "{what} failed:\n{stdout}\n{stderr}");
+    runtimes::scratch("kane-fmu", name)
 }
 
 /// A CSV's header and columns.

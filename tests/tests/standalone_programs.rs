@@ -8,39 +8,14 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use kane_tests::bins;
+use kane_tests::runtimes::{self, gcc, gfortran, octave, succeeds, table, Table};
 
 fn models_dir() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../kane-model/models")
 }
 
-/// A fresh folder of this test's own.
 fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("kane-standalone-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-/// Runs `cmd`, panicking with its output when it fails.
-fn succeeds(cmd: &mut Command, what: &str) -> String {
-    let out = cmd.output().unwrap_or_else(|e| panic!("{what}: cannot start ({e}); tests/run installs it"));
-    let (stdout, stderr) = (String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
-    assert!(out.status.success(), "{what} failed:\n{stdout}\n{stderr}");
-    format!("{stdout}{stderr}")
-}
-
-/// A CSV's header and rows.
-struct Table {
-    header: Vec<String>,
-    rows: Vec<Vec<f64>>,
-}
-
-fn table(path: &Path) -> Table {
-    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let mut lines = text.lines();
-    let header = lines.next().unwrap().split(',').map(str::to_string).collect();
-    let rows = lines.map(|l| l.split(',').map(|v| v.parse::<f64>().unwrap()).collect()).collect();
-    Table { header, rows }
+    runtimes::scratch("kane-standalone", name)
 }
 
 /// The worst column's largest difference from `reference`, relative to 1 + that column's
@@ -79,9 +54,7 @@ fn write_program(model: &Path, language: &str, program: &Path) {
 fn c_rows(dir: &Path, model: &Path) -> Table {
     let (source, exe) = (dir.join("model.c"), dir.join("model_c"));
     write_program(model, "c", &source);
-    let mut gcc = Command::new("gcc");
-    gcc.args(["-std=c99", "-O2", "-Wall", "-Wextra", "-Werror", "-o"]).arg(&exe).arg(&source).arg("-lm");
-    succeeds(&mut gcc, "gcc");
+    gcc(&source, &exe);
     succeeds(&mut Command::new(&exe), "the C program");
     table(&dir.join("model.csv"))
 }
@@ -91,9 +64,7 @@ fn c_rows(dir: &Path, model: &Path) -> Table {
 fn fortran_rows(dir: &Path, model: &Path) -> Table {
     let (source, exe) = (dir.join("model_f.f"), dir.join("model_f"));
     write_program(model, "fortran", &source);
-    let mut gfortran = Command::new("gfortran");
-    gfortran.args(["-O2", "-Wall", "-o"]).arg(&exe).arg(&source);
-    succeeds(&mut gfortran, "gfortran");
+    gfortran(&source, &exe);
     succeeds(&mut Command::new(&exe), "the Fortran program");
     table(&dir.join("model_f.csv"))
 }
@@ -111,13 +82,6 @@ fn octave_rows(dir: &Path, model: &Path) -> Table {
     write_program(model, "matlab", &dir.join("model_m.m"));
     octave(dir, "model_m");
     table(&dir.join("model_m.csv"))
-}
-
-/// `octave-cli --eval NAME` in `dir` (its own home folder).
-fn octave(dir: &Path, name: &str) -> String {
-    let mut cmd = Command::new("octave-cli");
-    cmd.args(["--quiet", "--norc", "--no-history", "--eval", name]).current_dir(dir).env("HOME", dir);
-    succeeds(&mut cmd, "GNU Octave")
 }
 
 /// Every language's rows of the model file `text` (named `name`) within `bound` of the reference.
@@ -222,7 +186,8 @@ fn code_statements_it_cannot_write_are_errors_at_their_line() {
     for (line, says) in [
         ("CODE DYNAMICS() PHASE3.M, FAST", "CODE option `FAST`"),
         ("CODE DYNAMICS() PHASE3.XYZ", "PHASE3.XYZ"),
-        ("CODE ALGEBRAIC() OUT.C", "CODE ALGEBRAIC() programs are not written yet"),
+        ("CODE ODE() OUT.C", "CODE ODE() programs are not written"),
+        ("CODE ALGEBRAIC()", "CODE ALGEBRAIC() names no file"),
     ] {
         let model = dir.join("g.al");
         std::fs::write(&model, format!("{base}{line}\n")).unwrap();

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The rhs of the programs `kane code` writes, timed per call at each model's INPUT state in its
-# own runtime (C by gcc -O2, Python 3 with NumPy, GNU Octave), beside the Rust rhs the simulator
+# own runtime (C by gcc -O2, Fortran by gfortran -O2, Python 3 with NumPy, GNU Octave), beside the Rust rhs the simulator
 # compiles (criterion's `rhs_call/*/compiled` of gyro-sim's engines bench), the runtimes taking
 # turns, three rounds. Prints one line per model, language and round: nanoseconds per call.
-# Usage: kane-model/benches/standalone/rhs_per_call.sh [WORK_DIR]   (needs gcc, python3, octave-cli)
+# Usage: kane-model/benches/standalone/rhs_per_call.sh [WORK_DIR]   (needs gcc, gfortran, python3, octave-cli)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 work=${1:-$(mktemp -d)}
@@ -15,6 +15,7 @@ models="gimbal=kane-model/models/gimbal_gyroscope.al bicycle=kane-model/models/w
 for entry in $models; do
   name=${entry%%=*}; file=${entry#*=}
   $kane code "$file" --lang c -o "$work/$name.c" >/dev/null
+  $kane code "$file" --lang fortran -o "$work/${name}_f.f90" >/dev/null
   $kane code "$file" --lang python -o "$work/${name}_py.py" >/dev/null
   $kane code "$file" --lang matlab -o "$work/${name}_m.m" >/dev/null
   id=$(grep -o 'void [a-z0-9_]*_rhs' "$work/$name.c" | head -1 | sed 's/void //; s/_rhs$//')
@@ -50,6 +51,34 @@ k = m.constants(m.P0)
 n, t = timeit.Timer(lambda: m.rhs(0.0, m.Y0, m.P0, k)).autorange()
 print(f"{t / n * 1e9:.1f}")
 PY
+  # Fortran: the program's declarations and its constants and rhs under a main program that
+  # times rhs as the C loop does.
+  python3 - "$work" "$name" <<'PY'
+import sys
+work, name = sys.argv[1], sys.argv[2]
+text = open(f"{work}/{name}_f.f90").read()
+head = text[:text.index("      real(8) :: p(max(np, 1))")]
+procedures = text[text.index("! The parameter-only quantities of p"):text.index("! One written row after t")]
+main = """      real(8) :: k(nk), y(ny), dy(ny), sink
+      integer(8) :: n, i, c0, c1, rate
+      call constants(p0, k)
+      y = y0
+      sink = 0d0
+      n = 2000000000_8 / (ny * 50 + 1000)
+      call system_clock(c0, rate)
+      do i = 1, n
+        call rhs(0d0, y, p0, k, dy)
+        y(ny) = y(ny) + 1d-300 * dy(ny)
+        sink = sink + dy(1)
+      end do
+      call system_clock(c1)
+      write (*, '(f0.1)') dble(c1 - c0) / dble(rate) * 1d9 / dble(n)
+     &  + 0d0 * sink
+      contains
+"""
+open(f"{work}/{name}_ftime.f", "w").write(head + main + procedures + f"      end program {name}_f\n")
+PY
+  gfortran -O2 -o "$work/${name}_ftime" "$work/${name}_ftime.f"
   # Octave: the program's subfunctions under a main function that times rhs.
   python3 - "$work" "$name" <<'PY'
 import re, sys
@@ -79,6 +108,7 @@ for round in 1 2 3; do
   for entry in $models; do
     name=${entry%%=*}
     echo "$name C round $round: $("$work/${name}_time") ns"
+    echo "$name Fortran round $round: $("$work/${name}_ftime") ns"
     echo "$name Python round $round: $(python3 "$work/${name}_time.py") ns"
     echo "$name Octave round $round: $(cd "$work" && octave-cli --quiet --norc --eval "${name}_time;" 2>/dev/null) ns"
     ns=$(cargo bench -q -p gyro-sim --bench engines -- "rhs_call/$name/compiled\$" --warm-up-time 1 --measurement-time 2 2>/dev/null \

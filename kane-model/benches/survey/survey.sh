@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Public research Autolev files, run as written: `kane check`, `kane gen` and a 1 s `gyro-sim run`
-# of each file listed in manifest.tsv (repository, commit, path, blob), with the first error of
-# each that fails. Not part of the build or the tests; needs git and the network to fetch.
+# Public research Autolev files, run as written: `kane check`, `kane gen`, a 1 s `gyro-sim run`
+# and `kane code` (the file's CODE statements, each C program written compiled by cc) of each
+# file listed in manifest.tsv (repository, commit, path, blob), with the first error of each that
+# fails. Not part of the build or the tests; needs git and the network to fetch.
 #
 # usage: kane-model/benches/survey/survey.sh [CACHE] [KIND]
 #   CACHE  where repositories are fetched (default: ~/.cache/kane-survey)
@@ -9,7 +10,8 @@
 #   KANE and GYRO_SIM in the environment: the binaries to survey (default: built here, release)
 #   SURVEY_SOURCE in the environment: where OWNER/NAME repositories are fetched from (default:
 #   https://github.com; a folder of local clones laid out OWNER/NAME works too)
-# Writes CACHE/results.tsv (path, check, gen, run, first error) and prints the counts.
+# Writes CACHE/results.tsv (path, check, gen, run, code, first error) and prints the counts;
+# CACHE/code.tsv has one line per CODE statement (path, statement, written, compiled, error).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../../.." && pwd)"
@@ -33,8 +35,30 @@ checkout() {
   echo "$dir"
 }
 
+# One line per CODE statement of file $2 (shown as $1) into code.tsv: whether its program was
+# written into $3.code, and, for a C program, whether cc compiles it.
+survey_code_statements() {
+  local shown=$1 file=$2 log=$3 line name written compiled reason
+  grep -iE '^[[:space:]]*CODE[[:space:]]' "$file" | tr -d '\r' | while read -r line; do
+    name=$(printf '%s' "$line" | sed -E 's/^[^)]*\)[[:space:]]*//; s/[,[:space:]%].*//')
+    name="${name%.*}.$(printf '%s' "${name##*.}" | tr '[:upper:]' '[:lower:]')"
+    written=no; compiled=-; reason=""
+    if [ -f "$log.code/$name" ]; then
+      written=yes
+      case "$name" in
+        *.c) compiled=no; cc -std=c99 -O0 -o "$log.code/${name%.c}" "$log.code/$name" -lm 2>/dev/null && compiled=yes ;;
+      esac
+    else
+      reason=$(grep -m1 -E '×|error' "$log.codelog" 2>/dev/null | cut -c1-160 || true)
+    fi
+    printf '%s\t%s\t%s\t%s\t%s\n' "$shown" "$line" "$written" "$compiled" "$reason" >> "$statements"
+  done
+}
+
 results="$cache/results.tsv"
-printf 'file\tcheck\tgen\trun\terror\n' > "$results"
+printf 'file\tcheck\tgen\trun\tcode\terror\n' > "$results"
+statements="$cache/code.tsv"
+printf 'file\tstatement\twritten\tcompiled\terror\n' > "$statements"
 tail -n +2 "$here/manifest.tsv" | while IFS=$'\t' read -r repo commit path blob what _models; do
   [ "$kind" = all ] || [ "$what" = "$kind" ] || continue
   dir=$(checkout "$repo" "$commit")
@@ -47,7 +71,7 @@ tail -n +2 "$here/manifest.tsv" | while IFS=$'\t' read -r repo commit path blob 
   fi
   got=$(git hash-object "$file" 2>/dev/null || echo missing)
   if [ "$got" != "$blob" ]; then
-    printf '%s:%s\t-\t-\t-\tnot surveyed: blob %s, the manifest has %s\n' "$repo" "$path" "$got" "$blob" >> "$results"
+    printf '%s:%s\t-\t-\t-\t-\tnot surveyed: blob %s, the manifest has %s\n' "$repo" "$path" "$got" "$blob" >> "$results"
     continue
   fi
   key=$(printf '%s' "$repo/$path" | md5sum | cut -c1-10)
@@ -62,9 +86,18 @@ tail -n +2 "$here/manifest.tsv" | while IFS=$'\t' read -r repo commit path blob 
         > "$log.runlog" 2>&1 || run=$?
     fi
   fi
-  error=$(cat "$log.check" "$log.gen" "$log.runlog" 2>/dev/null | grep -m1 -E '×|error' | sed "s|$dir/||" | cut -c1-200 || true)
-  printf '%s:%s\t%s\t%s\t%s\t%s\n' "$repo" "$path" "$check" "$gen" "$run" "$error" >> "$results"
+  code=-
+  if [ "$check" = 0 ] && grep -qiE '^[[:space:]]*CODE[[:space:]]' "$file"; then
+    code=0; rm -rf "$log.code"; mkdir -p "$log.code"
+    timeout 300 "$kane" code "$file" --out "$log.code" > "$log.codelog" 2>&1 || code=$?
+    survey_code_statements "$repo:$path" "$file" "$log"
+  fi
+  error=$(cat "$log.check" "$log.gen" "$log.runlog" "$log.codelog" 2>/dev/null | grep -m1 -E '×|error' | sed "s|$dir/||" | cut -c1-200 || true)
+  printf '%s:%s\t%s\t%s\t%s\t%s\t%s\n' "$repo" "$path" "$check" "$gen" "$run" "$code" "$error" >> "$results"
 done
 awk -F'\t' 'NR > 1 && $2 != "-" {n++; if ($2 == 0) c++; if ($3 == 0) g++; if ($4 == 0) r++}
   END {printf "%d files: check %d (%.0f %%), gen %d (%.0f %%), 1 s run %d (%.0f %%)\n", n, c, 100*c/n, g, 100*g/n, r, 100*r/n}' "$results"
+awk -F'\t' 'NR > 1 {n++; if ($3 == "yes") w++; if ($4 == "yes") c++; if ($4 != "-") cc++}
+  END {printf "%d CODE statements: %d programs written (%.0f %%), %d of %d C programs compiled\n", n, w, 100*w/(n ? n : 1), c, cc}' "$statements"
 echo "results: $results"
+echo "CODE statements: $statements"

@@ -18,7 +18,7 @@ pub const MAX_ITERATIONS: usize = 50;
 /// A Jacobian whose reciprocal condition number is below this is singular.
 const SINGULAR_RCOND: f64 = 1e-14;
 /// Converged when the largest residual is below this times the residual scale.
-const TOLERANCE: f64 = 1e-13;
+pub const TOLERANCE: f64 = 1e-13;
 
 /// Linear (CODE ALGEBRAIC) or not (CODE NONLINEAR).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -52,7 +52,7 @@ pub(super) fn program(plan: &Plan<'_>, stem: &str, about: &Program) -> String {
     let name = about.identifier.as_str();
     let mut out = String::new();
     out.push_str(&comment_lines(
-        &about.header_lines(&format!("cc -O2 -o {stem} {stem}.c -lm")),
+        &about.header_lines(&format!("cc -O2 -o {stem} {stem}.c -lm"), plan.once),
         "/* ",
         " * ",
         " */",
@@ -110,7 +110,7 @@ fn push_body(out: &mut String, lines: &[String], results: &[String], into: &str)
 }
 
 /// A C array literal of `values` (NAN where not finite).
-fn array(values: &[f64]) -> String {
+pub(super) fn array(values: &[f64]) -> String {
     if values.is_empty() {
         return "{ 0.0 }".into();
     }
@@ -120,7 +120,7 @@ fn array(values: &[f64]) -> String {
 }
 
 /// A C array literal of strings.
-fn strings(values: &[&str]) -> String {
+pub(super) fn strings(values: &[&str]) -> String {
     if values.is_empty() {
         return "{ \"\" }".into();
     }
@@ -154,7 +154,9 @@ fn driver(plan: &Plan<'_>, stem: &str, name: &str) -> String {
         dialect::shortest(s.atol)
     ));
     out.push_str(&INTEGRATOR.replace("MODEL", name));
-    out.push_str(&MAIN.replace("MODEL", name).replace("STEM", stem));
+    out.push_str(
+        &MAIN.replace("    /* OPEN_OUTPUT */\n", OPEN_OUTPUT).replace("MODEL", name).replace("STEM", stem),
+    );
     out
 }
 
@@ -221,6 +223,24 @@ static int advance(double *t, double y[NY], double f[NY], double t_end, double *
 
 /// The CSV writer, the run and `main`, with `MODEL` for the functions' prefix and `STEM` for
 /// the file's.
+/// The lines of `main` that open `OUT.csv.partial` as `out` (default: STEM.csv beside the
+/// program), or return 1.
+pub(super) const OPEN_OUTPUT: &str = r#"    char path[4096], tmp[4200];
+    if (argc > 1) {
+        snprintf(path, sizeof path, "%s", argv[1]);
+    } else {
+        const char *slash = strrchr(argv[0], '/');
+        int dir = slash ? (int)(slash - argv[0]) + 1 : 0;
+        snprintf(path, sizeof path, "%.*sSTEM.csv", dir, argv[0]);
+    }
+    snprintf(tmp, sizeof tmp, "%s.partial", path);
+    FILE *out = fopen(tmp, "w");
+    if (!out) {
+        perror(tmp);
+        return 1;
+    }
+"#;
+
 const MAIN: &str = r#"
 /* x in the fewest digits that read back as x. */
 static void put(FILE *out, double x) {
@@ -290,20 +310,7 @@ int main(int argc, char **argv) {
             return 2;
         }
     if (OPEN_INPUTS[0]) fprintf(stderr, "STEM: warning: %s (inputs the model leaves open) are 0 in this run\n", OPEN_INPUTS);
-    char path[4096], tmp[4200];
-    if (argc > 1) {
-        snprintf(path, sizeof path, "%s", argv[1]);
-    } else {
-        const char *slash = strrchr(argv[0], '/');
-        int dir = slash ? (int)(slash - argv[0]) + 1 : 0;
-        snprintf(path, sizeof path, "%.*sSTEM.csv", dir, argv[0]);
-    }
-    snprintf(tmp, sizeof tmp, "%s.partial", path);
-    FILE *out = fopen(tmp, "w");
-    if (!out) {
-        perror(tmp);
-        return 1;
-    }
+    /* OPEN_OUTPUT */
     int failed = run(out, P0);
     failed |= fclose(out) != 0;
     if (failed || rename(tmp, path) != 0) {

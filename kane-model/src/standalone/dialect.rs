@@ -72,7 +72,7 @@ pub(super) fn row(plan: &Plan<'_>, dialect: &dyn Dialect) -> (Vec<String>, Vec<S
         for (cell, column) in cells.iter_mut().zip(&plan.columns) {
             match column.source {
                 Source::Output(kk, j) if kk == k => {
-                    *cell = format!("{} * {}", results[j], shortest(column.scale))
+                    *cell = format!("{} * {}", results[j], dialect.number(column.scale))
                 }
                 _ => {}
             }
@@ -80,7 +80,7 @@ pub(super) fn row(plan: &Plan<'_>, dialect: &dyn Dialect) -> (Vec<String>, Vec<S
     }
     for (cell, column) in cells.iter_mut().zip(&plan.columns) {
         if let Source::State(i) = column.source {
-            *cell = format!("{} * {}", dialect.input(Input::State(i)), shortest(column.scale));
+            *cell = format!("{} * {}", dialect.input(Input::State(i)), dialect.number(column.scale));
         }
     }
     (lines, cells)

@@ -12,8 +12,9 @@ use super::plan::Plan;
 use super::Program;
 
 /// Fortran's spelling (one-based indices, double-precision literals).
-struct Fortran {
-    n_coordinates: usize,
+pub(super) struct Fortran {
+    /// Coordinates before speeds in the state.
+    pub(super) n_coordinates: usize,
 }
 
 impl Dialect for Fortran {
@@ -47,7 +48,7 @@ impl Dialect for Fortran {
 }
 
 /// `x` as a double-precision literal (`0.3d0`, `1d-7`).
-fn double(x: f64) -> String {
+pub(super) fn double(x: f64) -> String {
     let s = dialect::shortest(x);
     match s.split_once('e') {
         Some((mantissa, exponent)) => format!("{mantissa}d{exponent}"),
@@ -58,7 +59,7 @@ fn double(x: f64) -> String {
 /// One statement laid out from column 7, continued over lines of at most 72 columns: broken
 /// after a space or comma outside a string where one is near the end of the line, else (inside
 /// a string, where padding would be text) at the full width.
-fn statement(out: &mut String, text: &str) {
+pub(super) fn statement(out: &mut String, text: &str) {
     const WIDTH: usize = 66;
     let chars: Vec<char> = text.chars().collect();
     let mut in_string = vec![false; chars.len() + 1];
@@ -87,7 +88,7 @@ fn statement(out: &mut String, text: &str) {
 }
 
 /// `text` with each line that a continuation follows ended by `&` at column 73.
-fn continued(text: &str) -> String {
+pub(super) fn continued(text: &str) -> String {
     let lines: Vec<&str> = text.lines().collect();
     let mut out = String::new();
     for (i, line) in lines.iter().enumerate() {
@@ -102,7 +103,7 @@ fn continued(text: &str) -> String {
 }
 
 /// A comment line.
-fn comment(out: &mut String, text: &str) {
+pub(super) fn comment(out: &mut String, text: &str) {
     out.push_str(format!("! {text}").trim_end());
     out.push('\n');
 }
@@ -111,7 +112,9 @@ fn comment(out: &mut String, text: &str) {
 pub(super) fn program(plan: &Plan<'_>, stem: &str, about: &Program) -> String {
     let f = Fortran { n_coordinates: plan.info.n_coordinates };
     let mut out = String::new();
-    for line in about.header_lines(&format!("gfortran -O2 -o {stem} {stem}.f90 && ./{stem} [OUT.csv]")) {
+    for line in
+        about.header_lines(&format!("gfortran -O2 -o {stem} {stem}.f90 && ./{stem} [OUT.csv]"), plan.once)
+    {
         comment(&mut out, &line);
     }
     statement(&mut out, &format!("program {stem}"));
@@ -134,28 +137,32 @@ pub(super) fn program(plan: &Plan<'_>, stem: &str, about: &Program) -> String {
     out
 }
 
+/// The items of an array constructor of `values` (-huge where not finite).
+pub(super) fn reals(values: &[f64]) -> String {
+    let items: Vec<String> =
+        values.iter().map(|v| if v.is_finite() { double(*v) } else { "-huge(1d0)".into() }).collect();
+    if items.is_empty() {
+        "0d0".into()
+    } else {
+        items.join(", ")
+    }
+}
+
+/// The length and the items of a character array constructor of `values`, padded to one length.
+pub(super) fn names(values: &[&str]) -> (usize, String) {
+    let width = values.iter().map(|v| v.len()).max().unwrap_or(1).max(1);
+    let items: Vec<String> = values.iter().map(|v| format!("'{v:<width$}'")).collect();
+    (width, if items.is_empty() { "' '".into() } else { items.join(", ") })
+}
+
 /// Declarations and values of the main program.
 fn values(out: &mut String, plan: &Plan<'_>, stem: &str) {
     let info = plan.info;
     let s = plan.settings;
-    let list = |values: &[f64]| -> String {
-        let items: Vec<String> =
-            values.iter().map(|v| if v.is_finite() { double(*v) } else { "-huge(1d0)".into() }).collect();
-        if items.is_empty() {
-            "0d0".into()
-        } else {
-            items.join(", ")
-        }
-    };
-    let names = |values: &[&str]| -> (usize, String) {
-        let width = values.iter().map(|v| v.len()).max().unwrap_or(1).max(1);
-        let items: Vec<String> = values.iter().map(|v| format!("'{v:<width$}'")).collect();
-        (width, if items.is_empty() { "' '".into() } else { items.join(", ") })
-    };
     comment(out, "The file's INPUT values (internal units: angles in radians); -huge where it gives none.");
     let p0 = if plan.params.is_empty() { vec![0.0] } else { plan.start_params() };
-    statement(out, &format!("real(8), parameter :: p0(max(np, 1)) = (/ {} /)", list(&p0)));
-    statement(out, &format!("real(8), parameter :: y0(ny) = (/ {} /)", list(&plan.initial)));
+    statement(out, &format!("real(8), parameter :: p0(max(np, 1)) = (/ {} /)", reals(&p0)));
+    statement(out, &format!("real(8), parameter :: y0(ny) = (/ {} /)", reals(&plan.initial)));
     let (w, text) = names(if info.param_names.is_empty() { &[""] } else { info.param_names });
     statement(out, &format!("character(len={w}), parameter :: p_names(max(np, 1)) = (/ {text} /)"));
     let (w, text) = names(info.state_names);
@@ -177,7 +184,7 @@ fn values(out: &mut String, plan: &Plan<'_>, stem: &str) {
 }
 
 /// Declares the temporaries `lines` assign, then the statements.
-fn body(out: &mut String, lines: &[String]) {
+pub(super) fn body(out: &mut String, lines: &[String]) {
     let names: Vec<&str> = lines.iter().filter_map(|l| l.split_once(" = ").map(|(n, _)| n)).collect();
     for group in names.chunks(40) {
         statement(out, &format!("real(8) :: {}", group.join(", ")));
@@ -383,17 +390,23 @@ const DRIVER: &str = "      real(8) :: p(max(np, 1))
       end function dopri_step
 ";
 
+/// Panics unless every code line of `text` ends by column 72 and a continued one has `&` at 73.
+#[cfg(test)]
+pub(super) fn assert_shared_form(text: &str) {
+    for line in text.lines().filter(|l| !l.starts_with('!')) {
+        let code = line.strip_suffix('&').unwrap_or(line).trim_end();
+        assert!(code.len() <= 72, "{line}");
+        assert!(!line.ends_with('&') || line.len() == 73, "`&` at column 73: {line}");
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn the_driver_keeps_to_72_columns() {
-        for line in continued(DRIVER).lines().filter(|l| !l.starts_with('!')) {
-            let code = line.strip_suffix('&').unwrap_or(line).trim_end();
-            assert!(code.len() <= 72, "{line}");
-            assert!(!line.ends_with('&') || line.len() == 73, "`&` at column 73: {line}");
-        }
+        assert_shared_form(&continued(DRIVER));
     }
 
     #[test]

@@ -10,8 +10,9 @@ use super::plan::Plan;
 use super::{comment_lines, Program};
 
 /// MATLAB's spelling (one-based indices).
-struct Matlab {
-    n_coordinates: usize,
+pub(super) struct Matlab {
+    /// Coordinates before speeds in the state.
+    pub(super) n_coordinates: usize,
 }
 
 impl Dialect for Matlab {
@@ -50,19 +51,21 @@ pub(super) fn program(plan: &Plan<'_>, stem: &str, about: &Program) -> String {
     let mut out = format!("function {stem}(out)\n");
     let run =
         format!("{stem}() in MATLAB or Octave writes {stem}.csv beside this file; {stem}(OUT) writes OUT.");
-    out.push_str(&comment_lines(&about.header_lines(&run), "% ", "% ", ""));
+    out.push_str(&comment_lines(&about.header_lines(&run, plan.once), "% ", "% ", ""));
     out.push_str(&main_body(plan, stem));
     out.push_str(&functions(plan, &m));
     out
 }
 
-fn vector(values: &[f64]) -> String {
+/// A MATLAB column vector of `values` (NaN where not finite).
+pub(super) fn vector(values: &[f64]) -> String {
     let items: Vec<String> =
         values.iter().map(|v| if v.is_finite() { dialect::shortest(*v) } else { "NaN".into() }).collect();
     format!("[{}]'", items.join("; "))
 }
 
-fn names(values: &[&str]) -> String {
+/// A MATLAB cell array of strings.
+pub(super) fn names(values: &[&str]) -> String {
     let items: Vec<String> = values.iter().map(|v| format!("'{v}'")).collect();
     format!("{{{}}}", items.join(", "))
 }
@@ -84,7 +87,7 @@ fn main_body(plan: &Plan<'_>, stem: &str) -> String {
         dialect::shortest(s.rtol),
         dialect::shortest(s.atol)
     ));
-    out.push_str(&MAIN.replace("STEM", stem));
+    out.push_str(&MAIN.replace("% OPEN_OUTPUT\n", OPEN_OUTPUT).replace("STEM", stem));
     out
 }
 
@@ -129,6 +132,15 @@ fn functions(plan: &Plan<'_>, m: &Matlab) -> String {
 }
 
 /// The checks, the integration and the CSV, with `STEM` for the program's name.
+/// The lines that open `out.partial` as `fid` and write the header, or stop.
+pub(super) const OPEN_OUTPUT: &str = r#"tmp = [out, '.partial'];
+fid = fopen(tmp, 'w');
+if fid < 0
+  error('STEM: %s cannot be written', tmp);
+end
+fprintf(fid, '%s\n', header);
+"#;
+
 const MAIN: &str = r#"for i = 1:numel(p)
   if isnan(p(i))
     error('STEM: parameter %s has no value: give it in the model file''s INPUT and regenerate', p_names{i});
@@ -154,25 +166,25 @@ else
   times(end) = t_final;
 end
 k = constants(p);
-% ode45 returns every step for a span of two times: ask for the middle too, and drop it.
-span = times;
-if numel(span) == 2
-  span = [times(1), mean(times), times(2)];
+if numel(times) == 1
+  % A run of length 0: the row at the INPUT values.
+  ys = y0(:)';
+else
+  % ode45 returns every step for a span of two times: ask for the middle too, and drop it.
+  span = times;
+  if numel(span) == 2
+    span = [times(1), mean(times), times(2)];
+  end
+  options = odeset('RelTol', rtol, 'AbsTol', atol);
+  [ts, ys] = ode45(@(t, y) rhs(t, y, p, k), span, y0, options);
+  if numel(span) == 3 && numel(times) == 2
+    ts = ts([1, 3]); ys = ys([1, 3], :);
+  end
+  if numel(ts) ~= numel(times)
+    error('STEM: the integration stopped at t = %.17g', ts(end));
+  end
 end
-options = odeset('RelTol', rtol, 'AbsTol', atol);
-[ts, ys] = ode45(@(t, y) rhs(t, y, p, k), span, y0, options);
-if numel(span) == 3 && numel(times) == 2
-  ts = ts([1, 3]); ys = ys([1, 3], :);
-end
-if numel(ts) ~= numel(times)
-  error('STEM: the integration stopped at t = %.17g', ts(end));
-end
-tmp = [out, '.partial'];
-fid = fopen(tmp, 'w');
-if fid < 0
-  error('STEM: %s cannot be written', tmp);
-end
-fprintf(fid, '%s\n', header);
+% OPEN_OUTPUT
 for i = 1:numel(times)
   r = row(times(i), ys(i, :)', p, k);
   bad = find(~isfinite(r), 1);

@@ -51,6 +51,8 @@ pub struct Plan<'a> {
     pub outputs: Vec<usize>,
     /// Whether a written output reads the speed rates.
     pub needs_rates: bool,
+    /// Whether the program evaluates the row at the INPUT values only (no integration).
+    pub once: bool,
 }
 
 impl<'a> Plan<'a> {
@@ -58,6 +60,9 @@ impl<'a> Plan<'a> {
     /// standalone program computes (a quaternion) or a configuration that cannot be assembled.
     pub fn new(model: &'a ProgramModel, run: &FileRun) -> Result<Plan<'a>, StandaloneError> {
         let info = model.info();
+        if info.state_names.is_empty() {
+            return Err(StandaloneError::NoDynamics);
+        }
         let params = model.default_params();
         let mut initial = model.initial_state();
         if initial.iter().all(|v| v.is_finite()) && params.iter().all(|v| v.is_finite()) {
@@ -92,7 +97,24 @@ impl<'a> Plan<'a> {
         }
         let needs_rates = outputs.iter().any(|k| info.outputs[*k].needs_rates);
         let settings = run.settings();
-        Ok(Plan { info, program: model.program(), params, initial, settings, columns, outputs, needs_rates })
+        Ok(Plan {
+            info,
+            program: model.program(),
+            params,
+            initial,
+            settings,
+            columns,
+            outputs,
+            needs_rates,
+            once: false,
+        })
+    }
+
+    /// The plan of a program that writes the row at the INPUT values only: a run of length 0.
+    pub fn at_start(mut self) -> Plan<'a> {
+        self.settings.t_final = 0.0;
+        self.once = true;
+        self
     }
 
     /// The names of the parameters and states without a value, and not open inputs.

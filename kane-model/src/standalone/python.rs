@@ -10,8 +10,9 @@ use super::plan::Plan;
 use super::{comment_lines, Program};
 
 /// Python's spelling (scalars through `math`).
-struct Python {
-    n_coordinates: usize,
+pub(super) struct Python {
+    /// Coordinates before speeds in the state.
+    pub(super) n_coordinates: usize,
 }
 
 impl Dialect for Python {
@@ -48,24 +49,36 @@ impl Dialect for Python {
     }
 }
 
+/// The modules every program imports (then SciPy's part it uses).
+pub(super) const IMPORTS: &str = "import math\nimport os\nimport sys\nfrom math import (acos, asin, atan, atan2, cos, cosh, exp, log, nan, sin, sinh, sqrt,\n                  tan, tanh)\n\nimport numpy as np\n";
+
 /// The Python program of `plan`, its file named `stem`.
 pub(super) fn program(plan: &Plan<'_>, stem: &str, about: &Program) -> String {
     let py = Python { n_coordinates: plan.info.n_coordinates };
-    let mut out = comment_lines(&about.header_lines(&format!("python3 {stem}.py [OUT.csv]")), "# ", "# ", "");
-    out.push_str("import math\nimport os\nimport sys\nfrom math import (acos, asin, atan, atan2, cos, cosh, exp, log, nan, sin, sinh, sqrt,\n                  tan, tanh)\n\nimport numpy as np\nfrom scipy.integrate import solve_ivp\n\n");
+    let mut out = comment_lines(
+        &about.header_lines(&format!("python3 {stem}.py [OUT.csv]"), plan.once),
+        "# ",
+        "# ",
+        "",
+    );
+    out.push_str(IMPORTS);
+    out.push_str("from scipy.integrate import solve_ivp\n\n");
     out.push_str(&values(plan, stem));
     out.push_str(&functions(plan, &py));
     out.push_str(&MAIN.replace("STEM", stem));
+    out.push_str(CLOSE_OUTPUT);
     out
 }
 
-fn list(values: &[f64]) -> String {
+/// A Python list of `values` (nan where not finite).
+pub(super) fn list(values: &[f64]) -> String {
     let items: Vec<String> =
         values.iter().map(|v| if v.is_finite() { dialect::shortest(*v) } else { "nan".into() }).collect();
     format!("[{}]", items.join(", "))
 }
 
-fn names(values: &[&str]) -> String {
+/// A Python list of strings.
+pub(super) fn names(values: &[&str]) -> String {
     let items: Vec<String> = values.iter().map(|v| format!("{v:?}")).collect();
     format!("[{}]", items.join(", "))
 }
@@ -90,7 +103,8 @@ fn values(plan: &Plan<'_>, stem: &str) -> String {
     out
 }
 
-fn body(out: &mut String, lines: &[String]) {
+/// The statements, indented as a function body.
+pub(super) fn body(out: &mut String, lines: &[String]) {
     lines.iter().for_each(|l| out.push_str(&format!("    {l}\n")));
 }
 
@@ -143,21 +157,27 @@ def main(argv):
     p = P0
     k = constants(p)
     times = output_times()
-    sol = solve_ivp(lambda t, y: rhs(t, y, p, k), (0.0, T_FINAL), np.array(Y0, dtype=float), method="DOP853",
-                    t_eval=times, rtol=RTOL, atol=ATOL)
-    if not sol.success:
-        sys.exit(f"{NAME}: the integration stopped at t = {sol.t[-1] if len(sol.t) else 0.0}: {sol.message}")
+    ys = np.array(Y0, dtype=float).reshape(-1, 1)
+    if len(times) > 1:
+        sol = solve_ivp(lambda t, y: rhs(t, y, p, k), (0.0, T_FINAL), ys[:, 0], method="DOP853", t_eval=times,
+                        rtol=RTOL, atol=ATOL)
+        if not sol.success:
+            sys.exit(f"{NAME}: the integration stopped at t = {sol.t[-1] if len(sol.t) else 0.0}: {sol.message}")
+        ys = sol.y
     tmp = path + ".partial"
     try:
         with open(tmp, "w") as out:
             out.write(HEADER + "\n")
             for i, t in enumerate(times):
-                values = row(t, sol.y[:, i], p, k)
+                values = row(t, ys[:, i], p, k)
                 bad = [j for j, v in enumerate(values) if not math.isfinite(v)]
                 if bad:
                     raise ValueError(f"column {bad[0] + 2} of the row at t = {t!r} is not finite")
                 out.write(",".join(repr(float(v)) for v in [t] + values) + "\n")
-        os.replace(tmp, path)
+"#;
+
+/// The end of `main`: `tmp` renamed to `path`, or removed and the run stopped; the entry point.
+pub(super) const CLOSE_OUTPUT: &str = r#"        os.replace(tmp, path)
     except (OSError, ValueError) as e:
         if os.path.exists(tmp):
             os.remove(tmp)

@@ -3,9 +3,9 @@
 
 use std::path::{Path, PathBuf};
 
-use kane_model::generate::{BuildError, StandaloneFile};
+use kane_model::generate::{BuildError, CodeFile, StandaloneFile};
 use kane_model::lang::CodeRequest;
-use kane_model::standalone::Language;
+use kane_model::standalone::{Language, StandaloneError};
 
 use super::output::outln;
 use super::{read, write_output};
@@ -25,10 +25,6 @@ pub struct CodeArgs {
 /// Runs `kane code`.
 pub fn code(args: CodeArgs) -> Result<(), String> {
     let source = read(&args.file)?;
-    let file = StandaloneFile::load(&args.file, &source).map_err(|e| match e {
-        BuildError::Model(report) => report.render(),
-        other => other.to_string(),
-    })?;
     let dir =
         args.out_dir.clone().unwrap_or_else(|| args.file.parent().unwrap_or(Path::new("")).to_path_buf());
     if let Some(name) = &args.language {
@@ -38,39 +34,62 @@ pub fn code(args: CodeArgs) -> Result<(), String> {
         let stem = kane_model::generate::model_name(&args.file);
         let path =
             args.output.clone().unwrap_or_else(|| dir.join(format!("{stem}.{}", language.extension())));
-        return write_program(&file, language, &path);
+        let file = StandaloneFile::load(&args.file, &source).map_err(rendered)?;
+        return write_program(&path, |stem| file.program(language, stem).map_err(|e| failed(&file, e)));
     }
     if args.output.is_some() {
         return Err("-o names the file of the program --lang asks for: give --lang too".into());
     }
-    let mut failures = Vec::new();
-    let mut written = 0;
-    for request in &file.requests {
-        match request_path(&file, request, &dir)
-            .and_then(|(language, path)| write_program(&file, language, &path))
-        {
-            Ok(()) => written += 1,
-            Err(e) => failures.push(e),
-        }
-    }
-    if file.requests.is_empty() {
+    let code = CodeFile::load(&args.file, &source).map_err(rendered)?;
+    if code.requests.is_empty() {
         return Err(format!(
             "{}: the file has no CODE statement: add one (CODE DYNAMICS() NAME.m, .c, .f90 or .py), or give --lang c|fortran|matlab|python",
             args.file.display()
         ));
     }
+    let mut dynamics: Option<Result<StandaloneFile, String>> = None;
+    let mut failures = Vec::new();
+    for (i, request) in code.requests.iter().enumerate() {
+        let written = request_path(&code, request, &dir).and_then(|(language, path)| {
+            write_program(&path, |stem| {
+                if let Some(text) = code.system_program(i, language, stem) {
+                    return text.map_err(|e| format!("{}: CODE {}: {e}", code.shown, request.kind));
+                }
+                let file = dynamics
+                    .get_or_insert_with(|| StandaloneFile::load(&args.file, &source).map_err(rendered))
+                    .as_ref()
+                    .map_err(String::clone)?;
+                let text = match request.kind.as_str() {
+                    "DYNAMICS" => file.program(language, stem),
+                    _ => file.outputs_program(language, stem),
+                };
+                text.map_err(|e| failed(file, e))
+            })
+        });
+        if let Err(e) = written {
+            failures.push(e);
+        }
+    }
     if failures.is_empty() {
         return Ok(());
     }
-    Err(format!("{}\n{written} of {} CODE statements written", failures.join("\n"), file.requests.len()))
+    let written = code.requests.len() - failures.len();
+    Err(format!("{}\n{written} of {} CODE statements written", failures.join("\n"), code.requests.len()))
+}
+
+fn rendered(e: BuildError) -> String {
+    match e {
+        BuildError::Model(report) => report.render(),
+        other => other.to_string(),
+    }
+}
+
+fn failed(file: &StandaloneFile, e: StandaloneError) -> String {
+    format!("{}: {e}", file.shown)
 }
 
 /// The language and path of the program `request` asks for, or why it writes none.
-fn request_path(
-    file: &StandaloneFile,
-    request: &CodeRequest,
-    dir: &Path,
-) -> Result<(Language, PathBuf), String> {
+fn request_path(file: &CodeFile, request: &CodeRequest, dir: &Path) -> Result<(Language, PathBuf), String> {
     let mut parts = request.file.split(',').map(str::trim);
     let name = parts.next().unwrap_or("");
     for option in parts {
@@ -83,20 +102,18 @@ fn request_path(
             ));
         }
     }
-    if request.kind != "DYNAMICS" {
-        let message = format!("CODE {}() programs are not written yet", request.kind);
+    if !["DYNAMICS", "ALGEBRAIC", "NONLINEAR"].contains(&request.kind.as_str()) {
+        let message = format!("CODE {}() programs are not written", request.kind);
         return Err(file.error_at(
             request,
             &message,
-            "`kane solve FILE` solves the system at the file's INPUT values",
+            "CODE DYNAMICS() writes the equations of motion with a driver that integrates them",
         ));
     }
     if name.is_empty() {
-        return Err(file.error_at(
-            request,
-            "CODE DYNAMICS() names no file",
-            "name one: CODE DYNAMICS() NAME.m (or .c, .f90, .py)",
-        ));
+        let message = format!("CODE {}() names no file", request.kind);
+        let help = format!("name one: CODE {}(...) NAME.m (or .c, .f90, .py)", request.kind);
+        return Err(file.error_at(request, &message, &help));
     }
     let language = Language::of_file(name).ok_or_else(|| {
         let message = format!("`{name}`: kane writes no program in the language this extension names");
@@ -112,11 +129,10 @@ fn request_path(
     Ok((language, dir.join(format!("{stem}.{}", extension.to_ascii_lowercase()))))
 }
 
-/// Writes `language`'s program to `path`, its name the path's stem.
-fn write_program(file: &StandaloneFile, language: Language, path: &Path) -> Result<(), String> {
+/// Writes the program `text` gives for the path's stem (the program's name) to `path`.
+fn write_program(path: &Path, text: impl FnOnce(&str) -> Result<String, String>) -> Result<(), String> {
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("model");
-    let text = file.program(language, stem).map_err(|e| format!("{}: {e}", file.shown))?;
-    write_output(path, &text)?;
+    write_output(path, &text(stem)?)?;
     outln!("wrote {}", path.display());
     Ok(())
 }
