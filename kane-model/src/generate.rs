@@ -137,16 +137,30 @@ impl CodeFile {
         let mut loaded = crate::lang::check_for_generation(&shown, source)?.model;
         let requests = loaded.code.clone();
         let report = loaded.report(&shown, Vec::new());
+        // CODE ALGEBRAIC() of a file without equations of motion evaluates its OUTPUT quantities.
+        let evaluates = |r: &crate::lang::CodeRequest| r.kind == "ALGEBRAIC" && r.system.is_none();
+        let evaluation =
+            (loaded.equations.is_none() && !loaded.forces_formed && requests.iter().any(evaluates))
+                .then(|| loaded.output_evaluation());
         let names: Vec<String> = loaded.model.ar.symbols().map(|(_, info)| info.name.clone()).collect();
         let values: Vec<Option<f64>> = names.iter().map(|n| loaded.input(n)).collect();
         let value_of = |s: crate::expr::SymbolId| values.get(s.index()).copied().flatten();
         let systems = requests
             .iter()
             .map(|r| {
-                r.system.as_ref().map(|system| {
-                    crate::standalone::SystemPlan::new(&mut loaded.model.ar, system, &value_of)
-                        .map_err(|e| e.to_string())
-                })
+                let plan = |system: &crate::lang::algebraic::AlgebraicSystem, ar: &mut crate::expr::Arena| {
+                    crate::standalone::SystemPlan::new(ar, system, &value_of).map_err(|e| e.to_string())
+                };
+                match (&r.system, &evaluation) {
+                    (Some(system), _) => Some(plan(system, &mut loaded.model.ar)),
+                    (None, Some(outputs)) if evaluates(r) => Some(
+                        outputs
+                            .clone()
+                            .and_then(|system| plan(&system, &mut loaded.model.ar))
+                            .map(|p| p.evaluating()),
+                    ),
+                    _ => None,
+                }
             })
             .collect();
         let about = crate::standalone::Program { identifier: model_name(path), model_file: shown.clone() };

@@ -180,7 +180,7 @@ fn the_paper_file_unchanged_writes_phase3_m_and_octave_runs_it() {
 }
 
 #[test]
-fn code_statements_it_cannot_write_are_errors_at_their_line() {
+fn code_statements_it_cannot_write_are_errors_at_their_line_and_its_options_are_accepted() {
     let dir = scratch("refused");
     let base = model_text("gimbal_gyroscope.al").replace("CODE DYNAMICS() PHASE3.M, SUBS", "");
     for (line, says) in [
@@ -188,6 +188,7 @@ fn code_statements_it_cannot_write_are_errors_at_their_line() {
         ("CODE DYNAMICS() PHASE3.XYZ", "PHASE3.XYZ"),
         ("CODE ODE() OUT.C", "CODE ODE() programs are not written"),
         ("CODE ALGEBRAIC()", "CODE ALGEBRAIC() names no file"),
+        ("CODE DYNAMICS() NOWHERE/PHASE3.M", "in a folder that does not exist"),
     ] {
         let model = dir.join("g.al");
         std::fs::write(&model, format!("{base}{line}\n")).unwrap();
@@ -196,6 +197,11 @@ fn code_statements_it_cannot_write_are_errors_at_their_line() {
         assert_eq!(out.status.code(), Some(1), "{stderr}");
         assert!(stderr.contains(says) && stderr.contains("g.al:"), "{line}: {stderr}");
     }
+    let model = dir.join("options.al");
+    std::fs::create_dir_all(dir.join("c")).unwrap();
+    std::fs::write(&model, format!("{base}CODE DYNAMICS() c/GIMBAL.C, NOSUBS\n")).unwrap();
+    succeeds(Command::new(bins::kane()).arg("code").arg(&model), "kane code with NOSUBS");
+    assert!(dir.join("c/GIMBAL.c").is_file(), "NOSUBS writes the program, in the folder named");
     let model = dir.join("none.al");
     std::fs::write(&model, &base).unwrap();
     let out = Command::new(bins::kane()).arg("code").arg(&model).output().unwrap();

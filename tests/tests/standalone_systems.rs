@@ -1,8 +1,9 @@
 //! The programs CODE ALGEBRAIC(EQN, X, ...) and CODE NONLINEAR(EQN, X, ...) ask for, and CODE
-//! ALGEBRAIC() with no list, run by their real runtimes (gcc, gfortran, GNU Octave, python3 with
-//! NumPy and SciPy): a linear system's solution is the hand solution, a nonlinear one's is a root
-//! (its residuals evaluated here) and `kane solve`'s, the OUTPUT quantities at the INPUT values
-//! are the simulator's first row; bad systems stop naming what is wrong.
+//! ALGEBRAIC() with no list (of a file with equations of motion and of one without), run by
+//! their real runtimes (gcc, gfortran, GNU Octave, python3 with NumPy and SciPy): a linear
+//! system's solution is the hand solution, a nonlinear one's is a root (its residuals evaluated
+//! here) and `kane solve`'s, the OUTPUT quantities at the INPUT values are the simulator's first
+//! row or the hand values; bad systems stop naming what is wrong.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -129,6 +130,48 @@ fn code_algebraic_with_no_list_writes_the_outputs_at_the_input_values() {
             let bound = 1e-13 * (1.0 + want.abs());
             assert!((got - want).abs() <= bound, "{}: {} is {got}, not {want}", ran.language, t.header[j]);
         }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn code_algebraic_with_no_list_evaluates_a_file_without_dynamics_at_its_input_values() {
+    let dir = scratch("kane-systems", "evaluation");
+    let text = "% Where a two-link arm's tip is, and a plate's moment of inertia about N1> as A turns.
+NEWTONIAN N
+FRAMES A
+CONSTANTS L1, L2, IXX, IYY
+VARIABLES Q1, Q2
+SIMPROT(N, A, 3, Q1)
+XTIP = L1*COS(Q1) + L2*COS(Q1 + Q2)
+YTIP = L1*SIN(Q1) + L2*SIN(Q1 + Q2)
+IN1 = DOT(N1>, DOT(IXX*A1>*A1> + IYY*A2>*A2>, N1>))
+INPUT L1 = 0.4, L2 = 0.3, Q1 = 30 DEG, Q2 = 45 DEG, IXX = 2, IYY = 5
+OUTPUT XTIP, YTIP, IN1
+CODE ALGEBRAIC() NAME.EXT
+";
+    let (q1, q12) = (30f64.to_radians(), 75f64.to_radians());
+    let want = [0.4 * q1.cos() + 0.3 * q12.cos(), 0.4 * q1.sin() + 0.3 * q12.sin(), 2.0 * 0.75 + 5.0 * 0.25];
+    for ran in run_every_language(&dir, text) {
+        let t = solution(&ran);
+        assert_eq!(t.header, ["xtip", "ytip", "in1"], "{}", ran.language);
+        for (j, (got, want)) in t.rows[0].iter().zip(want).enumerate() {
+            assert!(
+                (got - want).abs() <= 1e-15 * (1.0 + want.abs()),
+                "{}: {} is {got}, not {want}",
+                ran.language,
+                t.header[j]
+            );
+        }
+    }
+    let missing = text.replace("IXX = 2, ", "");
+    for ran in run_every_language(&dir, &missing) {
+        let stderr = String::from_utf8_lossy(&ran.out.stderr);
+        assert!(
+            stderr.contains("IXX has no value") && !ran.out.status.success(),
+            "{}: {stderr}",
+            ran.language
+        );
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -41,6 +41,7 @@ survey_code_statements() {
   local shown=$1 file=$2 log=$3 line name written compiled reason
   grep -iE '^[[:space:]]*CODE[[:space:]]' "$file" | tr -d '\r' | while read -r line; do
     name=$(printf '%s' "$line" | sed -E 's/^[^)]*\)[[:space:]]*//; s/[,[:space:]%].*//')
+    name=$(printf '%s' "$name" | tr '\\' /)
     name="${name%.*}.$(printf '%s' "${name##*.}" | tr '[:upper:]' '[:lower:]')"
     written=no; compiled=-; reason=""
     if [ -f "$log.code/$name" ]; then
@@ -49,7 +50,7 @@ survey_code_statements() {
         *.c) compiled=no; cc -std=c99 -O0 -o "$log.code/${name%.c}" "$log.code/$name" -lm 2>/dev/null && compiled=yes ;;
       esac
     else
-      reason=$(grep -m1 -E '×|error' "$log.codelog" 2>/dev/null | cut -c1-160 || true)
+      reason=$(grep -v -E '^(wrote |[0-9]+ of [0-9]+ CODE)' "$log.codelog" 2>/dev/null | grep -m1 -E '[a-z]' | cut -c1-160 || true)
     fi
     printf '%s\t%s\t%s\t%s\t%s\n' "$shown" "$line" "$written" "$compiled" "$reason" >> "$statements"
   done
@@ -89,6 +90,15 @@ tail -n +2 "$here/manifest.tsv" | while IFS=$'\t' read -r repo commit path blob 
   code=-
   if [ "$check" = 0 ] && grep -qiE '^[[:space:]]*CODE[[:space:]]' "$file"; then
     code=0; rm -rf "$log.code"; mkdir -p "$log.code"
+    # A program named in a folder is written there: the folders the repository has, beside the
+    # file or from its root (where its author ran Autolev), are made here.
+    grep -iE '^[[:space:]]*CODE[[:space:]]' "$file" | tr -d '\r' | tr '\\' / |
+      sed -E 's/^[^)]*\)[[:space:]]*//; s/[,[:space:]].*//' | while read -r name; do
+        sub=$(dirname "$name")
+        if [ "$sub" != . ] && { [ -d "$(dirname "$file")/$sub" ] || [ -d "$dir/$sub" ]; }; then
+          mkdir -p "$log.code/$sub"
+        fi
+      done
     timeout 300 "$kane" code "$file" --out "$log.code" > "$log.codelog" 2>&1 || code=$?
     survey_code_statements "$repo:$path" "$file" "$log"
   fi

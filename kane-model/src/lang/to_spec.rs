@@ -94,12 +94,7 @@ impl LoadedModel {
                 // A matrix: one scalar per entry, `M_1_2` (a column's: `M_2`).
                 Output::Value(Value::Matrix { rows, cols, data }) => {
                     for (k, e) in data.into_iter().enumerate() {
-                        let entry = if cols == 1 || rows == 1 {
-                            format!("{oname}_{}", k + 1)
-                        } else {
-                            format!("{oname}_{}_{}", k / cols + 1, k % cols + 1)
-                        };
-                        spec.add_scalar(&entry, e, &unit);
+                        spec.add_scalar(&matrix_entry_name(oname, rows, cols, k), e, &unit);
                     }
                 }
                 Output::Orientation(f) => spec.add_orientation(oname, f, OrientationForm::Dcm)?,
@@ -341,5 +336,15 @@ impl LoadedModel {
         let newtonian = self.model.frame_name(n).eq_ignore_ascii_case(first);
         let frame = self.model.frame(&second.to_ascii_uppercase()).or_else(|| self.model.frame(second))?;
         newtonian.then_some(frame)
+    }
+}
+
+/// The name an OUTPUT matrix's entry `k` (row by row) takes: `M_1_2`, or `M_2` in a row or a
+/// column.
+pub(crate) fn matrix_entry_name(name: &str, rows: usize, cols: usize, k: usize) -> String {
+    if cols == 1 || rows == 1 {
+        format!("{name}_{}", k + 1)
+    } else {
+        format!("{name}_{}_{}", k / cols + 1, k % cols + 1)
     }
 }

@@ -108,6 +108,17 @@ pub(super) fn comment(out: &mut String, text: &str) {
     out.push('\n');
 }
 
+/// The Fortran name of the program in the file `stem`: its letters, digits and `_` (any other
+/// character as `_`), after `p_` when it does not start with a letter, at most 63 characters.
+pub(super) fn program_name(stem: &str) -> String {
+    let mut name: String = stem.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
+    if !name.starts_with(|c: char| c.is_ascii_alphabetic()) {
+        name.insert_str(0, "p_");
+    }
+    name.truncate(63);
+    name
+}
+
 /// The Fortran program of `plan`, its file named `stem`.
 pub(super) fn program(plan: &Plan<'_>, stem: &str, about: &Program) -> String {
     let f = Fortran { n_coordinates: plan.info.n_coordinates };
@@ -117,7 +128,7 @@ pub(super) fn program(plan: &Plan<'_>, stem: &str, about: &Program) -> String {
     {
         comment(&mut out, &line);
     }
-    statement(&mut out, &format!("program {stem}"));
+    statement(&mut out, &format!("program {}", program_name(stem)));
     statement(&mut out, "use, intrinsic :: ieee_arithmetic");
     statement(&mut out, "use, intrinsic :: iso_fortran_env, only: error_unit");
     statement(&mut out, "implicit none");
@@ -133,7 +144,7 @@ pub(super) fn program(plan: &Plan<'_>, stem: &str, about: &Program) -> String {
     values(&mut out, plan, stem);
     out.push_str(&continued(&DRIVER.replace("STEM", stem)));
     functions(&mut out, plan, &f);
-    statement(&mut out, &format!("end program {stem}"));
+    statement(&mut out, &format!("end program {}", program_name(stem)));
     out
 }
 
@@ -407,6 +418,14 @@ mod tests {
     #[test]
     fn the_driver_keeps_to_72_columns() {
         assert_shared_form(&continued(DRIVER));
+    }
+
+    #[test]
+    fn a_file_stem_that_is_no_fortran_name_gives_the_program_one() {
+        assert_eq!(program_name("phase3"), "phase3");
+        assert_eq!(program_name("7segSprint_raw"), "p_7segSprint_raw");
+        assert_eq!(program_name("model-ad.v2"), "model_ad_v2");
+        assert_eq!(program_name(&"x".repeat(80)).len(), 63);
     }
 
     #[test]

@@ -154,8 +154,8 @@ fn check_file_name(language: Language, stem: &str) -> Result<(), StandaloneError
         Language::Matlab if !is_identifier(stem) => {
             "MATLAB and Octave call a function file by its name, which must be a letter then letters, digits or _"
         }
-        Language::Fortran if !is_identifier(stem) || stem.len() > 63 => {
-            "the program's name is a Fortran name: a letter then at most 62 letters, digits or _"
+        Language::Fortran if stem.contains(['\'', '"']) => {
+            "the program writes its name between quotes: name the file without ' or \""
         }
         _ => return Ok(()),
     };

@@ -53,7 +53,7 @@ pub fn code(args: CodeArgs) -> Result<(), String> {
         let written = request_path(&code, request, &dir).and_then(|(language, path)| {
             write_program(&path, |stem| {
                 if let Some(text) = code.system_program(i, language, stem) {
-                    return text.map_err(|e| format!("{}: CODE {}: {e}", code.shown, request.kind));
+                    return text.map_err(|e| code.error_at(request, &e, "this statement writes no program"));
                 }
                 let file = dynamics
                     .get_or_insert_with(|| StandaloneFile::load(&args.file, &source).map_err(rendered))
@@ -63,7 +63,7 @@ pub fn code(args: CodeArgs) -> Result<(), String> {
                     "DYNAMICS" => file.program(language, stem),
                     _ => file.outputs_program(language, stem),
                 };
-                text.map_err(|e| failed(file, e))
+                text.map_err(|e| code.error_at(request, &e.to_string(), "this statement writes no program"))
             })
         });
         if let Err(e) = written {
@@ -93,12 +93,13 @@ fn request_path(file: &CodeFile, request: &CodeRequest, dir: &Path) -> Result<(L
     let mut parts = request.file.split(',').map(str::trim);
     let name = parts.next().unwrap_or("");
     for option in parts {
-        if !option.eq_ignore_ascii_case("SUBS") {
+        if !["SUBS", "NOSUBS"].iter().any(|known| option.eq_ignore_ascii_case(known)) {
             let message = format!("CODE option `{option}` is not one kane knows");
             return Err(file.error_at(
                 request,
                 &message,
-                "remove it; SUBS is accepted (the program carries the file's INPUT values)",
+                "remove it; SUBS and NOSUBS are accepted (the program reads the parameters as values \
+                 and starts from the file's INPUT values either way)",
             ));
         }
     }
@@ -123,10 +124,21 @@ fn request_path(file: &CodeFile, request: &CodeRequest, dir: &Path) -> Result<(L
             "name a .m (MATLAB, Octave), .c (C), .f, .for or .f90 (Fortran) or .py (Python) file",
         )
     })?;
-    // MATLAB and Octave load only `.m`, and `.C` is C++ to compilers: the extension is written in
-    // lower case.
-    let (stem, extension) = name.rsplit_once('.').unwrap_or((name, ""));
-    Ok((language, dir.join(format!("{stem}.{}", extension.to_ascii_lowercase()))))
+    // A Windows path (`gait\model.c`) names the same folders. MATLAB and Octave load only `.m`,
+    // and `.C` is C++ to compilers: the extension is written in lower case.
+    let name = name.replace('\\', "/");
+    let (stem, extension) = name.rsplit_once('.').unwrap_or((&name, ""));
+    let path = dir.join(format!("{stem}.{}", extension.to_ascii_lowercase()));
+    match path.parent() {
+        Some(folder) if !folder.as_os_str().is_empty() && !folder.is_dir() => {
+            let message = format!("`{name}` is in a folder that does not exist: {}", folder.display());
+            let help =
+                "a name is relative to the model file's folder (Autolev's was relative to the folder it \
+                        ran in: --out DIR names that one); create the folder or pass --out DIR";
+            Err(file.error_at(request, &message, help))
+        }
+        _ => Ok((language, path)),
+    }
 }
 
 /// Writes the program `text` gives for the path's stem (the program's name) to `path`.

@@ -5,7 +5,9 @@
 
 use crate::program::ir::Input;
 
-use super::super::fortran::{body, comment, continued, double, names, reals, statement, Fortran};
+use super::super::fortran::{
+    body, comment, continued, double, names, program_name, reals, statement, Fortran,
+};
 use super::{Program, SystemPlan, SINGULAR_PIVOT, TOLERANCE};
 
 /// The Fortran program of `plan`, its file named `stem`.
@@ -15,7 +17,7 @@ pub(super) fn program(plan: &SystemPlan, stem: &str, about: &Program) -> String 
     for line in about.system_header_lines(plan, &build) {
         comment(&mut out, &line);
     }
-    statement(&mut out, &format!("program {stem}"));
+    statement(&mut out, &format!("program {}", program_name(stem)));
     statement(&mut out, "use, intrinsic :: ieee_arithmetic");
     statement(&mut out, "use, intrinsic :: iso_fortran_env, only: error_unit");
     statement(&mut out, "implicit none");
@@ -53,7 +55,7 @@ pub(super) fn program(plan: &SystemPlan, stem: &str, about: &Program) -> String 
     );
     out.push_str(&continued(&DRIVER.replace("STEM", stem)));
     equations(&mut out, plan);
-    statement(&mut out, &format!("end program {stem}"));
+    statement(&mut out, &format!("end program {}", program_name(stem)));
     out
 }
 
