@@ -108,15 +108,35 @@ pub(super) fn comment(out: &mut String, text: &str) {
     out.push('\n');
 }
 
-/// The Fortran name of the program in the file `stem`: its letters, digits and `_` (any other
-/// character as `_`), after `p_` when it does not start with a letter, at most 63 characters.
-pub(super) fn program_name(stem: &str) -> String {
+/// The Fortran name of the program in the file `stem` whose statements are `body`: its letters,
+/// digits and `_` (any other character as `_`), at most 63 characters, after `p_` when it does not
+/// start with a letter or is a name `body` uses (Fortran names are not case-sensitive).
+pub(super) fn program_name(stem: &str, body: &str) -> String {
     let mut name: String = stem.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
-    if !name.starts_with(|c: char| c.is_ascii_alphabetic()) {
+    if !name.starts_with(|c: char| c.is_ascii_alphabetic()) || uses_name(body, &name) {
         name.insert_str(0, "p_");
     }
     name.truncate(63);
     name
+}
+
+/// Whether the Fortran `text` uses `name` outside its comments and quoted strings.
+fn uses_name(text: &str, name: &str) -> bool {
+    text.lines().any(|line| {
+        let mut code = String::new();
+        let mut quote = None;
+        for c in line.chars() {
+            match (quote, c) {
+                (None, '!') => break,
+                (None, '\'' | '"') => quote = Some(c),
+                (Some(q), _) if c == q => quote = None,
+                (None, _) => code.push(c),
+                _ => {}
+            }
+        }
+        code.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .any(|word| word.eq_ignore_ascii_case(name))
+    })
 }
 
 /// The Fortran program of `plan`, its file named `stem`.
@@ -128,24 +148,32 @@ pub(super) fn program(plan: &Plan<'_>, stem: &str, about: &Program) -> String {
     {
         comment(&mut out, &line);
     }
-    statement(&mut out, &format!("program {}", program_name(stem)));
-    statement(&mut out, "use, intrinsic :: ieee_arithmetic");
-    statement(&mut out, "use, intrinsic :: iso_fortran_env, only: error_unit");
-    statement(&mut out, "implicit none");
+    let mut body = String::new();
+    statement(&mut body, "use, intrinsic :: ieee_arithmetic");
+    statement(&mut body, "use, intrinsic :: iso_fortran_env, only: error_unit");
+    statement(&mut body, "implicit none");
     let (ny, np) = (plan.info.state_names.len(), plan.params.len());
     let nk = plan.program.param_constants.results.len().max(1);
     statement(
-        &mut out,
+        &mut body,
         &format!(
             "integer, parameter :: ny = {ny}, np = {np}, nk = {nk}, ncol = {}",
             plan.columns.len().max(1)
         ),
     );
-    values(&mut out, plan, stem);
-    out.push_str(&continued(&DRIVER.replace("STEM", stem)));
-    functions(&mut out, plan, &f);
-    statement(&mut out, &format!("end program {}", program_name(stem)));
+    values(&mut body, plan, stem);
+    body.push_str(&continued(&DRIVER.replace("STEM", stem)));
+    functions(&mut body, plan, &f);
+    enclose(&mut out, stem, &body);
     out
+}
+
+/// `body` as the program of the file `stem`, after `out`.
+pub(super) fn enclose(out: &mut String, stem: &str, body: &str) {
+    let name = program_name(stem, body);
+    statement(out, &format!("program {name}"));
+    out.push_str(body);
+    statement(out, &format!("end program {name}"));
 }
 
 /// The items of an array constructor of `values` (-huge where not finite).
@@ -422,10 +450,12 @@ mod tests {
 
     #[test]
     fn a_file_stem_that_is_no_fortran_name_gives_the_program_one() {
-        assert_eq!(program_name("phase3"), "phase3");
-        assert_eq!(program_name("7segSprint_raw"), "p_7segSprint_raw");
-        assert_eq!(program_name("model-ad.v2"), "model_ad_v2");
-        assert_eq!(program_name(&"x".repeat(80)).len(), 63);
+        let body = "call rhs(t, y) ! phase3\nopen(newunit=u, file='phase3.csv')\n";
+        assert_eq!(program_name("phase3", body), "phase3");
+        assert_eq!(program_name("7segSprint_raw", body), "p_7segSprint_raw");
+        assert_eq!(program_name("model-ad.v2", body), "model_ad_v2");
+        assert_eq!(program_name("RHS", body), "p_RHS", "a name the program uses");
+        assert_eq!(program_name(&"x".repeat(80), body).len(), 63);
     }
 
     #[test]

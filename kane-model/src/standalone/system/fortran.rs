@@ -5,9 +5,7 @@
 
 use crate::program::ir::Input;
 
-use super::super::fortran::{
-    body, comment, continued, double, names, program_name, reals, statement, Fortran,
-};
+use super::super::fortran::{body, comment, continued, double, enclose, names, reals, statement, Fortran};
 use super::{Program, SystemPlan, SINGULAR_PIVOT, TOLERANCE};
 
 /// The Fortran program of `plan`, its file named `stem`.
@@ -17,28 +15,28 @@ pub(super) fn program(plan: &SystemPlan, stem: &str, about: &Program) -> String 
     for line in about.system_header_lines(plan, &build) {
         comment(&mut out, &line);
     }
-    statement(&mut out, &format!("program {}", program_name(stem)));
-    statement(&mut out, "use, intrinsic :: ieee_arithmetic");
-    statement(&mut out, "use, intrinsic :: iso_fortran_env, only: error_unit");
-    statement(&mut out, "implicit none");
+    let mut body = String::new();
+    statement(&mut body, "use, intrinsic :: ieee_arithmetic");
+    statement(&mut body, "use, intrinsic :: iso_fortran_env, only: error_unit");
+    statement(&mut body, "implicit none");
     let (n, nv) = (plan.unknowns.len(), plan.names.len());
-    statement(&mut out, &format!("integer, parameter :: nx = {n}, nv = {nv}, np = {}", nv.max(1)));
+    statement(&mut body, &format!("integer, parameter :: nx = {n}, nv = {nv}, np = {}", nv.max(1)));
     comment(
-        &mut out,
+        &mut body,
         "The file's INPUT values (internal units: angles in radians); -huge where it gives none.",
     );
-    statement(&mut out, &format!("real(8), parameter :: p0(np) = (/ {} /)", reals(&plan.values)));
-    statement(&mut out, &format!("real(8), parameter :: x0(nx) = (/ {} /)", reals(&plan.start)));
+    statement(&mut body, &format!("real(8), parameter :: p0(np) = (/ {} /)", reals(&plan.values)));
+    statement(&mut body, &format!("real(8), parameter :: x0(nx) = (/ {} /)", reals(&plan.start)));
     let (w, text) = names(&as_str(&plan.names));
-    statement(&mut out, &format!("character(len={w}), parameter :: p_names(np) = (/ {text} /)"));
+    statement(&mut body, &format!("character(len={w}), parameter :: p_names(np) = (/ {text} /)"));
     let (w, text) = names(&as_str(&plan.unknowns));
-    statement(&mut out, &format!("character(len={w}), parameter :: x_names(nx) = (/ {text} /)"));
-    statement(&mut out, &format!("character(len=*), parameter :: header = '{}'", plan.header()));
-    statement(&mut out, &format!("character(len=*), parameter :: name = '{stem}'"));
-    statement(&mut out, &format!("integer, parameter :: steps = {}", plan.steps()));
+    statement(&mut body, &format!("character(len={w}), parameter :: x_names(nx) = (/ {text} /)"));
+    statement(&mut body, &format!("character(len=*), parameter :: header = '{}'", plan.header()));
+    statement(&mut body, &format!("character(len=*), parameter :: name = '{stem}'"));
+    statement(&mut body, &format!("integer, parameter :: steps = {}", plan.steps()));
     let logical = |b: bool| if b { ".true." } else { ".false." };
     statement(
-        &mut out,
+        &mut body,
         &format!(
             "logical, parameter :: damped = {}, check_start = {}",
             logical(plan.damped()),
@@ -46,16 +44,16 @@ pub(super) fn program(plan: &SystemPlan, stem: &str, about: &Program) -> String 
         ),
     );
     statement(
-        &mut out,
+        &mut body,
         &format!(
             "real(8), parameter :: tolerance = {}, singular = {}",
             double(TOLERANCE),
             double(SINGULAR_PIVOT)
         ),
     );
-    out.push_str(&continued(&DRIVER.replace("STEM", stem)));
-    equations(&mut out, plan);
-    statement(&mut out, &format!("end program {}", program_name(stem)));
+    body.push_str(&continued(&DRIVER.replace("STEM", stem)));
+    equations(&mut body, plan);
+    enclose(&mut out, stem, &body);
     out
 }
 
