@@ -153,12 +153,9 @@ impl CodeFile {
                 };
                 match (&r.system, &evaluation) {
                     (Some(system), _) => Some(plan(system, &mut loaded.model.ar)),
-                    (None, Some(outputs)) if evaluates(r) => Some(
-                        outputs
-                            .clone()
-                            .and_then(|system| plan(&system, &mut loaded.model.ar))
-                            .map(|p| p.evaluating()),
-                    ),
+                    (None, Some(outputs)) if evaluates(r) => Some(outputs.clone().map(|quantities| {
+                        crate::standalone::SystemPlan::evaluation(&loaded.model.ar, &quantities, &value_of)
+                    })),
                     _ => None,
                 }
             })

@@ -146,15 +146,19 @@ SIMPROT(N, A, 3, Q1)
 XTIP = L1*COS(Q1) + L2*COS(Q1 + Q2)
 YTIP = L1*SIN(Q1) + L2*SIN(Q1 + Q2)
 IN1 = DOT(N1>, DOT(IXX*A1>*A1> + IYY*A2>*A2>, N1>))
+M = [XTIP, L1; L2, IN1]
 INPUT L1 = 0.4, L2 = 0.3, Q1 = 30 DEG, Q2 = 45 DEG, IXX = 2, IYY = 5
-OUTPUT XTIP, YTIP, IN1
+OUTPUT XTIP, YTIP, IN1, M
 CODE ALGEBRAIC() NAME.EXT
 ";
     let (q1, q12) = (30f64.to_radians(), 75f64.to_radians());
-    let want = [0.4 * q1.cos() + 0.3 * q12.cos(), 0.4 * q1.sin() + 0.3 * q12.sin(), 2.0 * 0.75 + 5.0 * 0.25];
+    let (x, y, i) =
+        (0.4 * q1.cos() + 0.3 * q12.cos(), 0.4 * q1.sin() + 0.3 * q12.sin(), 2.0 * 0.75 + 5.0 * 0.25);
+    let want = [x, y, i, x, 0.4, 0.3, i];
     for ran in run_every_language(&dir, text) {
         let t = solution(&ran);
-        assert_eq!(t.header, ["xtip", "ytip", "in1"], "{}", ran.language);
+        let header = ["xtip", "ytip", "in1", "m_1_1", "m_1_2", "m_2_1", "m_2_2"];
+        assert_eq!(t.header, header, "{}", ran.language);
         for (j, (got, want)) in t.rows[0].iter().zip(want).enumerate() {
             assert!(
                 (got - want).abs() <= 1e-15 * (1.0 + want.abs()),
@@ -169,6 +173,16 @@ CODE ALGEBRAIC() NAME.EXT
         let stderr = String::from_utf8_lossy(&ran.out.stderr);
         assert!(
             stderr.contains("IXX has no value") && !ran.out.status.success(),
+            "{}: {stderr}",
+            ran.language
+        );
+    }
+    let infinite =
+        text.replace("OUTPUT XTIP, YTIP, IN1, M", "S = L2/SIN(Q2)\nOUTPUT S").replace("45 DEG", "0");
+    for ran in run_every_language(&dir, &infinite) {
+        let stderr = String::from_utf8_lossy(&ran.out.stderr);
+        assert!(
+            stderr.contains("S is") && stderr.contains("INPUT values") && !ran.out.status.success(),
             "{}: {stderr}",
             ran.language
         );

@@ -68,10 +68,9 @@ impl Interpreter {
 
 impl super::LoadedModel {
     /// What `CODE ALGEBRAIC()` evaluates in a file without equations of motion: each OUTPUT
-    /// (then ENCODE) quantity `y` (each entry of a matrix) as the unknown of `y - value = 0`, a
-    /// linear system whose solution is the values at the INPUT values. An error names a quantity
-    /// that is neither a scalar nor a matrix of scalars.
-    pub fn output_evaluation(&mut self) -> Result<AlgebraicSystem, String> {
+    /// (then ENCODE) quantity's name and value, a matrix entry by entry. An error names a
+    /// quantity that is neither a scalar nor a matrix of scalars.
+    pub fn output_evaluation(&self) -> Result<Vec<(String, crate::expr::ExprId)>, String> {
         let mut names: Vec<String> = Vec::new();
         for name in self.outputs.iter().map(|(n, _)| n).chain(&self.encoded) {
             if !names.iter().any(|n| n.eq_ignore_ascii_case(name)) {
@@ -100,19 +99,6 @@ impl super::LoadedModel {
                 None => return Err(format!("OUTPUT {name} has no value at the end of the file")),
             }
         }
-        let (mut equations, mut unknowns) = (Vec::new(), Vec::new());
-        for (name, value) in &entries {
-            let value = *value;
-            let ar = &mut self.model.ar;
-            // A name of its own, so that an output named like a symbol is still an unknown.
-            let unknown = ar
-                .declare(&format!("{name}\u{2032}output"), crate::expr::SymbolKind::Constant)
-                .map_err(|e| e.to_string())?;
-            let y = ar.symbol_expr(unknown);
-            equations.push(ar.sub(y, value).map_err(|e| e.to_string())?);
-            unknowns.push(unknown);
-        }
-        let names = entries.into_iter().map(|(name, _)| name).collect();
-        Ok(AlgebraicSystem { kind: SystemKind::Linear, equations, unknowns, names })
+        Ok(entries)
     }
 }

@@ -21,14 +21,24 @@ pub(super) fn program(plan: &SystemPlan, stem: &str, about: &Program) -> String 
     out.push_str("#include <math.h>\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n");
     out.push_str(&format!("enum {{ NX = {n}, NP = {} }};\n\n", np.max(1)));
     let (lines, results) = dialect::print(&plan.section, &c, "v");
-    out.push_str("/* The residuals r and the Jacobian jac (row by row) at the unknowns y. */\n");
-    out.push_str(&format!(
-        "void {name}_system(const double y[NX], const double p[NP], double r[NX], double jac[NX * NX]) {{\n"
-    ));
-    out.push_str("    const double t = 0.0;\n    (void)t; (void)y; (void)p;\n");
+    if plan.evaluation {
+        out.push_str("/* The quantities x at the parameters p. */\n");
+        out.push_str(&format!("void {name}_values(const double p[NP], double x[NX]) {{\n"));
+        out.push_str("    const double t = 0.0;\n    (void)t; (void)p;\n");
+    } else {
+        out.push_str("/* The residuals r and the Jacobian jac (row by row) at the unknowns y. */\n");
+        out.push_str(&format!(
+            "void {name}_system(const double y[NX], const double p[NP], double r[NX], double jac[NX * NX]) {{\n"
+        ));
+        out.push_str("    const double t = 0.0;\n    (void)t; (void)y; (void)p;\n");
+    }
     lines.iter().for_each(|l| out.push_str(&format!("    {l}\n")));
     for (i, v) in results.iter().enumerate() {
-        let (into, at) = if i < n { ("r", i) } else { ("jac", i - n) };
+        let (into, at) = match (plan.evaluation, i < n) {
+            (true, _) => ("x", i),
+            (false, true) => ("r", i),
+            (false, false) => ("jac", i - n),
+        };
         out.push_str(&format!("    {into}[{at}] = {v};\n"));
     }
     out.push_str("}\n\n");
@@ -39,28 +49,32 @@ pub(super) fn program(plan: &SystemPlan, stem: &str, about: &Program) -> String 
     );
     out.push_str(&format!("static const double P0[NP] = {};\n", array(&plan.values)));
     out.push_str(&format!("static const char *const P_NAMES[NP] = {};\n", strings(&names)));
-    out.push_str(&format!("static const double X0[NX] = {};\n", array(&plan.start)));
     out.push_str(&format!("static const char *const X_NAMES[NX] = {};\n", strings(&unknowns)));
-    out.push_str(&format!(
-        "static const char *const HEADER = {:?};\nenum {{ STEPS = {}, DAMPED = {}, CHECK_START = {} }};\n",
-        plan.header(),
-        plan.steps(),
-        i32::from(plan.damped()),
-        i32::from(plan.checked_start())
-    ));
-    out.push_str(&format!(
-        "static const double TOLERANCE = {}, SINGULAR = {};\n",
-        shortest(TOLERANCE),
-        shortest(SINGULAR_PIVOT)
-    ));
-    out.push_str(
-        &SOLVER.replace("    /* OPEN_OUTPUT */\n", OPEN_OUTPUT).replace("MODEL", name).replace("STEM", stem),
-    );
+    out.push_str(&format!("static const char *const HEADER = {:?};\n", plan.header()));
+    let named = |text: &str| text.replace("MODEL", name).replace("STEM", stem);
+    if plan.evaluation {
+        out.push_str(&named(EVALUATE));
+    } else {
+        out.push_str(&format!("static const double X0[NX] = {};\n", array(&plan.start)));
+        out.push_str(&format!(
+            "enum {{ STEPS = {}, DAMPED = {}, CHECK_START = {} }};\n",
+            plan.steps(),
+            i32::from(plan.damped()),
+            i32::from(plan.checked_start())
+        ));
+        out.push_str(&format!(
+            "static const double TOLERANCE = {}, SINGULAR = {};\n",
+            shortest(TOLERANCE),
+            shortest(SINGULAR_PIVOT)
+        ));
+        out.push_str(&named(SOLVER));
+    }
+    out.push_str(&named(&MAIN.replace("    /* OPEN_OUTPUT */\n", OPEN_OUTPUT)));
     out
 }
 
-/// The elimination, the iteration and `main`, with `MODEL` for the functions' prefix and
-/// `STEM` for the file's.
+/// The elimination and the iteration, with `MODEL` for the functions' prefix and `STEM` for the
+/// file's.
 const SOLVER: &str = r#"
 /* The largest magnitude in v, NAN if one is not a number. */
 static double largest(const double *v, int n) {
@@ -142,22 +156,32 @@ static int newton(const double p[NP], double x[NX]) {
     return 1;
 }
 
-/* STEM [OUT.csv]: prints the solution and writes it to OUT.csv (default: STEM.csv beside the program). */
-int main(int argc, char **argv) {
-    double x[NX];
-    for (int i = 0; i < NP && P_NAMES[i][0]; i++)
-        if (isnan(P0[i])) {
-            fprintf(stderr, "STEM: %s has no value: give it in the model file's INPUT and regenerate\n", P_NAMES[i]);
-            return 2;
-        }
+/* The solution from the file's starting values, in x; 0 when Newton's method converges, 2 when
+   a starting value is missing. */
+static int solve(const double p[NP], double x[NX]) {
     for (int i = 0; i < NX && CHECK_START; i++)
         if (isnan(X0[i])) {
             fprintf(stderr, "STEM: %s has no starting value: give it in the model file's INPUT and regenerate\n",
                     X_NAMES[i]);
             return 2;
         }
-    memcpy(x, X0, sizeof x);
-    if (newton(P0, x)) return 1;
+    memcpy(x, X0, sizeof X0);
+    return newton(p, x);
+}
+"#;
+
+/// `main`: the checks, the solve and the CSV, with `STEM` for the file's name.
+const MAIN: &str = r#"
+/* STEM [OUT.csv]: prints the solution and writes it to OUT.csv (default: STEM.csv beside the program). */
+int main(int argc, char **argv) {
+    static double x[NX];
+    for (int i = 0; i < NP && P_NAMES[i][0]; i++)
+        if (isnan(P0[i])) {
+            fprintf(stderr, "STEM: %s has no value: give it in the model file's INPUT and regenerate\n", P_NAMES[i]);
+            return 2;
+        }
+    int status = solve(P0, x);
+    if (status) return status;
     /* OPEN_OUTPUT */
     fprintf(out, "%s\n", HEADER);
     for (int i = 0; i < NX; i++) {
@@ -170,6 +194,20 @@ int main(int argc, char **argv) {
         fprintf(stderr, "STEM: %s not written\n", path);
         return 1;
     }
+    return 0;
+}
+"#;
+
+/// An evaluation's `solve`: the quantities at the parameters, each finite.
+const EVALUATE: &str = r#"
+/* The quantities at the parameters p, in x; 0 when each is finite. */
+static int solve(const double p[NP], double x[NX]) {
+    MODEL_values(p, x);
+    for (int i = 0; i < NX; i++)
+        if (!isfinite(x[i])) {
+            fprintf(stderr, "STEM: %s is %g at the file's INPUT values\n", X_NAMES[i], x[i]);
+            return 1;
+        }
     return 0;
 }
 "#;

@@ -26,17 +26,33 @@ pub(super) fn program(plan: &SystemPlan, stem: &str, about: &Program) -> String 
         "The file's INPUT values (internal units: angles in radians); -huge where it gives none.",
     );
     statement(&mut body, &format!("real(8), parameter :: p0(np) = (/ {} /)", reals(&plan.values)));
-    statement(&mut body, &format!("real(8), parameter :: x0(nx) = (/ {} /)", reals(&plan.start)));
     let (w, text) = names(&as_str(&plan.names));
     statement(&mut body, &format!("character(len={w}), parameter :: p_names(np) = (/ {text} /)"));
     let (w, text) = names(&as_str(&plan.unknowns));
     statement(&mut body, &format!("character(len={w}), parameter :: x_names(nx) = (/ {text} /)"));
     statement(&mut body, &format!("character(len=*), parameter :: header = '{}'", plan.header()));
     statement(&mut body, &format!("character(len=*), parameter :: name = '{stem}'"));
-    statement(&mut body, &format!("integer, parameter :: steps = {}", plan.steps()));
+    if plan.evaluation {
+        let driver = [DECLARE, CHECK_PARAMETERS, EVALUATE, WRITE].concat();
+        body.push_str(&continued(&driver.replace("STEM", stem)));
+        values(&mut body, plan);
+    } else {
+        newton_settings(&mut body, plan);
+        let driver = [DECLARE, DECLARE_NEWTON, CHECK_PARAMETERS, NEWTON, WRITE, NEWTON_HELPERS].concat();
+        body.push_str(&continued(&driver.replace("STEM", stem)));
+        equations(&mut body, plan);
+    }
+    enclose(&mut out, stem, &body);
+    out
+}
+
+/// The starting values and the iteration's settings.
+fn newton_settings(body: &mut String, plan: &SystemPlan) {
+    statement(body, &format!("real(8), parameter :: x0(nx) = (/ {} /)", reals(&plan.start)));
+    statement(body, &format!("integer, parameter :: steps = {}", plan.steps()));
     let logical = |b: bool| if b { ".true." } else { ".false." };
     statement(
-        &mut body,
+        body,
         &format!(
             "logical, parameter :: damped = {}, check_start = {}",
             logical(plan.damped()),
@@ -44,17 +60,13 @@ pub(super) fn program(plan: &SystemPlan, stem: &str, about: &Program) -> String 
         ),
     );
     statement(
-        &mut body,
+        body,
         &format!(
             "real(8), parameter :: tolerance = {}, singular = {}",
             double(TOLERANCE),
             double(SINGULAR_PIVOT)
         ),
     );
-    body.push_str(&continued(&DRIVER.replace("STEM", stem)));
-    equations(&mut body, plan);
-    enclose(&mut out, stem, &body);
-    out
 }
 
 /// `v` as string slices, one empty name where there is none (Fortran has no empty array
@@ -87,22 +99,50 @@ fn equations(out: &mut String, plan: &SystemPlan) {
     statement(out, "end subroutine equations");
 }
 
-/// The checks, the iteration, the CSV and the elimination, with `STEM` for the program's name;
-/// lines in the shared fixed and free layout.
-const DRIVER: &str = "      real(8) :: x(nx), r(nx), jac(nx * nx), trial(nx), rt(nx)
-      real(8) :: jt(nx * nx), dx(nx), scale, step
+/// The internal subroutine `values`.
+fn values(out: &mut String, plan: &SystemPlan) {
+    let f = Fortran { n_coordinates: 0 };
+    comment(out, "The quantities x at the parameters p.");
+    statement(out, "subroutine values(p, x)");
+    statement(out, "real(8), intent(in) :: p(np)");
+    statement(out, "real(8), intent(out) :: x(nx)");
+    if plan.section.inputs.contains(&Input::Time) {
+        statement(out, "real(8), parameter :: t = 0d0");
+    }
+    let (lines, results) = super::super::dialect::print(&plan.section, &f, "v");
+    body(out, &lines);
+    for (i, v) in results.iter().enumerate() {
+        statement(out, &format!("x({}) = {v}", i + 1));
+    }
+    statement(out, "end subroutine values");
+}
+
+/// The declarations every program has; lines in the shared fixed and free layout (as below).
+const DECLARE: &str = "      real(8) :: x(nx)
       character(len=4096) :: path
       character(len=32) :: text
-      integer :: i, iteration, u, status
+      integer :: i, u, status
+";
+
+/// The iteration's declarations.
+const DECLARE_NEWTON: &str = "      real(8) :: r(nx), jac(nx * nx), trial(nx), rt(nx)
+      real(8) :: jt(nx * nx), dx(nx), scale, step
+      integer :: iteration
       logical :: converged
-      do i = 1, nv
+";
+
+/// Every parameter's value checked, with `STEM` for the program's name.
+const CHECK_PARAMETERS: &str = "      do i = 1, nv
         if (p0(i) == -huge(1d0)) then
           write (error_unit, '(4a)') name, ': ', trim(p_names(i)),
      &      ' has no value: give it in the INPUT and regenerate'
           stop 2
         end if
       end do
-      do i = 1, nx
+";
+
+/// The iteration from the file's starting values.
+const NEWTON: &str = "      do i = 1, nx
         if (check_start .and. x0(i) == -huge(1d0)) then
           write (error_unit, '(4a)') name, ': ', trim(x_names(i)),
      &      ' has no starting value: give it in the INPUT, regenerate'
@@ -138,7 +178,22 @@ const DRIVER: &str = "      real(8) :: x(nx), r(nx), jac(nx * nx), trial(nx), rt
       if (.not. converged .and. damped .and.
      &  .not. largest(r) <= tolerance * scale)
      &  call fail('Newton''s method did not converge at ', x)
-      if (command_argument_count() > 0) then
+";
+
+/// An evaluation: the quantities at the parameters, each finite.
+const EVALUATE: &str = "      call values(p0, x)
+      do i = 1, nx
+        if (.not. ieee_is_finite(x(i))) then
+          write (text, '(es24.16e3)') x(i)
+          write (error_unit, '(5a)') name, ': ', trim(x_names(i)),
+     &      ' is not finite at the INPUT values: ', trim(adjustl(text))
+          stop 1
+        end if
+      end do
+";
+
+/// The solution printed and written as CSV, then `contains`.
+const WRITE: &str = "      if (command_argument_count() > 0) then
         call get_command_argument(1, path)
       else
         call get_command_argument(0, path)
@@ -159,7 +214,10 @@ const DRIVER: &str = "      real(8) :: x(nx), r(nx), jac(nx * nx), trial(nx), rt
       call rename(trim(path) // '.partial', trim(path), status)
       if (status /= 0) stop 1
       contains
-! The largest magnitude in v, NaN if one is not a number.
+";
+
+/// The iteration's functions: `largest`, `fail` and the elimination.
+const NEWTON_HELPERS: &str = "! The largest magnitude in v, NaN if one is not a number.
       real(8) function largest(v)
       real(8), intent(in) :: v(:)
       if (any(ieee_is_nan(v))) then
@@ -234,6 +292,8 @@ mod tests {
 
     #[test]
     fn the_driver_keeps_to_72_columns() {
-        super::super::super::fortran::assert_shared_form(&continued(DRIVER));
+        for text in [DECLARE, DECLARE_NEWTON, CHECK_PARAMETERS, NEWTON, EVALUATE, WRITE, NEWTON_HELPERS] {
+            super::super::super::fortran::assert_shared_form(&continued(text));
+        }
     }
 }

@@ -18,26 +18,42 @@ pub(super) fn program(plan: &SystemPlan, stem: &str, about: &Program) -> String 
     let (p_names, x_names) = (as_str(&plan.names), as_str(&plan.unknowns));
     out.push_str("% The file's INPUT values (internal units: angles in radians); NaN where it gives none.\n");
     out.push_str(&format!("p = {};\np_names = {};\n", vector(&plan.values), names(&p_names)));
-    out.push_str(&format!("x = {};\nx_names = {};\n", vector(&plan.start), names(&x_names)));
-    out.push_str(&format!(
-        "header = '{}';\nsteps = {}; damped = {}; check_start = {};\ntolerance = {}; singular = {};\n",
-        plan.header(),
-        plan.steps(),
-        plan.damped(),
-        plan.checked_start(),
-        shortest(TOLERANCE),
-        shortest(SINGULAR_PIVOT)
-    ));
-    out.push_str(&MAIN.replace("% OPEN_OUTPUT\n", OPEN_OUTPUT).replace("STEM", stem));
+    out.push_str(&format!("x_names = {};\nheader = '{}';\n", names(&x_names), plan.header()));
     let (lines, results) = dialect::print(&plan.section, &m, "v");
-    out.push_str("\nfunction [r, jac] = equations(y, p)\n  % The residuals r and the Jacobian jac at the unknowns y.\n  t = 0;\n");
-    lines.iter().for_each(|l| out.push_str(&format!("  {l}\n")));
-    out.push_str(&format!("  r = zeros({n}, 1);\n  jac = zeros({n}, {n});\n"));
-    for (i, v) in results.iter().enumerate() {
-        if i < n {
-            out.push_str(&format!("  r({}) = {v};\n", i + 1));
-        } else {
-            out.push_str(&format!("  jac({}, {}) = {v};\n", (i - n) / n + 1, (i - n) % n + 1));
+    if plan.evaluation {
+        out.push_str(&CHECKS.replace("STEM", stem));
+        out.push_str(&EVALUATE.replace("STEM", stem));
+    } else {
+        out.push_str(&format!(
+            "x = {};\nsteps = {}; damped = {}; check_start = {};\ntolerance = {}; singular = {};\n",
+            vector(&plan.start),
+            plan.steps(),
+            plan.damped(),
+            plan.checked_start(),
+            shortest(TOLERANCE),
+            shortest(SINGULAR_PIVOT)
+        ));
+        out.push_str(&CHECKS.replace("STEM", stem));
+        out.push_str(&NEWTON.replace("STEM", stem));
+    }
+    out.push_str(&WRITE.replace("% OPEN_OUTPUT\n", OPEN_OUTPUT).replace("STEM", stem));
+    if plan.evaluation {
+        out.push_str("\nfunction x = values(p)\n  % The quantities x at the parameters p.\n  t = 0;\n");
+        lines.iter().for_each(|l| out.push_str(&format!("  {l}\n")));
+        out.push_str(&format!("  x = zeros({n}, 1);\n"));
+        for (i, v) in results.iter().enumerate() {
+            out.push_str(&format!("  x({}) = {v};\n", i + 1));
+        }
+    } else {
+        out.push_str("\nfunction [r, jac] = equations(y, p)\n  % The residuals r and the Jacobian jac at the unknowns y.\n  t = 0;\n");
+        lines.iter().for_each(|l| out.push_str(&format!("  {l}\n")));
+        out.push_str(&format!("  r = zeros({n}, 1);\n  jac = zeros({n}, {n});\n"));
+        for (i, v) in results.iter().enumerate() {
+            if i < n {
+                out.push_str(&format!("  r({}) = {v};\n", i + 1));
+            } else {
+                out.push_str(&format!("  jac({}, {}) = {v};\n", (i - n) / n + 1, (i - n) % n + 1));
+            }
         }
     }
     out.push_str("end\n");
@@ -49,21 +65,24 @@ fn as_str(names: &[String]) -> Vec<&str> {
     names.iter().map(String::as_str).collect()
 }
 
-/// The checks, the iteration and the CSV, with `STEM` for the program's name.
-const MAIN: &str = r#"p = p(:);
-x = x(:);
+/// The parameters' checks and the output file's name, with `STEM` for the program's name.
+const CHECKS: &str = r#"p = p(:);
 for i = 1:numel(p)
   if isnan(p(i))
     error('STEM: %s has no value: give it in the model file''s INPUT and regenerate', p_names{i});
   end
 end
+if nargin < 1
+  out = fullfile(fileparts(mfilename('fullpath')), 'STEM.csv');
+end
+"#;
+
+/// The iteration from the file's starting values, with `STEM` for the program's name.
+const NEWTON: &str = r#"x = x(:);
 for i = 1:numel(x)
   if check_start && isnan(x(i))
     error('STEM: %s has no starting value: give it in the model file''s INPUT and regenerate', x_names{i});
   end
-end
-if nargin < 1
-  out = fullfile(fileparts(mfilename('fullpath')), 'STEM.csv');
 end
 [r, jac] = equations(x, p);
 scale = 1 + largest(jac) * max(largest(x), 1);
@@ -96,7 +115,19 @@ if ~converged && damped && ~(largest(r) <= tolerance * scale)
   error('STEM: Newton''s method did not converge in %d steps: the largest residual is %g at %s', ...
         steps, largest(r), at(x_names, x));
 end
-% OPEN_OUTPUT
+"#;
+
+/// An evaluation: the quantities at the parameters, each finite.
+const EVALUATE: &str = r#"x = values(p);
+for i = 1:numel(x)
+  if ~isfinite(x(i))
+    error('STEM: %s is %g at the file''s INPUT values', x_names{i}, x(i));
+  end
+end
+"#;
+
+/// The solution printed and written as CSV, with `STEM` for the program's name.
+const WRITE: &str = r#"% OPEN_OUTPUT
 for i = 1:numel(x)
   fprintf('%s = %.17g\n', x_names{i}, x(i));
   if i > 1

@@ -19,33 +19,43 @@ pub(super) fn program(plan: &SystemPlan, stem: &str, about: &Program) -> String 
     out.push_str(&format!("NAME = {stem:?}\n"));
     out.push_str("# The file's INPUT values (internal units: angles in radians); nan where it gives none.\n");
     out.push_str(&format!("P0 = {}\nP_NAMES = {}\n", list(&plan.values), refs(&plan.names)));
-    out.push_str(&format!("X0 = {}\nX_NAMES = {}\n", list(&plan.start), refs(&plan.unknowns)));
-    out.push_str(&format!(
-        "HEADER = {:?}\nSTEPS, DAMPED, CHECK_START = {}, {}, {}\nTOLERANCE, SINGULAR = {}, {}\n\n\n",
-        plan.header(),
-        plan.steps(),
-        if plan.damped() { "True" } else { "False" },
-        if plan.checked_start() { "True" } else { "False" },
-        shortest(TOLERANCE),
-        shortest(SINGULAR_PIVOT)
-    ));
+    out.push_str(&format!("X_NAMES = {}\nHEADER = {:?}\n", refs(&plan.unknowns), plan.header()));
     let (lines, results) = dialect::print(&plan.section, &py, "v");
-    out.push_str("def equations(y, p):\n    \"\"\"The residuals and the Jacobian (rows) at the unknowns y.\"\"\"\n    t = 0.0\n");
-    body(&mut out, &lines);
-    let rows: Vec<String> =
-        results[n..].chunks(n.max(1)).map(|row| format!("[{}]", row.join(", "))).collect();
-    out.push_str(&format!(
-        "    return np.array([{}], dtype=float), np.array([{}], dtype=float).reshape({n}, {n})\n\n\n",
-        results[..n].join(", "),
-        rows.join(", ")
-    ));
+    if plan.evaluation {
+        out.push_str(
+            "\n\ndef values(p):\n    \"\"\"The quantities at the parameters p.\"\"\"\n    t = 0.0\n",
+        );
+        body(&mut out, &lines);
+        out.push_str(&format!("    return np.array([{}], dtype=float)\n\n\n", results.join(", ")));
+        out.push_str(EVALUATE);
+    } else {
+        out.push_str(&format!(
+            "X0 = {}\nSTEPS, DAMPED, CHECK_START = {}, {}, {}\nTOLERANCE, SINGULAR = {}, {}\n\n\n",
+            list(&plan.start),
+            plan.steps(),
+            if plan.damped() { "True" } else { "False" },
+            if plan.checked_start() { "True" } else { "False" },
+            shortest(TOLERANCE),
+            shortest(SINGULAR_PIVOT)
+        ));
+        out.push_str("def equations(y, p):\n    \"\"\"The residuals and the Jacobian (rows) at the unknowns y.\"\"\"\n    t = 0.0\n");
+        body(&mut out, &lines);
+        let rows: Vec<String> =
+            results[n..].chunks(n.max(1)).map(|row| format!("[{}]", row.join(", "))).collect();
+        out.push_str(&format!(
+            "    return np.array([{}], dtype=float), np.array([{}], dtype=float).reshape({n}, {n})\n\n\n",
+            results[..n].join(", "),
+            rows.join(", ")
+        ));
+        out.push_str(SOLVER);
+    }
     out.push_str(&MAIN.replace("STEM", stem));
     out.push_str(CLOSE_OUTPUT);
     out
 }
 
-/// The iteration, the checks and the CSV, with `STEM` for the program's name.
-const MAIN: &str = r#"def largest(v):
+/// The iteration from the file's starting values.
+const SOLVER: &str = r#"def largest(v):
     """The largest magnitude in v, nan if one is not a number."""
     v = np.abs(np.asarray(v, dtype=float)).ravel()
     return math.nan if np.isnan(v).any() else float(v.max(initial=0.0))
@@ -93,6 +103,30 @@ def newton(p, x):
              f"{largest(r):g} at {at(x)}")
 
 
+def solve(p):
+    """The solution from the file's starting values, or an exit saying why there is none."""
+    for name, value in zip(X_NAMES, X0):
+        if CHECK_START and math.isnan(value):
+            missing(f"{name} has no starting value")
+    return newton(p, np.array(X0, dtype=float))
+"#;
+
+/// An evaluation's `solve`: the quantities at the parameters, each finite.
+const EVALUATE: &str = r#"def solve(p):
+    """The quantities at the parameters p, or an exit naming one that cannot be evaluated."""
+    try:
+        x = values(p)
+    except (ArithmeticError, ValueError) as e:
+        sys.exit(f"{NAME}: the quantities cannot be evaluated at the file's INPUT values: {e}")
+    for name, value in zip(X_NAMES, x):
+        if not math.isfinite(value):
+            sys.exit(f"{NAME}: {name} is {value} at the file's INPUT values")
+    return x
+"#;
+
+/// The checks, the solve and the CSV, with `STEM` for the program's name.
+const MAIN: &str = r#"
+
 def missing(what):
     """Stops with status 2, saying what has no value and what to do."""
     print(f"{NAME}: {what}: give it in the model file's INPUT and regenerate", file=sys.stderr)
@@ -104,10 +138,7 @@ def main(argv):
     for name, value in zip(P_NAMES, P0):
         if math.isnan(value):
             missing(f"{name} has no value")
-    for name, value in zip(X_NAMES, X0):
-        if CHECK_START and math.isnan(value):
-            missing(f"{name} has no starting value")
-    x = newton(np.array(P0, dtype=float), np.array(X0, dtype=float))
+    x = solve(np.array(P0, dtype=float))
     path = argv[1] if len(argv) > 1 else os.path.join(os.path.dirname(os.path.abspath(__file__)), NAME + ".csv")
     for name, value in zip(X_NAMES, x):
         print(f"{name} = {float(value)!r}")
