@@ -91,13 +91,14 @@ tail -n +2 "$here/manifest.tsv" | while IFS=$'\t' read -r repo commit path blob 
   if [ "$check" = 0 ] && grep -qiE '^[[:space:]]*CODE[[:space:]]' "$file"; then
     code=0; rm -rf "$log.code"; mkdir -p "$log.code"
     # A program named in a folder is written there: the folders the repository has, beside the
-    # file or from its root (where its author ran Autolev), are made here.
+    # file or beside a folder above it (where its author ran Autolev), are made here.
     grep -iE '^[[:space:]]*CODE[[:space:]]' "$file" | tr -d '\r' | tr '\\' / |
       sed -E 's/^[^)]*\)[[:space:]]*//; s/[,[:space:]].*//' | while read -r name; do
-        sub=$(dirname "$name")
-        if [ "$sub" != . ] && { [ -d "$(dirname "$file")/$sub" ] || [ -d "$dir/$sub" ]; }; then
-          mkdir -p "$log.code/$sub"
-        fi
+        sub=$(dirname "$name") above=$(dirname "$file")
+        while [ "$sub" != . ] && [ "${above#"$dir"}" != "$above" ]; do
+          if [ -d "$above/$sub" ]; then mkdir -p "$log.code/$sub"; break; fi
+          above=$(dirname "$above")
+        done
       done
     timeout 300 "$kane" code "$file" --out "$log.code" > "$log.codelog" 2>&1 || code=$?
     survey_code_statements "$repo:$path" "$file" "$log"
