@@ -95,9 +95,12 @@ fn the_code_request_and_the_open_input_are_kept() {
 }
 
 #[test]
-fn a_matlab_program_needs_a_function_name() {
+fn a_matlab_program_needs_a_function_name_not_one_of_its_own_functions() {
     let e = pendulum().program(Language::Matlab, "my-swing").unwrap_err();
     assert!(matches!(e, StandaloneError::FileName(..)), "{e}");
+    let e = pendulum().program(Language::Matlab, "rhs").unwrap_err();
+    assert!(e.to_string().contains("the program's own functions"), "{e}");
+    assert!(pendulum().program(Language::Matlab, "Rhs").is_ok(), "MATLAB's names are case-sensitive");
 }
 
 #[test]

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Public research Autolev files, run as written: `kane check`, `kane gen`, a 1 s `gyro-sim run`
-# and `kane code` (the file's CODE statements, each C program written compiled by cc) of each
-# file listed in manifest.tsv (repository, commit, path, blob), with the first error of each that
-# fails. Not part of the build or the tests; needs git and the network to fetch.
+# and `kane code` (the file's CODE statements, each C or Fortran program written compiled by cc or
+# gfortran) of each file listed in manifest.tsv (repository, commit, path, blob), with the first
+# error of each that fails. Not part of the build or the tests; needs git and the network to fetch.
 #
 # usage: kane-model/benches/survey/survey.sh [CACHE] [KIND]
 #   CACHE  where repositories are fetched (default: ~/.cache/kane-survey)
@@ -36,7 +36,7 @@ checkout() {
 }
 
 # One line per CODE statement of file $2 (shown as $1) into code.tsv: whether its program was
-# written into $3.code, and, for a C program, whether cc compiles it.
+# written into $3.code, and, for a C or Fortran program, whether cc or gfortran compiles it.
 survey_code_statements() {
   local shown=$1 file=$2 log=$3 line name written compiled reason
   grep -iE '^[[:space:]]*CODE[[:space:]]' "$file" | tr -d '\r' | while read -r line; do
@@ -48,6 +48,7 @@ survey_code_statements() {
       written=yes
       case "$name" in
         *.c) compiled=no; cc -std=c99 -O0 -o "$log.code/${name%.c}" "$log.code/$name" -lm 2>/dev/null && compiled=yes ;;
+        *.f|*.for|*.f90) compiled=no; gfortran -O0 -o "$log.code/${name%.*}" "$log.code/$name" 2>/dev/null && compiled=yes ;;
       esac
     else
       reason=$(grep -v -E '^(wrote |[0-9]+ of [0-9]+ CODE)' "$log.codelog" 2>/dev/null | grep -m1 -E '[a-z]' | cut -c1-160 || true)
@@ -109,6 +110,6 @@ done
 awk -F'\t' 'NR > 1 && $2 != "-" {n++; if ($2 == 0) c++; if ($3 == 0) g++; if ($4 == 0) r++}
   END {printf "%d files: check %d (%.0f %%), gen %d (%.0f %%), 1 s run %d (%.0f %%)\n", n, c, 100*c/n, g, 100*g/n, r, 100*r/n}' "$results"
 awk -F'\t' 'NR > 1 {n++; if ($3 == "yes") w++; if ($4 == "yes") c++; if ($4 != "-") cc++}
-  END {printf "%d CODE statements: %d programs written (%.0f %%), %d of %d C programs compiled\n", n, w, 100*w/(n ? n : 1), c, cc}' "$statements"
+  END {printf "%d CODE statements: %d programs written (%.0f %%), %d of %d C and Fortran programs compiled\n", n, w, 100*w/(n ? n : 1), c, cc}' "$statements"
 echo "results: $results"
 echo "CODE statements: $statements"

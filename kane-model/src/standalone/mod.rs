@@ -148,11 +148,17 @@ pub fn write(
     })
 }
 
+/// The names of the MATLAB programs' own functions, which their file cannot have.
+const MATLAB_FUNCTIONS: [&str; 7] = ["rhs", "constants", "row", "equations", "values", "largest", "at"];
+
 /// An error unless `stem` is a name a `language` program can have.
 fn check_file_name(language: Language, stem: &str) -> Result<(), StandaloneError> {
     let why = match language {
         Language::Matlab if !is_identifier(stem) => {
             "MATLAB and Octave call a function file by its name, which must be a letter then letters, digits or _"
+        }
+        Language::Matlab if MATLAB_FUNCTIONS.contains(&stem) => {
+            "the program's own functions (rhs, constants, row, equations, values, largest, at) have that name: name the file otherwise"
         }
         Language::Fortran if stem.contains(['\'', '"']) => {
             "the program writes its name between quotes: name the file without ' or \""
