@@ -60,18 +60,19 @@ work, name = sys.argv[1], sys.argv[2]
 text = open(f"{work}/{name}_f.f90").read()
 head = text[:text.index("      real(8) :: p(max(np, 1))")]
 procedures = text[text.index("! The parameter-only quantities of p"):text.index("! One written row after t")]
-main = """      real(8) :: k(nk), sink
-      ! Volatile, so that no call is moved out of the loop.
-      real(8), volatile :: y(ny), dy(ny)
+main = """      real(8) :: k(nk), y(ny), dy(ny), sink
       integer(8) :: n, i, c0, c1, rate
       call constants(p0, k)
       y = y0
       sink = 0d0
       n = 2000000000_8 / (ny * 50 + 1000)
       call system_clock(c0, rate)
+      ! Every state moved and every result summed, so that no call
+      ! (and no part of one) is moved out of the loop or left out.
       do i = 1, n
+        y = y0 + 1d-300 * dble(i)
         call rhs(0d0, y, p0, k, dy)
-        sink = sink + dy(1)
+        sink = sink + sum(dy)
       end do
       call system_clock(c1)
       write (*, '(f0.1)') dble(c1 - c0) / dble(rate) * 1d9 / dble(n)
