@@ -123,6 +123,11 @@ fn literal(c: f64, dialect: &dyn Dialect) -> String {
     }
 }
 
+/// `text` as a Fortran or MATLAB string literal: between single quotes, each quote doubled.
+pub(super) fn single_quoted(text: &str) -> String {
+    format!("'{}'", text.replace('\'', "''"))
+}
+
 /// `x` written so it reads back as the same `f64`, always with a point or an exponent
 /// (`2.0`, `0.3`, `1e-7`).
 pub(super) fn shortest(x: f64) -> String {

@@ -7,7 +7,7 @@
 use crate::expr::Func;
 use crate::program::ir::Input;
 
-use super::dialect::{self, Dialect};
+use super::dialect::{self, single_quoted, Dialect};
 use super::plan::Plan;
 use super::Program;
 
@@ -190,7 +190,7 @@ pub(super) fn reals(values: &[f64]) -> String {
 /// The length and the items of a character array constructor of `values`, padded to one length.
 pub(super) fn names(values: &[&str]) -> (usize, String) {
     let width = values.iter().map(|v| v.len()).max().unwrap_or(1).max(1);
-    let items: Vec<String> = values.iter().map(|v| format!("'{v:<width$}'")).collect();
+    let items: Vec<String> = values.iter().map(|v| single_quoted(&format!("{v:<width$}"))).collect();
     (width, if items.is_empty() { "' '".into() } else { items.join(", ") })
 }
 
@@ -207,8 +207,11 @@ fn values(out: &mut String, plan: &Plan<'_>, stem: &str) {
     let (w, text) = names(info.state_names);
     statement(out, &format!("character(len={w}), parameter :: y_names(ny) = (/ {text} /)"));
     let open: Vec<&str> = info.open_inputs.iter().map(|i| info.param_names[*i]).collect();
-    statement(out, &format!("character(len=*), parameter :: open_inputs = '{}'", open.join(", ")));
-    statement(out, &format!("character(len=*), parameter :: header = '{}'", plan.header()));
+    statement(
+        out,
+        &format!("character(len=*), parameter :: open_inputs = {}", single_quoted(&open.join(", "))),
+    );
+    statement(out, &format!("character(len=*), parameter :: header = {}", single_quoted(&plan.header())));
     statement(out, &format!("character(len=*), parameter :: name = '{stem}'"));
     statement(
         out,
@@ -456,6 +459,12 @@ mod tests {
         assert_eq!(program_name("model-ad.v2", body), "model_ad_v2");
         assert_eq!(program_name("RHS", body), "p_RHS", "a name the program uses");
         assert_eq!(program_name(&"x".repeat(80), body).len(), 63);
+    }
+
+    #[test]
+    fn a_name_with_a_quote_is_written_with_the_quote_doubled() {
+        // A SPECIFIED quantity's rates are named with primes: px' and px''.
+        assert_eq!(names(&["px", "px'", "px''"]), (4, "'px  ', 'px'' ', 'px'''''".into()));
     }
 
     #[test]

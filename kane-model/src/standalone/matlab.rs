@@ -5,7 +5,7 @@
 use crate::expr::Func;
 use crate::program::ir::Input;
 
-use super::dialect::{self, Dialect};
+use super::dialect::{self, single_quoted, Dialect};
 use super::plan::Plan;
 use super::{comment_lines, Program};
 
@@ -66,7 +66,7 @@ pub(super) fn vector(values: &[f64]) -> String {
 
 /// A MATLAB cell array of strings.
 pub(super) fn names(values: &[&str]) -> String {
-    let items: Vec<String> = values.iter().map(|v| format!("'{v}'")).collect();
+    let items: Vec<String> = values.iter().map(|v| single_quoted(v)).collect();
     format!("{{{}}}", items.join(", "))
 }
 
@@ -79,7 +79,11 @@ fn main_body(plan: &Plan<'_>, stem: &str) -> String {
     out.push_str("% The file's INPUT values (internal units: angles in radians); NaN where it gives none.\n");
     out.push_str(&format!("p = {};\np_names = {};\n", vector(&plan.start_params()), names(info.param_names)));
     out.push_str(&format!("y0 = {};\ny_names = {};\n", vector(&plan.initial), names(info.state_names)));
-    out.push_str(&format!("open_inputs = '{}';\nheader = '{}';\n", open.join(", "), plan.header()));
+    out.push_str(&format!(
+        "open_inputs = {};\nheader = {};\n",
+        single_quoted(&open.join(", ")),
+        single_quoted(&plan.header())
+    ));
     out.push_str(&format!(
         "t_final = {}; step = {}; rtol = {}; atol = {};\n",
         dialect::shortest(s.t_final),

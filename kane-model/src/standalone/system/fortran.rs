@@ -5,6 +5,7 @@
 
 use crate::program::ir::Input;
 
+use super::super::dialect::single_quoted;
 use super::super::fortran::{body, comment, continued, double, enclose, names, reals, statement, Fortran};
 use super::{Program, SystemPlan, SINGULAR_PIVOT, TOLERANCE};
 
@@ -30,7 +31,10 @@ pub(super) fn program(plan: &SystemPlan, stem: &str, about: &Program) -> String 
     statement(&mut body, &format!("character(len={w}), parameter :: p_names(np) = (/ {text} /)"));
     let (w, text) = names(&as_str(&plan.unknowns));
     statement(&mut body, &format!("character(len={w}), parameter :: x_names(nx) = (/ {text} /)"));
-    statement(&mut body, &format!("character(len=*), parameter :: header = '{}'", plan.header()));
+    statement(
+        &mut body,
+        &format!("character(len=*), parameter :: header = {}", single_quoted(&plan.header())),
+    );
     statement(&mut body, &format!("character(len=*), parameter :: name = '{stem}'"));
     if plan.evaluation {
         let driver = [DECLARE, CHECK_PARAMETERS, EVALUATE, WRITE].concat();

@@ -3,7 +3,7 @@
 //! iteration of `kane solve`, the solution printed and written as CSV.
 
 use super::super::comment_lines;
-use super::super::dialect::{self, shortest};
+use super::super::dialect::{self, shortest, single_quoted};
 use super::super::matlab::{names, vector, Matlab, OPEN_OUTPUT};
 use super::{Program, SystemPlan, SINGULAR_PIVOT, TOLERANCE};
 
@@ -18,7 +18,7 @@ pub(super) fn program(plan: &SystemPlan, stem: &str, about: &Program) -> String 
     let (p_names, x_names) = (as_str(&plan.names), as_str(&plan.unknowns));
     out.push_str("% The file's INPUT values (internal units: angles in radians); NaN where it gives none.\n");
     out.push_str(&format!("p = {};\np_names = {};\n", vector(&plan.values), names(&p_names)));
-    out.push_str(&format!("x_names = {};\nheader = '{}';\n", names(&x_names), plan.header()));
+    out.push_str(&format!("x_names = {};\nheader = {};\n", names(&x_names), single_quoted(&plan.header())));
     let (lines, results) = dialect::print(&plan.section, &m, "v");
     if plan.evaluation {
         out.push_str(&CHECKS.replace("STEM", stem));
