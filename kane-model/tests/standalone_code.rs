@@ -142,3 +142,21 @@ fn the_fmu_declares_si_units_with_the_file_s_units_for_display() {
         md.split("guid=\"").nth(1).unwrap().split('"').next().unwrap()
     )));
 }
+
+#[test]
+fn an_output_on_two_output_lines_is_computed_once() {
+    let text = PENDULUM.replace("OUTPUT Q, U\n", "X = L*SIN(Q)\nOUTPUT Q, X\nOUTPUT X, U\n");
+    let program = StandaloneFile::load(Path::new("pendulum.al"), &text).unwrap();
+    let fortran = program.program(Language::Fortran, "swing").unwrap();
+    let assigned: Vec<&str> = fortran
+        .lines()
+        .filter_map(|l| l.trim().split_once(" = ").map(|(name, _)| name))
+        .filter(|name| name.starts_with('o') && name.contains('_'))
+        .collect();
+    assert!(!assigned.is_empty(), "the output's temporaries are named o{{k}}_{{i}}:\n{fortran}");
+    let mut unique = assigned.clone();
+    unique.sort_unstable();
+    unique.dedup();
+    assert_eq!(unique.len(), assigned.len(), "each temporary assigned once:\n{fortran}");
+    assert!(fortran.contains("x,x"), "both columns written:\n{fortran}");
+}

@@ -92,7 +92,10 @@ impl<'a> Plan<'a> {
                     source: Source::Output(k, j),
                     scale,
                 }));
-                outputs.push(k);
+                // An output written twice (named on two OUTPUT lines) is computed once.
+                if !outputs.contains(&k) {
+                    outputs.push(k);
+                }
             }
         }
         let needs_rates = outputs.iter().any(|k| info.outputs[*k].needs_rates);
