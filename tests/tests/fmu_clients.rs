@@ -113,6 +113,7 @@ fn fmpy_matches(name: &str, text: &str, names: &[&str], run: (f64, f64), bounds:
         Client { kind: "ModelExchange", rtol: "default", starts: &[] },
         Client { kind: "ModelExchange", rtol: "1e-13", starts: &[] },
         Client { kind: "CoSimulation", rtol: "default", starts: &[] },
+        Client { kind: "CoSimulation", rtol: "1e-13", starts: &[] },
     ] {
         let bound = if client.rtol == "default" { bounds.0 } else { bounds.1 };
         let worst = difference(&dir, &model, &fmu, names, run, &client);
