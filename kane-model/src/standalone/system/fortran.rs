@@ -85,40 +85,46 @@ fn as_str(v: &[String]) -> Vec<&str> {
 
 /// The internal subroutine `equations`.
 fn equations(out: &mut String, plan: &SystemPlan) {
-    let f = Fortran { n_coordinates: 0 };
     let n = plan.unknowns.len();
     comment(out, "The residuals r and the Jacobian jac (row by row) at the unknowns y.");
-    statement(out, "subroutine equations(y, p, r, jac)");
-    statement(out, "real(8), intent(in) :: y(nx), p(np)");
-    statement(out, "real(8), intent(out) :: r(nx), jac(nx * nx)");
-    if plan.section.inputs.contains(&Input::Time) {
-        statement(out, "real(8), parameter :: t = 0d0");
-    }
-    let (lines, results) = super::super::dialect::print(&plan.section, &f, "v");
-    body(out, &lines);
-    for (i, v) in results.iter().enumerate() {
-        let (into, at) = if i < n { ("r", i) } else { ("jac", i - n) };
-        statement(out, &format!("{into}({}) = {v}", at + 1));
-    }
-    statement(out, "end subroutine equations");
+    let declared = ["real(8), intent(in) :: y(nx), p(np)", "real(8), intent(out) :: r(nx), jac(nx * nx)"];
+    subroutine(out, plan, "equations(y, p, r, jac)", &declared, |i| {
+        if i < n {
+            format!("r({})", i + 1)
+        } else {
+            format!("jac({})", i - n + 1)
+        }
+    });
 }
 
 /// The internal subroutine `values`.
 fn values(out: &mut String, plan: &SystemPlan) {
-    let f = Fortran { n_coordinates: 0 };
     comment(out, "The quantities x at the parameters p.");
-    statement(out, "subroutine values(p, x)");
-    statement(out, "real(8), intent(in) :: p(np)");
-    statement(out, "real(8), intent(out) :: x(nx)");
+    let declared = ["real(8), intent(in) :: p(np)", "real(8), intent(out) :: x(nx)"];
+    subroutine(out, plan, "values(p, x)", &declared, |i| format!("x({})", i + 1));
+}
+
+/// The subroutine `call` (its name and arguments) declaring `declared`, computing `plan`'s
+/// section and storing result `i` in `into(i)`.
+fn subroutine(
+    out: &mut String,
+    plan: &SystemPlan,
+    call: &str,
+    declared: &[&str],
+    into: impl Fn(usize) -> String,
+) {
+    let name = call.split('(').next().unwrap_or(call);
+    statement(out, &format!("subroutine {call}"));
+    declared.iter().for_each(|d| statement(out, d));
     if plan.section.inputs.contains(&Input::Time) {
         statement(out, "real(8), parameter :: t = 0d0");
     }
-    let (lines, results) = super::super::dialect::print(&plan.section, &f, "v");
+    let (lines, results) = super::super::dialect::print(&plan.section, &Fortran { n_coordinates: 0 }, "v");
     body(out, &lines);
     for (i, v) in results.iter().enumerate() {
-        statement(out, &format!("x({}) = {v}", i + 1));
+        statement(out, &format!("{} = {v}", into(i)));
     }
-    statement(out, "end subroutine values");
+    statement(out, &format!("end subroutine {name}"));
 }
 
 /// The declarations every program has; lines in the shared fixed and free layout (as below).
